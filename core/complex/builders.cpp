@@ -1,0 +1,132 @@
+#include "complex/builders.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace hexdual {
+using namespace tables;
+
+Complex makeGrid(int a, int b, int c) {
+  if (a < 1 || b < 1 || c < 1) throw Error("grid: every dimension must be at least 1");
+  if (int64_t(a) * b * c > (int64_t(1) << 26)) throw Error("grid: more than 2^26 hexes");
+  Complex cx;
+  for (int k = 0; k <= c; ++k)
+    for (int j = 0; j <= b; ++j)
+      for (int i = 0; i <= a; ++i) cx.addVertex({double(i), double(j), double(k)});
+  auto vid = [&](int i, int j, int k) { return VertexId(i + (a + 1) * (j + (b + 1) * k)); };
+  for (int k = 0; k < c; ++k)
+    for (int j = 0; j < b; ++j)
+      for (int i = 0; i < a; ++i) {
+        std::array<VertexId, 8> v;
+        for (int q = 0; q < 8; ++q) v[q] = vid(i + cornerBit(q, 0), j + cornerBit(q, 1), k + cornerBit(q, 2));
+        cx.addHex(v);
+      }
+  auto hid = [&](int i, int j, int k) { return HexId(i + a * (j + b * k)); };
+  // Face 2*axis+1 of a hex meets face 2*axis of the next along that axis, position for position.
+  for (int k = 0; k < c; ++k)
+    for (int j = 0; j < b; ++j)
+      for (int i = 0; i < a; ++i) {
+        if (i + 1 < a) cx.glue(hid(i, j, k), 1, hid(i + 1, j, k), 0, 0);
+        if (j + 1 < b) cx.glue(hid(i, j, k), 3, hid(i, j + 1, k), 2, 0);
+        if (k + 1 < c) cx.glue(hid(i, j, k), 5, hid(i, j, k + 1), 4, 0);
+      }
+  return cx;
+}
+
+Complex makeRing(int around, int radial, int axial) {
+  if (around < 3 || radial < 1 || axial < 1) throw Error("ring: needs at least 3 around and 1 radial and axial layer");
+  std::vector<Vec3> pts;
+  auto vid = [&](int t, int s, int k) { return VertexId((t % around) + around * (s + (radial + 1) * k)); };
+  const double pi = std::acos(-1.0), r0 = 1.0 + 0.25 * around / pi;
+  for (int k = 0; k <= axial; ++k)
+    for (int s = 0; s <= radial; ++s)
+      for (int t = 0; t < around; ++t) {
+        double ang = 2 * pi * t / around, r = r0 + s;
+        pts.push_back({r * std::cos(ang), r * std::sin(ang), double(k)});
+      }
+  std::vector<std::array<VertexId, 8>> hexes;
+  for (int k = 0; k < axial; ++k)
+    for (int t = 0; t < around; ++t)
+      for (int s = 0; s < radial; ++s) {
+        std::array<VertexId, 8> v;
+        for (int q = 0; q < 8; ++q) v[q] = vid(t + cornerBit(q, 1), s + cornerBit(q, 0), k + cornerBit(q, 2));
+        hexes.push_back(v);
+      }
+  return fromConnectivity(pts, hexes);
+}
+
+namespace {
+struct FaceKey {
+  std::array<VertexId, 4> key;
+  HexId hex;
+  int face;
+  bool operator<(const FaceKey& o) const { return key != o.key ? key < o.key : (hex != o.hex ? hex < o.hex : face < o.face); }
+};
+std::string quadName(const std::array<VertexId, 4>& k) {
+  return "quad (" + std::to_string(k[0]) + "," + std::to_string(k[1]) + "," + std::to_string(k[2]) + "," +
+         std::to_string(k[3]) + ")";
+}
+}  // namespace
+
+Complex fromConnectivity(const std::vector<Vec3>& points, const std::vector<std::array<VertexId, 8>>& hexes) {
+  Complex cx;
+  for (Vec3 p : points) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw Error("point " + std::to_string(cx.vertexCapacity()) + " has a coordinate that is not a finite number");
+    cx.addVertex(p);
+  }
+  for (size_t h = 0; h < hexes.size(); ++h) {
+    for (int c = 0; c < 8; ++c) {
+      VertexId v = hexes[h][c];
+      if (v < 0 || v >= (VertexId)points.size())
+        throw Error("hex " + std::to_string(h) + " corner " + std::to_string(c) + ": vertex index " + std::to_string(v) +
+                    " is out of range (" + std::to_string(points.size()) + " points)");
+      for (int d = 0; d < c; ++d)
+        if (hexes[h][d] == v) throw Error("hex " + std::to_string(h) + " repeats vertex " + std::to_string(v));
+    }
+    cx.addHex(hexes[h]);
+  }
+  std::vector<FaceKey> faces;
+  faces.reserve(hexes.size() * 6);
+  for (size_t h = 0; h < hexes.size(); ++h)
+    for (int f = 0; f < 6; ++f) {
+      FaceKey k{{}, HexId(h), f};
+      for (int p = 0; p < 4; ++p) k.key[p] = hexes[h][kFaceCorners[f][p]];
+      std::sort(k.key.begin(), k.key.end());
+      faces.push_back(k);
+    }
+  std::sort(faces.begin(), faces.end());
+  for (size_t i = 0; i < faces.size();) {
+    size_t j = i;
+    while (j < faces.size() && faces[j].key == faces[i].key) ++j;
+    if (j - i > 2) {
+      std::string who;
+      for (size_t k = i; k < j; ++k) who += (k > i ? ", " : "") + std::to_string(faces[k].hex);
+      throw Error(quadName(faces[i].key) + " is shared by " + std::to_string(j - i) + " hexes (" + who +
+                  "); a quad has at most two sides");
+    }
+    if (j - i == 2) {
+      const FaceKey &A = faces[i], &B = faces[i + 1];
+      auto posInB = [&](int pa) {
+        VertexId v = hexes[A.hex][kFaceCorners[A.face][pa]];
+        for (int p = 0; p < 4; ++p)
+          if (hexes[B.hex][kFaceCorners[B.face][p]] == v) return p;
+        return -1;
+      };
+      int p0 = posInB(0), p1 = posInB(1);
+      int orient = orientFromPositions(p0, p1);
+      bool cyclic = ((p1 - p0) & 3) == 1 || ((p0 - p1) & 3) == 1;
+      for (int p = 0; cyclic && p < 4; ++p) cyclic = posInB(p) == mapPosition(p, orient);
+      if (!cyclic)
+        throw Error("hexes " + std::to_string(A.hex) + " and " + std::to_string(B.hex) + " share the 4 vertices of " +
+                    quadName(A.key) + " in different cyclic orders");
+      cx.glue(A.hex, A.face, B.hex, B.face, orient);
+    }
+    i = j;
+  }
+  cx.validate();
+  return cx;
+}
+
+}  // namespace hexdual

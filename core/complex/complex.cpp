@@ -1,0 +1,267 @@
+#include "complex/complex.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "complex/union_find.hpp"
+
+namespace hexdual {
+using namespace tables;
+
+void Complex::requireHex(HexId h, const char* what) const {
+  if (!isHex(h)) throw Error(std::string(what) + ": hex " + std::to_string(h) + " does not exist");
+}
+
+VertexId Complex::addVertex(Vec3 p) {
+  pos_.push_back(p);
+  refs_.push_back(0);
+  ++revision_;
+  return VertexId(pos_.size() - 1);
+}
+
+HexId Complex::addHex(const std::array<VertexId, 8>& v) {
+  for (VertexId x : v)
+    if (x < 0 || x >= (VertexId)pos_.size()) throw Error("addHex: vertex " + std::to_string(x) + " does not exist");
+  if (alive_.size() >= (size_t(1) << 26)) throw Error("addHex: more than 2^26 hexes");
+  verts_.push_back(v);
+  std::array<uint32_t, 6> g;
+  g.fill(kBoundary);
+  glue_.push_back(g);
+  alive_.push_back(1);
+  for (VertexId x : v)
+    if (refs_[x]++ == 0) ++numVertices_;
+  ++numHexes_;
+  numBoundarySides_ += 6;
+  ++revision_;
+  return HexId(alive_.size() - 1);
+}
+
+void Complex::glue(HexId a, int fa, HexId b, int fb, int orient) {
+  requireHex(a, "glue");
+  requireHex(b, "glue");
+  if (a == b && fa == fb) throw Error("glue: a face cannot be glued to itself");
+  if (glue_[a][fa] != kBoundary || glue_[b][fb] != kBoundary)
+    throw Error("glue: hex " + std::to_string(a) + " face " + std::to_string(fa) + " or hex " + std::to_string(b) +
+                " face " + std::to_string(fb) + " is already glued");
+  glue_[a][fa] = pack(b, fb, orient);
+  glue_[b][fb] = pack(a, fa, inverseOrient(orient));
+  numBoundarySides_ -= 2;
+  ++revision_;
+}
+
+void Complex::unglue(HexId h, int f) {
+  requireHex(h, "unglue");
+  Gluing g = gluing(h, f);
+  if (g.boundary()) return;
+  glue_[h][f] = kBoundary;
+  glue_[g.hex][g.face] = kBoundary;
+  numBoundarySides_ += 2;
+  ++revision_;
+}
+
+void Complex::removeHex(HexId h) {
+  requireHex(h, "removeHex");
+  for (int f = 0; f < 6; ++f)
+    if (glue_[h][f] != kBoundary) throw Error("removeHex: hex " + std::to_string(h) + " is still glued");
+  for (VertexId x : verts_[h])
+    if (--refs_[x] == 0) --numVertices_;
+  alive_[h] = 0;
+  --numHexes_;
+  numBoundarySides_ -= 6;
+  ++revision_;
+}
+
+void Complex::setCorner(HexId h, int c, VertexId v) {
+  requireHex(h, "setCorner");
+  if (v < 0 || v >= (VertexId)pos_.size()) throw Error("setCorner: vertex " + std::to_string(v) + " does not exist");
+  VertexId old = verts_[h][c];
+  if (old == v) return;
+  if (--refs_[old] == 0) --numVertices_;
+  if (refs_[v]++ == 0) ++numVertices_;
+  verts_[h][c] = v;
+  ++revision_;
+}
+
+void Complex::compact() {
+  std::vector<HexId> newHex(alive_.size(), -1);
+  HexId nh = 0;
+  for (HexId h = 0; h < (HexId)alive_.size(); ++h)
+    if (alive_[h]) newHex[h] = nh++;
+  std::vector<VertexId> newVert(pos_.size(), -1);
+  VertexId nv = 0;
+  for (VertexId v = 0; v < (VertexId)pos_.size(); ++v)
+    if (refs_[v] > 0) newVert[v] = nv++;
+  std::vector<std::array<VertexId, 8>> verts(nh);
+  std::vector<std::array<uint32_t, 6>> glue(nh);
+  for (HexId h = 0; h < (HexId)alive_.size(); ++h) {
+    if (!alive_[h]) continue;
+    for (int c = 0; c < 8; ++c) verts[newHex[h]][c] = newVert[verts_[h][c]];
+    for (int f = 0; f < 6; ++f) {
+      uint32_t g = glue_[h][f];
+      glue[newHex[h]][f] = g == kBoundary ? kBoundary : pack(newHex[g >> 6], (g >> 3) & 7, g & 7);
+    }
+  }
+  std::vector<Vec3> pos(nv);
+  std::vector<int32_t> refs(nv);
+  for (VertexId v = 0; v < (VertexId)pos_.size(); ++v)
+    if (newVert[v] >= 0) {
+      pos[newVert[v]] = pos_[v];
+      refs[newVert[v]] = refs_[v];
+    }
+  verts_ = std::move(verts);
+  glue_ = std::move(glue);
+  alive_.assign(nh, 1);
+  pos_ = std::move(pos);
+  refs_ = std::move(refs);
+  ++revision_;
+}
+
+Gluing Complex::gluing(HexId h, int face) const {
+  uint32_t g = glue_[h][face];
+  if (g == kBoundary) return {};
+  return {HexId(g >> 6), int((g >> 3) & 7), int(g & 7)};
+}
+
+QuadSide Complex::canonical(QuadSide s) const {
+  Gluing g = gluing(s);
+  if (g.boundary()) return s;
+  QuadSide o{g.hex, g.face};
+  return o < s ? o : s;
+}
+
+std::vector<QuadSide> Complex::quads() const {
+  std::vector<QuadSide> out;
+  out.reserve(size_t(numQuads()));
+  for (HexId h : hexes())
+    for (int f = 0; f < 6; ++f) {
+      QuadSide s{h, f};
+      if (canonical(s) == s) out.push_back(s);
+    }
+  return out;
+}
+
+int Complex::mappedCorner(HexId h, int face, int corner) const {
+  Gluing g = gluing(h, face);
+  int p = positionInFace(face, corner);
+  return kFaceCorners[g.face][mapPosition(p, g.orient)];
+}
+
+// Walks from (h, e) out through face `exitFace`; returns the next incidence and its arrival face.
+static bool stepAroundEdge(const Complex& cx, EdgeRef& cur, int& exitFace) {
+  Gluing g = cx.gluing(cur.hex, exitFace);
+  if (g.boundary()) return false;
+  int c0 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[cur.edge][0]);
+  int c1 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[cur.edge][1]);
+  cur = {g.hex, edgeBetween(c0, c1)};
+  auto fs = facesOfEdge(cur.edge);
+  exitFace = fs[0] == g.face ? fs[1] : fs[0];
+  return true;
+}
+
+std::vector<EdgeRef> Complex::edgeCycle(EdgeRef e, bool* closed) const {
+  std::vector<EdgeRef> fwd{e};
+  auto fs = facesOfEdge(e.edge);
+  EdgeRef cur = e;
+  int exitFace = fs[0];
+  const size_t limit = size_t(12) * size_t(numHexes_) + 1;
+  bool isClosed = false;
+  while (stepAroundEdge(*this, cur, exitFace)) {
+    if (cur == e) {
+      isClosed = true;
+      break;
+    }
+    fwd.push_back(cur);
+    if (fwd.size() > limit) break;
+  }
+  if (closed) *closed = isClosed;
+  if (isClosed) return fwd;
+  std::vector<EdgeRef> back;
+  cur = e;
+  exitFace = fs[1];
+  while (stepAroundEdge(*this, cur, exitFace)) {
+    back.push_back(cur);
+    if (back.size() > limit) break;
+  }
+  std::reverse(back.begin(), back.end());
+  back.insert(back.end(), fwd.begin(), fwd.end());
+  return back;
+}
+
+EdgeRef Complex::canonical(EdgeRef e) const {
+  auto cyc = edgeCycle(e);
+  return *std::min_element(cyc.begin(), cyc.end());
+}
+
+std::vector<std::pair<HexId, int>> Complex::cornersOfVertex(HexId h, int corner) const {
+  std::vector<std::pair<HexId, int>> out{{h, corner}};
+  for (size_t i = 0; i < out.size(); ++i) {
+    auto [hh, cc] = out[i];
+    for (int f : facesOfCorner(cc)) {
+      if (gluing(hh, f).boundary()) continue;
+      std::pair<HexId, int> n{gluing(hh, f).hex, mappedCorner(hh, f, cc)};
+      if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+    }
+  }
+  return out;
+}
+
+std::vector<int32_t> Complex::edgeClasses(int32_t* numClasses) const {
+  UnionFind uf(size_t(12) * alive_.size());
+  for (HexId h : hexes())
+    for (int f = 0; f < 6; ++f) {
+      Gluing g = gluing(h, f);
+      if (g.boundary() || QuadSide{g.hex, g.face} < QuadSide{h, f}) continue;
+      for (int p = 0; p < 4; ++p) {
+        int q0 = mapPosition(p, g.orient), q1 = mapPosition((p + 1) & 3, g.orient);
+        int e2 = ((q1 - q0) & 3) == 1 ? kFaceEdges[g.face][q0] : kFaceEdges[g.face][q1];
+        uf.unite(size_t(12) * h + kFaceEdges[f][p], size_t(12) * g.hex + e2);
+      }
+    }
+  std::vector<int32_t> cls(size_t(12) * alive_.size(), -1);
+  std::vector<int32_t> rootId(cls.size(), -1);
+  int32_t n = 0;
+  for (HexId h : hexes())
+    for (int e = 0; e < 12; ++e) {
+      size_t s = size_t(12) * h + e, r = uf.find(s);
+      if (rootId[r] < 0) rootId[r] = n++;
+      cls[s] = rootId[r];
+    }
+  if (numClasses) *numClasses = n;
+  return cls;
+}
+
+Counts Complex::counts() const {
+  Counts c;
+  int32_t ne = 0;
+  auto cls = edgeClasses(&ne);
+  c.vertices = numVertices_;
+  c.edges = ne;
+  c.quads = numQuads();
+  c.hexes = numHexes_;
+  c.boundaryQuads = numBoundarySides_;
+  std::vector<uint8_t> bEdge(size_t(ne), 0), bVert(pos_.size(), 0);
+  for (HexId h : hexes())
+    for (int f = 0; f < 6; ++f) {
+      if (glue_[h][f] != kBoundary) continue;
+      for (int p = 0; p < 4; ++p) {
+        bEdge[size_t(cls[size_t(12) * h + kFaceEdges[f][p]])] = 1;
+        bVert[size_t(verts_[h][kFaceCorners[f][p]])] = 1;
+      }
+    }
+  c.boundaryEdges = std::count(bEdge.begin(), bEdge.end(), 1);
+  c.boundaryVertices = std::count(bVert.begin(), bVert.end(), 1);
+  return c;
+}
+
+Vec3 Complex::hexCentroid(HexId h) const {
+  Vec3 c;
+  for (VertexId v : verts_[h]) c = c + pos_[v];
+  return 0.125 * c;
+}
+
+size_t Complex::memoryBytes() const {
+  return verts_.capacity() * sizeof(verts_[0]) + glue_.capacity() * sizeof(glue_[0]) + alive_.capacity() +
+         pos_.capacity() * sizeof(Vec3) + refs_.capacity() * sizeof(int32_t);
+}
+
+}  // namespace hexdual

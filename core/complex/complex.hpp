@@ -1,0 +1,175 @@
+// The glued-hex complex: hexes with 8 vertex ids each and, per local face, a gluing to a
+// neighbour's face (or the boundary). Quads and edges are derived from gluings, never from
+// vertex sets, so every degenerate state of the dual operations is representable: two hexes
+// on the same 8 vertices sharing 5 quads, two quads on the same 4 vertices, doubled edges.
+// Local numbering: hex_tables.hpp.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "complex/hex_tables.hpp"
+
+namespace hexdual {
+
+using HexId = int32_t;
+using VertexId = int32_t;
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+};
+inline Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec3 operator*(double s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
+
+// Thrown for every user-facing error (bad input, broken invariant, rejected operation).
+struct Error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// One side of a quad: a local face of a hex.
+struct QuadSide {
+  HexId hex = -1;
+  int face = 0;
+  friend bool operator==(QuadSide a, QuadSide b) { return a.hex == b.hex && a.face == b.face; }
+  friend bool operator<(QuadSide a, QuadSide b) { return a.hex != b.hex ? a.hex < b.hex : a.face < b.face; }
+};
+// One (hex, local edge) incidence of an edge.
+struct EdgeRef {
+  HexId hex = -1;
+  int edge = 0;
+  friend bool operator==(EdgeRef a, EdgeRef b) { return a.hex == b.hex && a.edge == b.edge; }
+  friend bool operator<(EdgeRef a, EdgeRef b) { return a.hex != b.hex ? a.hex < b.hex : a.edge < b.edge; }
+};
+// The other side of a face: neighbour hex and face, and the orientation code of the map.
+struct Gluing {
+  HexId hex = -1;  // -1: boundary
+  int face = 0;
+  int orient = 0;
+  bool boundary() const { return hex < 0; }
+};
+
+struct Counts {
+  int64_t vertices = 0, edges = 0, quads = 0, hexes = 0;
+  int64_t boundaryVertices = 0, boundaryEdges = 0, boundaryQuads = 0;
+  friend bool operator==(const Counts& a, const Counts& b) {
+    return a.vertices == b.vertices && a.edges == b.edges && a.quads == b.quads && a.hexes == b.hexes &&
+           a.boundaryVertices == b.boundaryVertices && a.boundaryEdges == b.boundaryEdges &&
+           a.boundaryQuads == b.boundaryQuads;
+  }
+};
+
+// Iterable range of live hex ids.
+class HexRange {
+ public:
+  class iterator {
+   public:
+    iterator(const std::vector<uint8_t>* alive, HexId h) : alive_(alive), h_(h) { skip(); }
+    HexId operator*() const { return h_; }
+    iterator& operator++() {
+      ++h_;
+      skip();
+      return *this;
+    }
+    bool operator!=(const iterator& o) const { return h_ != o.h_; }
+
+   private:
+    void skip() {
+      while (h_ < (HexId)alive_->size() && !(*alive_)[h_]) ++h_;
+    }
+    const std::vector<uint8_t>* alive_;
+    HexId h_;
+  };
+  explicit HexRange(const std::vector<uint8_t>* alive) : alive_(alive) {}
+  iterator begin() const { return iterator(alive_, 0); }
+  iterator end() const { return iterator(alive_, (HexId)alive_->size()); }
+
+ private:
+  const std::vector<uint8_t>* alive_;
+};
+
+class Complex {
+ public:
+  Complex() = default;
+
+  // ---- construction (builders.hpp has grids, rings and building from connectivity) ----
+  // Adds a vertex at a position; returns its id (ids are never reused).
+  VertexId addVertex(Vec3 p);
+  // Adds a hex on 8 existing vertex ids (VTK order), all faces on the boundary.
+  HexId addHex(const std::array<VertexId, 8>& v);
+  // Glues face fa of hex a to face fb of hex b with an orientation code (both directions).
+  // Legal only when both faces are currently on the boundary.
+  void glue(HexId a, int fa, HexId b, int fb, int orient);
+  // Makes face f of hex h (and its partner) boundary again.
+  void unglue(HexId h, int f);
+  // Removes a hex: its faces must already be unglued. Leaves a tombstone.
+  void removeHex(HexId h);
+  // Points corner c of hex h at another vertex (reference counts follow).
+  void setCorner(HexId h, int c, VertexId v);
+  // Renumbers hexes and vertices densely (drops tombstones and unused vertices), keeping order.
+  void compact();
+
+  // ---- queries ----
+  HexRange hexes() const { return HexRange(&alive_); }
+  bool isHex(HexId h) const { return h >= 0 && h < (HexId)alive_.size() && alive_[h]; }
+  bool isVertex(VertexId v) const { return v >= 0 && v < (VertexId)refs_.size() && refs_[v] > 0; }
+  HexId hexCapacity() const { return (HexId)alive_.size(); }
+  VertexId vertexCapacity() const { return (VertexId)pos_.size(); }
+  int64_t numHexes() const { return numHexes_; }
+  int64_t numVertices() const { return numVertices_; }
+  int64_t numBoundaryQuads() const { return numBoundarySides_; }
+  int64_t numQuads() const { return (6 * numHexes_ + numBoundarySides_) / 2; }
+  // Counts of every kind, including edges (a linear pass over the edge classes).
+  Counts counts() const;
+
+  VertexId vertex(HexId h, int corner) const { return verts_[h][corner]; }
+  const std::array<VertexId, 8>& hexVertices(HexId h) const { return verts_[h]; }
+  Gluing gluing(HexId h, int face) const;
+  Gluing gluing(QuadSide s) const { return gluing(s.hex, s.face); }
+  bool isBoundary(QuadSide s) const { return glue_[s.hex][s.face] == kBoundary; }
+  // The canonical side of a quad: the smaller of its two sides.
+  QuadSide canonical(QuadSide s) const;
+  // All quads, once each, by canonical side.
+  std::vector<QuadSide> quads() const;
+  // Corner of the neighbour that corner c of face f of hex h is glued to (requires interior face).
+  int mappedCorner(HexId h, int face, int corner) const;
+  // The (hex, edge) incidences of an edge, in cycle order; `closed` tells whether the cycle closes.
+  std::vector<EdgeRef> edgeCycle(EdgeRef e, bool* closed = nullptr) const;
+  // The canonical incidence (smallest) of an edge.
+  EdgeRef canonical(EdgeRef e) const;
+  // All (hex, corner) incidences of the vertex at corner c of hex h, found by walking gluings.
+  std::vector<std::pair<HexId, int>> cornersOfVertex(HexId h, int corner) const;
+
+  // Edge classes: a class id per (hex, local edge) slot (index 12*h+e), and the number of classes.
+  std::vector<int32_t> edgeClasses(int32_t* numClasses) const;
+
+  Vec3 position(VertexId v) const { return pos_[v]; }
+  void setPosition(VertexId v, Vec3 p) { pos_[v] = p; }
+  const std::vector<Vec3>& positions() const { return pos_; }
+  Vec3 hexCentroid(HexId h) const;
+
+  // Checks every invariant; throws Error naming the first violation.
+  void validate() const;
+  // Modification counter: changes on every topological edit.
+  uint64_t revision() const { return revision_; }
+  // Bytes held by the topology and positions (for benchmarks).
+  size_t memoryBytes() const;
+
+ private:
+  static constexpr uint32_t kBoundary = 0xFFFFFFFFu;
+  static uint32_t pack(HexId h, int f, int o) { return (uint32_t(h) << 6) | uint32_t(f << 3) | uint32_t(o); }
+  void requireHex(HexId h, const char* what) const;
+  void validateLinks(const std::vector<int32_t>& edgeClass) const;
+
+  std::vector<std::array<VertexId, 8>> verts_;
+  std::vector<std::array<uint32_t, 6>> glue_;
+  std::vector<uint8_t> alive_;
+  std::vector<Vec3> pos_;
+  std::vector<int32_t> refs_;  // number of (hex, corner) incidences per vertex
+  int64_t numHexes_ = 0, numVertices_ = 0, numBoundarySides_ = 0;
+  uint64_t revision_ = 0;
+};
+
+}  // namespace hexdual

@@ -1,0 +1,51 @@
+// Shared helpers for the doctest suites.
+#pragma once
+#include <cstdio>
+#include <functional>
+#include <string>
+
+#include "complex/complex.hpp"
+#include "dual/dual.hpp"
+
+namespace hexdual::test {
+
+// The message of the Error thrown by f, or "" when nothing was thrown.
+inline std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+inline bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+inline int countTopology(const Dual& d, const std::string& t) {
+  int n = 0;
+  for (const auto& s : d.sheets) n += s.topology == t;
+  return n;
+}
+
+// The two hexes A, B of a 1x1x2 grid with a pillow pair X, Y inserted between them by hand,
+// in the native format: A | q | X || Y | q' | B, X and Y on the same 8 vertices sharing 5 quads.
+inline const char* kPillowNative =
+    "hexdual 1\n"
+    "vertices 16\n"
+    "0 0 0\n1 0 0\n0 1 0\n1 1 0\n"
+    "0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
+    "0 0 2\n1 0 2\n0 1 2\n1 1 2\n"
+    "0 0 1.3\n1 0 1.3\n1 1 1.3\n0 1 1.3\n"
+    "hexes 4\n"
+    "0 1 3 2 4 5 7 6\n"      // A
+    "4 5 7 6 8 9 11 10\n"    // B
+    "4 5 7 6 12 13 14 15\n"  // X: q below, new vertices above
+    "12 13 14 15 4 5 7 6\n"  // Y: the mirror of X, q' above
+    "gluings 7\n"
+    "0 5 2 4 0\n"  // A | q | X
+    "2 5 3 4 0\n"  // X | Y across the new vertices
+    "3 5 1 4 0\n"  // Y | q' | B
+    "2 0 3 0 7\n2 1 3 1 7\n2 2 3 2 5\n2 3 3 3 5\n"
+    "end\n";
+
+}  // namespace hexdual::test

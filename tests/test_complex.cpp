@@ -1,0 +1,111 @@
+#include <doctest/doctest.h>
+
+#include "complex/builders.hpp"
+#include "helpers.hpp"
+#include "io/io.hpp"
+
+using namespace hexdual;
+using namespace hexdual::test;
+
+TEST_CASE("grid counts follow the formulas for several sizes") {
+  for (auto [a, b, c] : {std::array<int, 3>{1, 1, 1}, {2, 3, 4}, {3, 3, 3}, {5, 1, 2}, {4, 4, 4}}) {
+    CAPTURE(a);
+    CAPTURE(b);
+    CAPTURE(c);
+    Complex cx = makeGrid(a, b, c);
+    cx.validate();
+    Counts k = cx.counts();
+    CHECK(k.vertices == (a + 1) * (b + 1) * (c + 1));
+    CHECK(k.edges == a * (b + 1) * (c + 1) + (a + 1) * b * (c + 1) + (a + 1) * (b + 1) * c);
+    CHECK(k.quads == (a + 1) * b * c + a * (b + 1) * c + a * b * (c + 1));
+    CHECK(k.hexes == a * b * c);
+    CHECK(k.boundaryQuads == 2 * (a * b + b * c + c * a));
+    CHECK(k.vertices - k.edges + k.quads - k.hexes == 1);
+  }
+}
+
+TEST_CASE("a ring mesh 8x2x2 has the O-grid's counts") {
+  Complex cx = makeRing(8, 2, 2);
+  Counts k = cx.counts();
+  CHECK(k.hexes == 32);
+  CHECK(k.vertices == 8 * 3 * 3);
+  CHECK(k.boundaryQuads == 64);  // inner and outer cylinders 16 each, two end annuli 16 each
+  CHECK(k.quads == (6 * 32 + 64) / 2);
+  CHECK(k.vertices - k.edges + k.quads - k.hexes == 0);      // a solid torus
+}
+
+TEST_CASE("hex ids are stable; removeHex leaves a tombstone and compact renumbers") {
+  Complex cx = makeGrid(3, 1, 1);
+  for (int f = 0; f < 6; ++f) cx.unglue(2, f);
+  cx.removeHex(2);
+  CHECK(cx.numHexes() == 2);
+  CHECK_FALSE(cx.isHex(2));
+  CHECK(cx.isHex(1));
+  CHECK(cx.hexCapacity() == 3);
+  CHECK(cx.numVertices() == 12);
+  cx.validate();
+  cx.compact();
+  CHECK(cx.hexCapacity() == 2);
+  CHECK(cx.vertexCapacity() == 12);
+  cx.validate();
+  CHECK(cx.counts().quads == 11);
+}
+
+TEST_CASE("edge cycles: interior edges close, boundary edges are fans") {
+  Complex cx = makeGrid(2, 2, 2);
+  // Hex 0 edge along z at x=1,y=1 (corners 2-6) is the grid's central z-edge of the bottom layer.
+  int e = tables::edgeBetween(2, 6);
+  bool closed = false;
+  auto cyc = cx.edgeCycle({0, e}, &closed);
+  CHECK(closed);
+  CHECK(cyc.size() == 4);
+  auto fan = cx.edgeCycle({0, tables::edgeBetween(0, 4)}, &closed);
+  CHECK_FALSE(closed);
+  CHECK(fan.size() == 1);
+}
+
+TEST_CASE("validate names the first violation") {
+  Complex cx = makeGrid(2, 1, 1);
+  // Point a corner of hex 1 at a far vertex: the gluing no longer matches vertices.
+  VertexId extra = cx.addVertex({9, 9, 9});
+  cx.setCorner(1, 0, extra);
+  CHECK(contains(errorOf([&] { cx.validate(); }), "validate: hex 0 face 1 is glued to hex 1 face 0 but corner"));
+}
+
+TEST_CASE("validate rejects a non-manifold vertex (two hexes touching at a corner)") {
+  std::vector<Vec3> pts;
+  for (int i = 0; i < 15; ++i) pts.push_back({double(i), 0, 0});
+  // Hexes 0..7 and 7..14 share only vertex 7.
+  auto msg = errorOf([&] { fromConnectivity(pts, {{0, 1, 2, 3, 4, 5, 6, 7}, {7, 8, 9, 10, 11, 12, 13, 14}}); });
+  CHECK(contains(msg, "vertex 7 is non-manifold: its link has 2 components"));
+}
+
+TEST_CASE("fromConnectivity rejects three hexes on one quad and twisted quads") {
+  std::vector<Vec3> pts(16);
+  auto three = errorOf([&] {
+    fromConnectivity(pts, {{0, 1, 2, 3, 4, 5, 6, 7}, {4, 5, 6, 7, 8, 9, 10, 11}, {4, 5, 6, 7, 12, 13, 14, 15}});
+  });
+  CHECK(contains(three, "quad (4,5,6,7) is shared by 3 hexes (0, 1, 2)"));
+  auto twisted = errorOf([&] { fromConnectivity(pts, {{0, 1, 2, 3, 4, 5, 6, 7}, {4, 6, 5, 7, 8, 9, 10, 11}}); });
+  CHECK(contains(twisted, "share the 4 vertices of quad (4,5,6,7) in different cyclic orders"));
+  auto repeat = errorOf([&] { fromConnectivity(pts, {{0, 1, 2, 3, 4, 5, 6, 6}}); });
+  CHECK(contains(repeat, "hex 0 repeats vertex 6"));
+}
+
+TEST_CASE("a pillow pair inserted by hand through the native format is a valid complex") {
+  Complex cx = io::readNative(kPillowNative, "pillow.hxd");
+  cx.validate();
+  Counts k = cx.counts();
+  Counts g = makeGrid(1, 1, 2).counts();
+  // OPERATIONS.md: a minimal pillow changes (V,E,F,H) by (+4,+8,+6,+2).
+  CHECK(k.vertices - g.vertices == 4);
+  CHECK(k.edges - g.edges == 8);
+  CHECK(k.quads - g.quads == 6);
+  CHECK(k.hexes - g.hexes == 2);
+  CHECK(k.boundaryQuads == g.boundaryQuads);
+  // X and Y really do share all 8 vertices, and two quads have the same 4 vertices.
+  auto x = cx.hexVertices(2), y = cx.hexVertices(3);
+  std::sort(x.begin(), x.end());
+  std::sort(y.begin(), y.end());
+  CHECK(x == y);
+}

@@ -1,0 +1,110 @@
+#include <doctest/doctest.h>
+
+#include "complex/builders.hpp"
+#include "helpers.hpp"
+#include "io/io.hpp"
+
+using namespace hexdual;
+using namespace hexdual::test;
+
+TEST_CASE("grid sheets are a+b+c disks and chords ab+bc+ca open columns") {
+  for (auto [a, b, c] : {std::array<int, 3>{1, 1, 1}, {2, 3, 4}, {3, 3, 3}, {6, 2, 1}}) {
+    CAPTURE(a);
+    CAPTURE(b);
+    CAPTURE(c);
+    Dual d = extractDual(makeGrid(a, b, c));
+    CHECK(d.sheets.size() == size_t(a + b + c));
+    CHECK(countTopology(d, "disk") == a + b + c);
+    for (const Sheet& s : d.sheets) {
+      CHECK(s.boundaryLoops == 1);
+      CHECK(s.euler == 1);
+      CHECK_FALSE(s.selfIntersecting);
+    }
+    CHECK(d.chords.size() == size_t(a * b + b * c + c * a));
+    for (const Chord& ch : d.chords) {
+      CHECK_FALSE(ch.closed);
+      CHECK_FALSE(ch.selfIntersecting);
+    }
+    // Every hex lies on 3 sheets and 3 chords, consistently with the slot lists.
+    Complex cx = makeGrid(a, b, c);
+    for (HexId h : cx.hexes())
+      for (int ax = 0; ax < 3; ++ax) {
+        const Sheet& s = d.sheets[size_t(d.sheetOf[h][ax])];
+        CHECK(std::binary_search(s.slots.begin(), s.slots.end(), Slot{h, ax}));
+      }
+  }
+}
+
+TEST_CASE("grid chord lengths and sheet sizes") {
+  Dual d = extractDual(makeGrid(2, 3, 4));
+  int len2 = 0, len3 = 0, len4 = 0;
+  for (const Chord& ch : d.chords) {
+    len2 += ch.slots.size() == 2;
+    len3 += ch.slots.size() == 3;
+    len4 += ch.slots.size() == 4;
+  }
+  CHECK(len2 == 3 * 4);  // columns along x
+  CHECK(len3 == 2 * 4);  // along y
+  CHECK(len4 == 2 * 3);  // along z
+  // Chords are ordered from one boundary end to the other: consecutive hexes are glued.
+  Complex cx = makeGrid(2, 3, 4);
+  for (const Chord& ch : d.chords)
+    for (size_t i = 0; i + 1 < ch.slots.size(); ++i) {
+      Gluing g = cx.gluing(ch.slots[i].hex, 2 * ch.slots[i].axis + 1);
+      bool adjacent = g.hex == ch.slots[i + 1].hex || cx.gluing(ch.slots[i].hex, 2 * ch.slots[i].axis).hex == ch.slots[i + 1].hex;
+      CHECK(adjacent);
+    }
+}
+
+TEST_CASE("ring mesh 8x2x2: circumferential chords closed, radial and axial sheets annuli") {
+  Complex cx = makeRing(8, 2, 2);
+  Dual d = extractDual(cx);
+  CHECK(d.sheets.size() == 12);
+  CHECK(countTopology(d, "annulus") == 4);  // 2 radial layers + 2 axial layers
+  CHECK(countTopology(d, "disk") == 8);     // one per angular position
+  int closed = 0;
+  for (const Chord& ch : d.chords) {
+    if (ch.closed) {
+      ++closed;
+      CHECK(ch.slots.size() == 8);
+      CHECK(ch.slots[0].axis == 1);  // local y runs around
+    } else {
+      CHECK(ch.slots.size() == 2);
+    }
+  }
+  CHECK(closed == 4);
+  CHECK(d.chords.size() == 4 + 8 * 2 + 8 * 2);
+}
+
+TEST_CASE("the hand-made pillow has a sphere sheet of 2 hexes and two closed chords of length 2") {
+  Complex cx = io::readNative(kPillowNative, "pillow.hxd");
+  Dual d = extractDual(cx);
+  Dual g = extractDual(makeGrid(1, 1, 2));
+  CHECK(d.sheets.size() == g.sheets.size() + 1);
+  CHECK(countTopology(d, "sphere") == 1);
+  for (const Sheet& s : d.sheets)
+    if (s.topology == "sphere") {
+      CHECK(s.slots.size() == 2);
+      CHECK(s.slots[0] == Slot{2, 2});
+      CHECK(s.slots[1] == Slot{3, 2});
+      CHECK(s.euler == 2);
+      CHECK(s.boundaryLoops == 0);
+    }
+  int closedLen2 = 0;
+  for (const Chord& ch : d.chords) closedLen2 += ch.closed && ch.slots.size() == 2;
+  CHECK(closedLen2 == 2);
+  // The chord through q gains X and Y: A, X, Y, B.
+  const Chord& z = d.chords[size_t(d.chordOf[0][2])];
+  REQUIRE(z.slots.size() == 4);
+  CHECK(z.slots[0].hex == 0);
+  CHECK(z.slots[1].hex == 2);
+  CHECK(z.slots[2].hex == 3);
+  CHECK(z.slots[3].hex == 1);
+  CHECK_FALSE(z.closed);
+}
+
+TEST_CASE("dual ids are deterministic") {
+  Dual a = extractDual(makeRing(8, 2, 2)), b = extractDual(makeRing(8, 2, 2));
+  CHECK(a.sheetOf == b.sheetOf);
+  CHECK(a.chordOf == b.chordOf);
+}
