@@ -1,0 +1,105 @@
+// The built npm package in Node: same expectations as the native tests.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { init, Mesh, heapBytes } from '../../wasm/index.js';
+
+await init();
+
+test('grid counts and dual match the formulas', () => {
+  const m = Mesh.grid(3, 3, 3);
+  assert.deepEqual(m.counts, { vertices: 64, edges: 144, quads: 108, hexes: 27, boundaryQuads: 54 });
+  assert.equal(m.sheets.length, 9);
+  assert.ok(m.sheets.every((s) => s.topology === 'disk' && s.boundaryLoops === 1));
+  assert.equal(m.chords.length, 27);
+  assert.ok(m.chords.every((c) => !c.closed && c.hexes === 3));
+  m.delete();
+});
+
+test('ring mesh: closed circumferential chords, annuli', () => {
+  const m = Mesh.ring(8, 2, 2);
+  assert.equal(m.chords.filter((c) => c.closed).length, 4);
+  assert.equal(m.sheets.filter((s) => s.topology === 'annulus').length, 4);
+  assert.equal(m.sheets.filter((s) => s.topology === 'disk').length, 8);
+  assert.deepEqual([...m.chordHexes(1)].length, 8);
+  m.delete();
+});
+
+test('wasm info equals the native CLI info --json byte for byte', () => {
+  const cli = new URL('../../build/native/hexdual', import.meta.url).pathname;
+  for (const [kind, dims] of [['grid', '3x3x3'], ['ring', '8x2x2'], ['grid', '2x3x4']]) {
+    const file = `/tmp/hexdual_node_${kind}_${dims}.vtk`;
+    execFileSync(cli, [kind, dims, '-o', file]);
+    const native = execFileSync(cli, ['info', file, '--json']).toString().trim();
+    const [a, b, c] = dims.split('x').map(Number);
+    const m = kind === 'grid' ? Mesh.grid(a, b, c) : Mesh.ring(a, b, c);
+    assert.deepEqual(m.info(), JSON.parse(native));
+    m.delete();
+  }
+});
+
+test('load from bytes in all three formats, and save round trips', () => {
+  const m = Mesh.grid(2, 2, 2);
+  for (const fmt of ['vtk', 'mesh', 'hxd']) {
+    const text = m.save(fmt);
+    const back = Mesh.load(text, `x.${fmt}`);
+    assert.deepEqual(back.counts, m.counts);
+    back.delete();
+  }
+  const bin = m.save('vtk', { binary: true });
+  const bytes = Uint8Array.from(bin, (ch) => ch.charCodeAt(0));
+  const back = Mesh.load(bytes, 'b.vtk');
+  assert.deepEqual(back.counts, m.counts);
+  back.delete();
+  m.delete();
+});
+
+test('render buffers: 6 faces x 4 vertices per hex, a hex id per triangle', () => {
+  const m = Mesh.grid(2, 1, 1);
+  const rb = m.renderBuffers({ shrink: 0.2 });
+  assert.equal(rb.positions.length, 2 * 24 * 3);
+  assert.equal(rb.normals.length, 2 * 24 * 3);
+  assert.equal(rb.indices.length, 2 * 36);
+  assert.deepEqual([...new Set(rb.triangleHex)], [0, 1]);
+  // Shrunk toward the centre (0.5,0.5,0.5) by 0.2: corner 0 at 0.1.
+  // Hex 0, face 0, first corner is corner 0 at the origin, shrunk toward (0.5,0.5,0.5) by 0.2.
+  assert.deepEqual([...rb.positions.slice(0, 3)].map((x) => Math.round(x * 1e6) / 1e6), [0.1, 0.1, 0.1]);
+  assert.deepEqual([...rb.normals.slice(0, 3)].map((x) => x + 0), [-1, 0, 0]);
+  m.delete();
+});
+
+test('errors arrive as Error with the C++ message', () => {
+  assert.throws(() => Mesh.grid(0, 1, 1), { message: 'grid: every dimension must be at least 1' });
+  assert.throws(() => Mesh.load('# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\n', 'p.vtk'), {
+    message: "p.vtk:4: dataset type 'POLYDATA' is not supported; only UNSTRUCTURED_GRID holds hexahedra",
+  });
+  assert.throws(() => Mesh.load('', 'empty.vtk'), { message: 'empty.vtk: the file is empty' });
+  const m = Mesh.grid(1, 1, 1);
+  assert.throws(() => m.sheetHexes(99), { message: 'sheet 99 does not exist' });
+  assert.throws(() => m.save('obj'), { message: "unknown format 'obj' (vtk, mesh or hxd)" });
+  m.delete();
+  assert.throws(() => m.counts, { message: 'hexdual: this Mesh has been deleted' });
+});
+
+test('2,000 failing calls do not grow the heap', () => {
+  const bad = '# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 float\n0 0 0\n';
+  for (let i = 0; i < 200; i++) assert.throws(() => Mesh.load(bad, 'bad.vtk'));
+  const before = heapBytes();
+  for (let i = 0; i < 2000; i++) {
+    assert.throws(() => Mesh.load(bad, 'bad.vtk'));
+    assert.throws(() => Mesh.grid(-1, 2, 2));
+  }
+  assert.equal(heapBytes(), before);
+});
+
+test('meshes free their memory: 500 create/delete cycles do not grow the heap', () => {
+  for (let i = 0; i < 50; i++) Mesh.grid(10, 10, 10).delete();
+  const before = heapBytes();
+  for (let i = 0; i < 500; i++) {
+    const m = Mesh.grid(10, 10, 10);
+    m.info();
+    m.renderBuffers();
+    m.delete();
+  }
+  assert.equal(heapBytes(), before);
+});

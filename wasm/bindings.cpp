@@ -1,0 +1,138 @@
+// Embind bindings: a thin layer over core. No exception crosses into JS: every fallible call
+// catches, stores the message (lastError) and returns null/false; wasm/index.js turns that into
+// a JS Error. This is leak-free where throwing through Embind is not (see ../shared/TOOLCHAIN.md).
+#include <emscripten/bind.h>
+#include <malloc.h>
+
+#include <memory>
+#include <string>
+
+#include "complex/builders.hpp"
+#include "dual/dual.hpp"
+#include "io/io.hpp"
+#include "io/json.hpp"
+#include "layout/render_buffers.hpp"
+
+using namespace emscripten;
+using namespace hexdual;
+
+namespace {
+
+std::string g_lastError;
+
+template <class F>
+auto guarded(F&& f, decltype(f()) onError) -> decltype(f()) {
+  g_lastError.clear();
+  try {
+    return f();
+  } catch (const std::exception& e) {
+    g_lastError = e.what();
+  }
+  return onError;
+}
+
+class WasmMesh {
+ public:
+  explicit WasmMesh(Complex cx) : cx_(std::move(cx)) {}
+
+  static WasmMesh* grid(int a, int b, int c) {
+    return guarded([&] { return new WasmMesh(makeGrid(a, b, c)); }, nullptr);
+  }
+  static WasmMesh* ring(int around, int radial, int axial) {
+    return guarded([&] { return new WasmMesh(makeRing(around, radial, axial)); }, nullptr);
+  }
+  // `bytes` arrives from a Uint8Array (Embind copies it into the string).
+  static WasmMesh* load(const std::string& bytes, const std::string& name) {
+    return guarded([&] { return new WasmMesh(io::readMesh(bytes, name)); }, nullptr);
+  }
+
+  std::string infoJson() { return guarded([&] { return io::infoJson(cx_, dual()); }, std::string()); }
+  std::string save(const std::string& format, bool binary) {
+    return guarded(
+        [&] {
+          io::Format f = format == "vtk" ? io::Format::Vtk : format == "mesh" ? io::Format::Medit
+                         : format == "hxd" ? io::Format::Native
+                                           : throw Error("unknown format '" + format + "' (vtk, mesh or hxd)");
+          return io::writeMesh(cx_, f, binary);
+        },
+        std::string());
+  }
+  bool validate() {
+    return guarded(
+        [&] {
+          cx_.validate();
+          return true;
+        },
+        false);
+  }
+
+  // Hex ids of a sheet or chord, one per slot (a hex appears twice on a self-intersecting one).
+  val sheetHexes(int id) { return slotsToArray(id, true); }
+  val chordHexes(int id) { return slotsToArray(id, false); }
+
+  // Render buffers; the getters return views that wasm/index.js copies at once.
+  bool buildRender(double shrink) {
+    return guarded(
+        [&] {
+          rb_ = buildRenderBuffers(cx_, shrink);
+          return true;
+        },
+        false);
+  }
+  val positions() const { return val(typed_memory_view(rb_.positions.size(), rb_.positions.data())); }
+  val normals() const { return val(typed_memory_view(rb_.normals.size(), rb_.normals.data())); }
+  val indices() const { return val(typed_memory_view(rb_.indices.size(), rb_.indices.data())); }
+  val triangleHex() const { return val(typed_memory_view(rb_.triangleHex.size(), rb_.triangleHex.data())); }
+
+ private:
+  const Dual& dual() {
+    if (!dual_ || dualRevision_ != cx_.revision()) {
+      dual_ = std::make_unique<Dual>(extractDual(cx_));
+      dualRevision_ = cx_.revision();
+    }
+    return *dual_;
+  }
+  val slotsToArray(int id, bool sheet) {
+    const Dual& d = dual();
+    size_t n = sheet ? d.sheets.size() : d.chords.size();
+    if (id < 0 || size_t(id) >= n) {
+      g_lastError = std::string(sheet ? "sheet " : "chord ") + std::to_string(id) + " does not exist";
+      return val::null();
+    }
+    const auto& slots = sheet ? d.sheets[size_t(id)].slots : d.chords[size_t(id)].slots;
+    scratch_.clear();
+    for (const Slot& s : slots) scratch_.push_back(s.hex);
+    return val::global("Int32Array").new_(val(typed_memory_view(scratch_.size(), scratch_.data())));
+  }
+
+  Complex cx_;
+  std::unique_ptr<Dual> dual_;
+  uint64_t dualRevision_ = ~uint64_t(0);
+  RenderBuffers rb_;
+  std::vector<int32_t> scratch_;
+};
+
+std::string lastError() { return g_lastError; }
+// Bytes allocated by malloc right now: leak tests compare it before and after many calls.
+double heapUsed() { return double(mallinfo().uordblks); }
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(hexdual) {
+  function("lastError", &lastError);
+  function("heapUsed", &heapUsed);
+  class_<WasmMesh>("WasmMesh")
+      .class_function("grid", &WasmMesh::grid, allow_raw_pointers())
+      .class_function("ring", &WasmMesh::ring, allow_raw_pointers())
+      .class_function("load", &WasmMesh::load, allow_raw_pointers())
+      .function("infoJson", &WasmMesh::infoJson)
+      .function("save", &WasmMesh::save)
+      .function("validate", &WasmMesh::validate)
+      .function("sheetHexes", &WasmMesh::sheetHexes)
+      .function("chordHexes", &WasmMesh::chordHexes)
+      .function("buildRender", &WasmMesh::buildRender)
+      .function("positions", &WasmMesh::positions)
+      .function("normals", &WasmMesh::normals)
+      .function("indices", &WasmMesh::indices)
+      .function("triangleHex", &WasmMesh::triangleHex);
+}

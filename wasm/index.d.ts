@@ -1,0 +1,58 @@
+// Hand-written types for hexdual's JS API (wasm/index.js).
+export interface InitOptions {
+  wasmBinary?: ArrayBuffer | Uint8Array;
+  locateFile?: (path: string, prefix: string) => string;
+}
+export function init(options?: InitOptions): Promise<unknown>;
+export function heapBytes(): number;
+
+export type SheetTopology = 'disk' | 'annulus' | 'sphere' | 'torus' | 'other';
+export interface SheetInfo {
+  id: number;
+  hexes: number;
+  topology: SheetTopology;
+  boundaryLoops: number;
+  euler: number;
+  selfIntersecting: boolean;
+}
+export interface ChordInfo {
+  id: number;
+  hexes: number;
+  closed: boolean;
+  selfIntersecting: boolean;
+}
+export interface Counts {
+  vertices: number;
+  edges: number;
+  quads: number;
+  hexes: number;
+  boundaryQuads: number;
+}
+export interface Info extends Counts {
+  sheets: SheetInfo[];
+  chords: ChordInfo[];
+}
+export interface RenderBuffers {
+  positions: Float32Array;
+  normals: Float32Array;
+  indices: Uint32Array;
+  triangleHex: Int32Array;
+}
+export type Format = 'vtk' | 'mesh' | 'hxd';
+
+export class Mesh {
+  static grid(a: number, b: number, c: number): Mesh;
+  static ring(around: number, radial: number, axial: number): Mesh;
+  static load(bytes: Uint8Array | ArrayBuffer | string, name?: string): Mesh;
+  info(): Info;
+  readonly counts: Counts;
+  readonly sheets: SheetInfo[];
+  readonly chords: ChordInfo[];
+  sheetHexes(id: number): Int32Array;
+  chordHexes(id: number): Int32Array;
+  validate(): void;
+  save(format: Format, options?: { binary?: boolean }): string;
+  renderBuffers(options?: { shrink?: number }): RenderBuffers;
+  delete(): void;
+  [Symbol.dispose](): void;
+}

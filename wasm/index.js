@@ -1,0 +1,125 @@
+// hexdual: idiomatic JS over the Embind module. `await init()` once, then use Mesh.
+import createHexdual from './dist/hexdual.mjs';
+
+let modulePromise = null;
+let M = null;
+
+/**
+ * Loads the WebAssembly module. In Node the .wasm is read from disk; in a browser pass
+ * `locateFile` (or `wasmBinary`) when the bundler moves the file.
+ */
+export async function init(options = {}) {
+  if (!modulePromise) {
+    const opts = { ...options };
+    if (!opts.wasmBinary && !opts.locateFile && typeof process !== 'undefined' && process.versions?.node) {
+      const { readFile } = await import('node:fs/promises');
+      opts.wasmBinary = await readFile(new URL('./dist/hexdual.wasm', import.meta.url));
+    }
+    modulePromise = createHexdual(opts);
+  }
+  M = await modulePromise;
+  return M;
+}
+
+function module() {
+  if (!M) throw new Error('hexdual: call `await init()` first');
+  return M;
+}
+
+function check(result) {
+  if (result === null || result === undefined || result === false) {
+    throw new Error(module().lastError() || 'hexdual: unknown error');
+  }
+  return result;
+}
+
+export class Mesh {
+  #raw;
+  #info = null;
+  constructor(raw) {
+    this.#raw = raw;
+  }
+
+  /** An a x b x c grid of unit hexes. */
+  static grid(a, b, c) {
+    return new Mesh(check(module().WasmMesh.grid(a, b, c)));
+  }
+  /** An O-grid ring mesh: `around` hexes around, `radial` layers outward, `axial` along the axis. */
+  static ring(around, radial, axial) {
+    return new Mesh(check(module().WasmMesh.ring(around, radial, axial)));
+  }
+  /** Reads a .vtk (ASCII or binary), .mesh or .hxd file from its bytes; the format is detected. */
+  static load(bytes, name = 'mesh') {
+    const data = typeof bytes === 'string' ? new TextEncoder().encode(bytes) : new Uint8Array(bytes);
+    return new Mesh(check(module().WasmMesh.load(data, name)));
+  }
+
+  #live() {
+    if (!this.#raw) throw new Error('hexdual: this Mesh has been deleted');
+    return this.#raw;
+  }
+
+  /** Counts, sheets and chords (the same object as `hexdual info --json`). */
+  info() {
+    if (!this.#info) {
+      const text = this.#live().infoJson();
+      if (!text) check(null);
+      this.#info = JSON.parse(text);
+    }
+    return this.#info;
+  }
+  get counts() {
+    const { vertices, edges, quads, hexes, boundaryQuads } = this.info();
+    return { vertices, edges, quads, hexes, boundaryQuads };
+  }
+  get sheets() {
+    return this.info().sheets;
+  }
+  get chords() {
+    return this.info().chords;
+  }
+  /** Hex ids on a sheet, one per slot. */
+  sheetHexes(id) {
+    return check(this.#live().sheetHexes(id));
+  }
+  /** Hex ids along a chord, in order. */
+  chordHexes(id) {
+    return check(this.#live().chordHexes(id));
+  }
+  /** Throws an Error naming the first broken invariant. */
+  validate() {
+    check(this.#live().validate());
+  }
+  /** Writes the mesh as 'vtk', 'mesh' or 'hxd'; returns a string (binary VTK as a byte string). */
+  save(format, { binary = false } = {}) {
+    const text = this.#live().save(format, binary);
+    if (!text) check(null);
+    return text;
+  }
+  /** Triangles of every hex shrunk toward its centre; copied out of the wasm heap. */
+  renderBuffers({ shrink = 0.15 } = {}) {
+    const raw = this.#live();
+    check(raw.buildRender(shrink));
+    return {
+      positions: new Float32Array(raw.positions()),
+      normals: new Float32Array(raw.normals()),
+      indices: new Uint32Array(raw.indices()),
+      triangleHex: new Int32Array(raw.triangleHex()),
+    };
+  }
+  /** Frees the wasm memory of this mesh. */
+  delete() {
+    if (this.#raw) {
+      this.#raw.delete();
+      this.#raw = null;
+    }
+  }
+  [Symbol.dispose]() {
+    this.delete();
+  }
+}
+
+/** Bytes currently allocated inside the wasm heap (for leak tests). */
+export function heapBytes() {
+  return module().heapUsed();
+}
