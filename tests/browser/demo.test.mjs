@@ -1,0 +1,91 @@
+// The demo page in headless Chromium: counts equal the native CLI's, a sheet can be picked,
+// garbage URLs fall back with a message. Screenshots land in build/screenshots/.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { join } from 'node:path';
+import { startServer, startBrowser, root, screenshotDir } from './harness.mjs';
+
+let server, context, page;
+const errors = [];
+
+before(async () => {
+  server = await startServer();
+  context = await startBrowser();
+  page = await context.newPage();
+  page.on('pageerror', (e) => errors.push(e.message));
+});
+after(async () => {
+  await context?.close();
+  server?.stop();
+});
+
+function nativeInfo(kind, dims) {
+  const cli = join(root, 'build/native/hexdual');
+  const file = `/tmp/hexdual_browser_${kind}_${dims}.hxd`;
+  execFileSync(cli, [kind, dims, '-o', file]);
+  return JSON.parse(execFileSync(cli, ['info', file, '--json']).toString());
+}
+
+async function open(hash) {
+  await page.goto(server.url + hash);
+  await page.waitForFunction(() => window.hexdual?.ready === true, null, { timeout: 20000 });
+}
+
+async function shownCounts() {
+  return page.$$eval('[data-count]', (tds) => Object.fromEntries(tds.map((td) => [td.dataset.count, Number(td.textContent)])));
+}
+
+test('default page shows the 3x3x3 grid with the native counts', async () => {
+  await open('');
+  const native = nativeInfo('grid', '3x3x3');
+  const { vertices, edges, quads, hexes, boundaryQuads } = native;
+  assert.deepEqual(await shownCounts(), { vertices, edges, quads, hexes, boundaryQuads });
+  assert.equal(await page.locator('#sheets li').count(), native.sheets.length);
+  assert.equal(await page.locator('#chords li').count(), native.chords.length);
+  assert.equal(await page.evaluate(() => window.hexdual.view.triangleCount), 27 * 12);
+  await page.screenshot({ path: join(screenshotDir, 'demo-grid.png') });
+});
+
+test('picking a sheet highlights its hexes and goes into the URL', async () => {
+  await open('');
+  await page.locator('#sheets li[data-id="4"]').click();
+  assert.equal(await page.locator('#selection-label').textContent(), 'sheet 4: 9 hexes');
+  assert.equal(await page.locator('#sheets li.selected').getAttribute('data-id'), '4');
+  assert.match(page.url(), /#mesh=grid%3A3x3x3&sheet=4$/);
+  await page.waitForTimeout(300);
+  // Pixels: the highlighted sheet is drawn in colour (not only the faint grey-blue).
+  const png = await page.locator('#view canvas').screenshot({ path: join(screenshotDir, 'demo-grid-sheet.png') });
+  assert.ok(png.length > 10000);
+});
+
+test('ring mesh from the URL: closed chords and annuli, counts equal the native CLI', async () => {
+  await open('#mesh=ring:8x2x2&chord=1');
+  const native = nativeInfo('ring', '8x2x2');
+  assert.equal((await shownCounts()).hexes, native.hexes);
+  assert.equal((await shownCounts()).edges, native.edges);
+  const text = await page.locator('#chords li[data-id="1"]').textContent();
+  assert.match(text, /chord 1 8 hexes · closed/);
+  const sheetText = await page.locator('#sheets').textContent();
+  assert.equal((sheetText.match(/annulus/g) || []).length, 4);
+  assert.equal(await page.locator('#selection-label').textContent(), 'chord 1: 8 hexes');
+  await page.waitForTimeout(300);
+  await page.screenshot({ path: join(screenshotDir, 'demo-ring-chord.png') });
+});
+
+test('a garbage URL falls back to the default mesh with a message', async () => {
+  await open('#mesh=cube:zz&sheet=abc');
+  assert.equal((await shownCounts()).hexes, 27);
+  const err = await page.locator('#error').textContent();
+  assert.match(err, /ignored mesh=cube:zz/);
+  assert.match(err, /ignored sheet=abc/);
+});
+
+test('a bad file upload shows the reader error and keeps the mesh', async () => {
+  await open('#mesh=grid:2x2x2');
+  await page.setInputFiles('#mesh-file', { name: 'bad.vtk', mimeType: 'text/plain', buffer: Buffer.from('# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 float\n0 0 0\n') });
+  await page.waitForFunction(() => document.querySelector('#error').textContent.length > 0);
+  assert.match(await page.locator('#error').textContent(), /bad\.vtk:\d+: unexpected end of file/);
+  assert.equal((await shownCounts()).hexes, 8);
+  assert.deepEqual(errors, []);
+});

@@ -1,0 +1,27 @@
+// Shareable state in the URL hash, e.g. #mesh=grid:3x3x3&sheet=2. Garbage is ignored with a message.
+const DIMS = /^(grid|ring):(\d{1,3})x(\d{1,3})x(\d{1,3})$/;
+
+export function parseHash(hash) {
+  const out = { mesh: { kind: 'grid', dims: [3, 3, 3] }, selection: null, errors: [] };
+  const params = new URLSearchParams(hash.replace(/^#/, ''));
+  const mesh = params.get('mesh');
+  if (mesh !== null) {
+    const m = DIMS.exec(mesh);
+    if (m) out.mesh = { kind: m[1], dims: [Number(m[2]), Number(m[3]), Number(m[4])] };
+    else out.errors.push(`ignored mesh=${mesh}: expected grid:AxBxC or ring:NxRxZ`);
+  }
+  for (const kind of ['sheet', 'chord']) {
+    const v = params.get(kind);
+    if (v === null) continue;
+    if (/^\d{1,7}$/.test(v)) out.selection = { kind, id: Number(v) };
+    else out.errors.push(`ignored ${kind}=${v}: expected a number`);
+  }
+  return out;
+}
+
+export function formatHash({ mesh, selection }) {
+  const params = new URLSearchParams();
+  if (mesh && mesh.kind !== 'file') params.set('mesh', `${mesh.kind}:${mesh.dims.join('x')}`);
+  if (selection) params.set(selection.kind, String(selection.id));
+  return '#' + params.toString();
+}
