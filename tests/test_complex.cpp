@@ -109,3 +109,22 @@ TEST_CASE("a pillow pair inserted by hand through the native format is a valid c
   std::sort(y.begin(), y.end());
   CHECK(x == y);
 }
+
+TEST_CASE("edges(), vertices() and boundaryQuads() list each entity once") {
+  Complex cx = io::readNative(kPillowNative, "p.hxd");
+  Counts k = cx.counts();
+  CHECK(int64_t(cx.edges().size()) == k.edges);
+  CHECK(int64_t(cx.vertices().size()) == k.vertices);
+  CHECK(int64_t(cx.quads().size()) == k.quads);
+  auto bq = cx.boundaryQuads();
+  CHECK(int64_t(bq.size()) == k.boundaryQuads);
+  // Doubled quads are distinct: the pillow has two interior quads on vertices {4,5,6,7}.
+  int onQ = 0;
+  for (QuadSide q : cx.quads()) {
+    std::array<VertexId, 4> v;
+    for (int p = 0; p < 4; ++p) v[size_t(p)] = cx.vertex(q.hex, tables::kFaceCorners[size_t(q.face)][size_t(p)]);
+    std::sort(v.begin(), v.end());
+    onQ += v == std::array<VertexId, 4>{4, 5, 6, 7};
+  }
+  CHECK(onQ == 2);
+}

@@ -108,3 +108,13 @@ TEST_CASE("dual ids are deterministic") {
   CHECK(a.sheetOf == b.sheetOf);
   CHECK(a.chordOf == b.chordOf);
 }
+
+TEST_CASE("validateDual accepts extracted duals and names a tampered slot") {
+  for (Complex cx : {makeGrid(3, 2, 2), makeRing(8, 2, 2), io::readNative(kPillowNative, "p.hxd")}) {
+    Dual d = extractDual(cx);
+    validateDual(cx, d);
+    Dual bad = d;
+    bad.sheetOf[1][0] = bad.sheetOf[1][1];
+    CHECK(contains(errorOf([&] { validateDual(cx, bad); }), "validateDual: slot (hex 1, axis 0)"));
+  }
+}

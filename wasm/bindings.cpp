@@ -57,6 +57,10 @@ class WasmMesh {
         },
         std::string());
   }
+  // Extracts the dual (if stale) and returns the number of sheets: for benchmarks.
+  int numSheets() { return guarded([&] { return int(dual().sheets.size()); }, -1); }
+  int numChords() { return guarded([&] { return int(dual().chords.size()); }, -1); }
+  double memoryBytes() const { return double(cx_.memoryBytes()); }
   bool validate() {
     return guarded(
         [&] {
@@ -128,6 +132,9 @@ EMSCRIPTEN_BINDINGS(hexdual) {
       .function("infoJson", &WasmMesh::infoJson)
       .function("save", &WasmMesh::save)
       .function("validate", &WasmMesh::validate)
+      .function("numSheets", &WasmMesh::numSheets)
+      .function("numChords", &WasmMesh::numChords)
+      .function("memoryBytes", &WasmMesh::memoryBytes)
       .function("sheetHexes", &WasmMesh::sheetHexes)
       .function("chordHexes", &WasmMesh::chordHexes)
       .function("buildRender", &WasmMesh::buildRender)

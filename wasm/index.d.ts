@@ -50,6 +50,8 @@ export class Mesh {
   readonly chords: ChordInfo[];
   sheetHexes(id: number): Int32Array;
   chordHexes(id: number): Int32Array;
+  dualSizes(): { sheets: number; chords: number };
+  memoryBytes(): number;
   validate(): void;
   save(format: Format, options?: { binary?: boolean }): string;
   renderBuffers(options?: { shrink?: number }): RenderBuffers;

@@ -86,6 +86,15 @@ export class Mesh {
   chordHexes(id) {
     return check(this.#live().chordHexes(id));
   }
+  /** Number of sheets and chords, without building the JSON description (cheap after the first call). */
+  dualSizes() {
+    const raw = this.#live();
+    return { sheets: raw.numSheets(), chords: raw.numChords() };
+  }
+  /** Bytes held by the complex (topology and positions) inside the wasm heap. */
+  memoryBytes() {
+    return this.#live().memoryBytes();
+  }
   /** Throws an Error naming the first broken invariant. */
   validate() {
     check(this.#live().validate());

@@ -3,13 +3,20 @@
 #include <algorithm>
 #include <numeric>
 
-#include "complex/union_find.hpp"
 
 namespace hexdual {
 using namespace tables;
 
 void Complex::requireHex(HexId h, const char* what) const {
   if (!isHex(h)) throw Error(std::string(what) + ": hex " + std::to_string(h) + " does not exist");
+}
+
+void Complex::reserve(size_t hexes, size_t vertices) {
+  verts_.reserve(hexes);
+  glue_.reserve(hexes);
+  alive_.reserve(hexes);
+  pos_.reserve(vertices);
+  refs_.reserve(vertices);
 }
 
 VertexId Complex::addVertex(Vec3 p) {
@@ -116,12 +123,6 @@ void Complex::compact() {
   ++revision_;
 }
 
-Gluing Complex::gluing(HexId h, int face) const {
-  uint32_t g = glue_[h][face];
-  if (g == kBoundary) return {};
-  return {HexId(g >> 6), int((g >> 3) & 7), int(g & 7)};
-}
-
 QuadSide Complex::canonical(QuadSide s) const {
   Gluing g = gluing(s);
   if (g.boundary()) return s;
@@ -138,12 +139,6 @@ std::vector<QuadSide> Complex::quads() const {
       if (canonical(s) == s) out.push_back(s);
     }
   return out;
-}
-
-int Complex::mappedCorner(HexId h, int face, int corner) const {
-  Gluing g = gluing(h, face);
-  int p = positionInFace(face, corner);
-  return kFaceCorners[g.face][mapPosition(p, g.orient)];
 }
 
 // Walks from (h, e) out through face `exitFace`; returns the next incidence and its arrival face.
@@ -206,28 +201,69 @@ std::vector<std::pair<HexId, int>> Complex::cornersOfVertex(HexId h, int corner)
 }
 
 std::vector<int32_t> Complex::edgeClasses(int32_t* numClasses) const {
-  UnionFind uf(size_t(12) * alive_.size());
-  for (HexId h : hexes())
-    for (int f = 0; f < 6; ++f) {
-      Gluing g = gluing(h, f);
-      if (g.boundary() || QuadSide{g.hex, g.face} < QuadSide{h, f}) continue;
-      for (int p = 0; p < 4; ++p) {
-        int q0 = mapPosition(p, g.orient), q1 = mapPosition((p + 1) & 3, g.orient);
-        int e2 = ((q1 - q0) & 3) == 1 ? kFaceEdges[g.face][q0] : kFaceEdges[g.face][q1];
-        uf.unite(size_t(12) * h + kFaceEdges[f][p], size_t(12) * g.hex + e2);
-      }
-    }
+  // Walk each edge's cycle (or fan) once, labelling every incidence: linear, no union-find.
   std::vector<int32_t> cls(size_t(12) * alive_.size(), -1);
-  std::vector<int32_t> rootId(cls.size(), -1);
   int32_t n = 0;
   for (HexId h : hexes())
     for (int e = 0; e < 12; ++e) {
-      size_t s = size_t(12) * h + e, r = uf.find(s);
-      if (rootId[r] < 0) rootId[r] = n++;
-      cls[s] = rootId[r];
+      if (cls[size_t(12) * h + e] >= 0) continue;
+      auto fs = facesOfEdge(e);
+      for (int dir = 0; dir < 2; ++dir) {
+        EdgeRef cur{h, e};
+        int exitFace = fs[dir];
+        bool closed = false;
+        while (stepAroundEdge(*this, cur, exitFace)) {
+          int32_t& c = cls[size_t(12) * cur.hex + cur.edge];
+          if (c == n) {
+            closed = true;
+            break;
+          }
+          c = n;
+        }
+        cls[size_t(12) * h + e] = n;
+        if (closed) break;
+      }
+      ++n;
     }
   if (numClasses) *numClasses = n;
   return cls;
+}
+
+std::vector<EdgeRef> Complex::edges() const {
+  int32_t n = 0;
+  auto cls = edgeClasses(&n);
+  std::vector<EdgeRef> out(static_cast<size_t>(n));
+  std::vector<uint8_t> seen(static_cast<size_t>(n), 0);
+  for (HexId h : hexes())
+    for (int e = 0; e < 12; ++e) {
+      int32_t k = cls[size_t(12) * h + e];
+      if (!seen[size_t(k)]) {
+        seen[size_t(k)] = 1;
+        out[size_t(k)] = {h, e};  // the first incidence met in (hex, edge) order is the smallest
+      }
+    }
+  return out;
+}
+
+std::vector<VertexId> Complex::vertices() const {
+  std::vector<VertexId> out;
+  out.reserve(size_t(numVertices_));
+  for (VertexId v = 0; v < (VertexId)refs_.size(); ++v)
+    if (refs_[v] > 0) out.push_back(v);
+  return out;
+}
+
+std::vector<Complex::BoundaryQuad> Complex::boundaryQuads() const {
+  std::vector<BoundaryQuad> out;
+  out.reserve(size_t(numBoundarySides_));
+  for (HexId h : hexes())
+    for (int f = 0; f < 6; ++f)
+      if (glue_[h][f] == kBoundary) {
+        BoundaryQuad q{{h, f}, {}};
+        for (int p = 0; p < 4; ++p) q.vertices[p] = verts_[h][kFaceCorners[f][p]];
+        out.push_back(q);
+      }
+  return out;
 }
 
 Counts Complex::counts() const {

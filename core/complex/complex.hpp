@@ -95,6 +95,8 @@ class Complex {
   Complex() = default;
 
   // ---- construction (builders.hpp has grids, rings and building from connectivity) ----
+  // Reserves storage for this many hexes and vertices in all (avoids regrowth in builders).
+  void reserve(size_t hexes, size_t vertices);
   // Adds a vertex at a position; returns its id (ids are never reused).
   VertexId addVertex(Vec3 p);
   // Adds a hex on 8 existing vertex ids (VTK order), all faces on the boundary.
@@ -126,15 +128,32 @@ class Complex {
 
   VertexId vertex(HexId h, int corner) const { return verts_[h][corner]; }
   const std::array<VertexId, 8>& hexVertices(HexId h) const { return verts_[h]; }
-  Gluing gluing(HexId h, int face) const;
+  Gluing gluing(HexId h, int face) const {
+    uint32_t g = glue_[size_t(h)][size_t(face)];
+    if (g == kBoundary) return {};
+    return {HexId(g >> 6), int((g >> 3) & 7), int(g & 7)};
+  }
   Gluing gluing(QuadSide s) const { return gluing(s.hex, s.face); }
   bool isBoundary(QuadSide s) const { return glue_[s.hex][s.face] == kBoundary; }
   // The canonical side of a quad: the smaller of its two sides.
   QuadSide canonical(QuadSide s) const;
   // All quads, once each, by canonical side.
   std::vector<QuadSide> quads() const;
+  // All edges, once each, by canonical (smallest) incidence.
+  std::vector<EdgeRef> edges() const;
+  // All vertex ids in use, ascending.
+  std::vector<VertexId> vertices() const;
+  // The boundary quad mesh: every boundary side with its 4 vertex ids in face-cycle order.
+  struct BoundaryQuad {
+    QuadSide side;
+    std::array<VertexId, 4> vertices;
+  };
+  std::vector<BoundaryQuad> boundaryQuads() const;
   // Corner of the neighbour that corner c of face f of hex h is glued to (requires interior face).
-  int mappedCorner(HexId h, int face, int corner) const;
+  int mappedCorner(HexId h, int face, int corner) const {
+    Gluing g = gluing(h, face);
+    return tables::kFaceCorners[size_t(g.face)][size_t(tables::mapPosition(tables::positionInFace(face, corner), g.orient))];
+  }
   // The (hex, edge) incidences of an edge, in cycle order; `closed` tells whether the cycle closes.
   std::vector<EdgeRef> edgeCycle(EdgeRef e, bool* closed = nullptr) const;
   // The canonical incidence (smallest) of an edge.

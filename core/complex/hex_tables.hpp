@@ -64,15 +64,18 @@ constexpr std::array<std::array<int, 2>, 12> makeEdgeCorners() {
 }
 inline constexpr auto kEdgeCorners = makeEdgeCorners();
 
-// The local edge joining two corners, or -1 when they are not adjacent.
-constexpr int edgeBetween(int c0, int c1) {
+// The local edge joining two corners, or -1 when they are not adjacent (table lookup).
+constexpr std::array<std::array<int8_t, 8>, 8> makeEdgeBetween() {
+  std::array<std::array<int8_t, 8>, 8> t{};
+  for (auto& row : t) row.fill(-1);
   for (int e = 0; e < 12; ++e) {
-    if ((kEdgeCorners[e][0] == c0 && kEdgeCorners[e][1] == c1) ||
-        (kEdgeCorners[e][0] == c1 && kEdgeCorners[e][1] == c0))
-      return e;
+    t[kEdgeCorners[e][0]][kEdgeCorners[e][1]] = int8_t(e);
+    t[kEdgeCorners[e][1]][kEdgeCorners[e][0]] = int8_t(e);
   }
-  return -1;
+  return t;
 }
+inline constexpr auto kEdgeBetween = makeEdgeBetween();
+constexpr int edgeBetween(int c0, int c1) { return kEdgeBetween[c0][c1]; }
 
 // Local edge between face positions p and p+1.
 constexpr std::array<std::array<int, 4>, 6> makeFaceEdges() {
@@ -83,12 +86,16 @@ constexpr std::array<std::array<int, 4>, 6> makeFaceEdges() {
 }
 inline constexpr auto kFaceEdges = makeFaceEdges();
 
-// Position of a corner in a face's cycle, or -1.
-constexpr int positionInFace(int f, int c) {
-  for (int p = 0; p < 4; ++p)
-    if (kFaceCorners[f][p] == c) return p;
-  return -1;
+// Position of a corner in a face's cycle, or -1 (table lookup).
+constexpr std::array<std::array<int8_t, 8>, 6> makePositionInFace() {
+  std::array<std::array<int8_t, 8>, 6> t{};
+  for (auto& row : t) row.fill(-1);
+  for (int f = 0; f < 6; ++f)
+    for (int p = 0; p < 4; ++p) t[f][kFaceCorners[f][p]] = int8_t(p);
+  return t;
 }
+inline constexpr auto kPositionInFace = makePositionInFace();
+constexpr int positionInFace(int f, int c) { return kPositionInFace[f][c]; }
 
 // The two faces that contain an edge: normal to the edge's other two axes.
 constexpr std::array<int, 2> facesOfEdge(int e) {

@@ -2,22 +2,137 @@
 
 #include <algorithm>
 
-#include "complex/union_find.hpp"
 
 namespace hexdual {
 using namespace tables;
 
-int mapAxisAcross(const Complex& cx, HexId h, int face, int axis) {
-  Gluing g = cx.gluing(h, face);
-  int n = axisOfFace(face);
-  if (axis == n) return axisOfFace(g.face);
+namespace {
+
+// Axis of the neighbour continuing axis `a` across face f glued to face f2 with orientation o.
+constexpr int axisAcross(int f, int a, int f2, int o) {
+  int n = axisOfFace(f);
+  if (a == n) return axisOfFace(f2);
   int u = (n + 1) % 3;
   // Positions 0->1 run along u, 1->2 along v.
-  int q0 = mapPosition(axis == u ? 0 : 1, g.orient), q1 = mapPosition(axis == u ? 1 : 2, g.orient);
+  int q0 = mapPosition(a == u ? 0 : 1, o), q1 = mapPosition(a == u ? 1 : 2, o);
   int m = ((q1 - q0) & 3) == 1 ? q0 : q1;
-  int n2 = axisOfFace(g.face);
+  int n2 = axisOfFace(f2);
   return (m % 2 == 0) ? (n2 + 1) % 3 : (n2 + 2) % 3;
 }
+constexpr std::array<int8_t, 6 * 3 * 6 * 8> makeAxisAcross() {
+  std::array<int8_t, 6 * 3 * 6 * 8> t{};
+  for (int f = 0; f < 6; ++f)
+    for (int a = 0; a < 3; ++a)
+      for (int f2 = 0; f2 < 6; ++f2)
+        for (int o = 0; o < 8; ++o) t[((f * 3 + a) * 6 + f2) * 8 + o] = int8_t(axisAcross(f, a, f2, o));
+  return t;
+}
+constexpr auto kAxisAcross = makeAxisAcross();
+int axisAcrossGluing(int f, int a, const Gluing& g) { return kAxisAcross[((f * 3 + a) * 6 + g.face) * 8 + g.orient]; }
+
+// Position of an a-edge of a hex in the cycle of its sheet slot's mid-quad: (u,v) bits 00,10,11,01.
+constexpr int midIndex(int edge) { return (edge & 1) ^ ((edge >> 1) & 1) ? ((edge & 1) ? 1 : 3) : ((edge & 1) ? 2 : 0); }
+
+// For face f parallel to axis a: its first a-edge and the direction (+1/-1) in which the slot's
+// mid-quad runs over it (from the first a-edge to the second).
+struct MidSide {
+  int8_t firstEdge = -1, secondEdge = -1, dir = 0;
+};
+constexpr std::array<MidSide, 18> makeMidSides() {
+  std::array<MidSide, 18> t{};
+  for (int f = 0; f < 6; ++f)
+    for (int a = 0; a < 3; ++a) {
+      if (axisOfFace(f) == a) continue;
+      MidSide m;
+      for (int p = 0; p < 4; ++p) {
+        int e = kFaceEdges[f][p];
+        if (axisOfEdge(e) != a) continue;
+        if (m.firstEdge < 0) m.firstEdge = int8_t(e);
+        else m.secondEdge = int8_t(e);
+      }
+      m.dir = ((midIndex(m.secondEdge) - midIndex(m.firstEdge)) & 3) == 1 ? 1 : -1;
+      t[f * 3 + a] = m;
+    }
+  return t;
+}
+constexpr auto kMidSides = makeMidSides();
+
+size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
+
+// Floods one sheet from a slot: labels its slots with `id` and an orientation sign per slot.
+// Returns false when two paths disagree on a sign (a non-orientable sheet).
+bool floodSheet(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, std::vector<int8_t>& sign,
+                std::vector<Slot>& stack) {
+  bool orientable = true;
+  sheetOf[slotIndex(start.hex, start.axis)] = id;
+  sign[slotIndex(start.hex, start.axis)] = 1;
+  stack.assign(1, start);
+  while (!stack.empty()) {
+    Slot cur = stack.back();
+    stack.pop_back();
+    int sc = sign[slotIndex(cur.hex, cur.axis)];
+    for (int f = 0; f < 6; ++f) {
+      if (axisOfFace(f) == cur.axis) continue;
+      Gluing g = cx.gluing(cur.hex, f);
+      if (g.boundary()) continue;
+      int a2 = axisAcrossGluing(f, cur.axis, g);
+      const MidSide& ours = kMidSides[f * 3 + cur.axis];
+      const MidSide& theirs = kMidSides[g.face * 3 + a2];
+      // Where does our first a-edge land in the neighbour? Its image decides the neighbour's direction.
+      int c0 = kFaceCorners[g.face][mapPosition(positionInFace(f, kEdgeCorners[ours.firstEdge][0]), g.orient)];
+      int c1 = kFaceCorners[g.face][mapPosition(positionInFace(f, kEdgeCorners[ours.firstEdge][1]), g.orient)];
+      int dirImage = edgeBetween(c0, c1) == theirs.firstEdge ? theirs.dir : -theirs.dir;
+      int want = -sc * ours.dir * dirImage;  // shared mid-edges are run in opposite directions
+      size_t k = slotIndex(g.hex, a2);
+      if (sheetOf[k] < 0) {
+        sheetOf[k] = id;
+        sign[k] = int8_t(want);
+        stack.push_back({g.hex, a2});
+      } else if (sign[k] != want) {
+        orientable = false;
+      }
+    }
+  }
+  return orientable;
+}
+
+// Walks one chord from a slot: back to a boundary end (or once round), then forward, labelling.
+void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf) {
+  Slot cur = start;
+  int back = 2 * cur.axis;  // leaving backwards through the low face
+  bool closed = false;
+  for (;;) {
+    Gluing g = cx.gluing(cur.hex, back);
+    if (g.boundary()) break;
+    cur = {g.hex, axisOfFace(g.face)};
+    back = oppositeFace(g.face);
+    if (cur == start) {
+      closed = back == 2 * start.axis;
+      break;  // round once (a twisted return leaves the chord open-ended at start)
+    }
+  }
+  if (closed) {
+    cur = start;
+    back = 2 * start.axis;
+  }
+  Slot first = cur;
+  int exitFace = oppositeFace(back);
+  for (;;) {
+    ch.slots.push_back(cur);
+    chordOf[slotIndex(cur.hex, cur.axis)] = ch.id;
+    Gluing g = cx.gluing(cur.hex, exitFace);
+    if (g.boundary()) break;
+    cur = {g.hex, axisOfFace(g.face)};
+    exitFace = oppositeFace(g.face);
+    if (chordOf[slotIndex(cur.hex, cur.axis)] == ch.id) break;
+  }
+  ch.closed = closed;
+  (void)first;
+}
+
+}  // namespace
+
+int mapAxisAcross(const Complex& cx, HexId h, int face, int axis) { return axisAcrossGluing(face, axis, cx.gluing(h, face)); }
 
 std::string classifySurface(int64_t euler, int loops, bool orientable) {
   if (!orientable) return "other";
@@ -28,196 +143,146 @@ std::string classifySurface(int64_t euler, int loops, bool orientable) {
   return "other";
 }
 
-namespace {
-
-size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
-
-// Position of an a-edge of a hex in the cycle of the sheet's mid-quad: (u,v) bits 00,10,11,01.
-int midIndex(int edge) {
-  constexpr int idx[4] = {0, 1, 3, 2};
-  return idx[edge & 3];
-}
-
-// Direction (+1/-1) in which the mid-quad of slot (h,a) runs over face f, and the face's first a-edge.
-int midDirection(int face, int axis, int* firstEdge) {
-  int e0 = -1, e1 = -1;
-  for (int p = 0; p < 4; ++p) {
-    int e = kFaceEdges[face][p];
-    if (axisOfEdge(e) != axis) continue;
-    (e0 < 0 ? e0 : e1) = e;
-  }
-  *firstEdge = e0;
-  return ((midIndex(e1) - midIndex(e0)) & 3) == 1 ? 1 : -1;
-}
-
-void orderChord(const Complex& cx, Chord& ch) {
-  // Walk backwards from the smallest slot to a boundary end (or all the way round).
-  Slot start = ch.slots.front();
-  Slot cur = start;
-  int entry = 2 * cur.axis;  // walking backwards: leave through the low face
-  size_t guard = ch.slots.size() + 1;
-  bool closed = false;
-  for (size_t i = 0; i < guard; ++i) {
-    Gluing g = cx.gluing(cur.hex, entry);
-    if (g.boundary()) break;
-    cur = {g.hex, axisOfFace(g.face)};
-    entry = oppositeFace(g.face);
-    if (cur == start && entry == 2 * start.axis) {
-      closed = true;
-      break;
-    }
-  }
-  // Now walk forwards from cur, leaving through the face opposite to where we came in.
-  std::vector<Slot> order;
-  int exitFace = closed ? 2 * start.axis + 1 : oppositeFace(entry);
-  if (closed) cur = start;
-  Slot first = cur;
-  int firstExit = exitFace;
-  for (size_t i = 0; i < guard; ++i) {
-    order.push_back(cur);
-    Gluing g = cx.gluing(cur.hex, exitFace);
-    if (g.boundary()) break;
-    cur = {g.hex, axisOfFace(g.face)};
-    exitFace = oppositeFace(g.face);
-    if (cur == first && exitFace == firstExit) break;
-  }
-  ch.closed = closed;
-  ch.slots = std::move(order);
-}
-
-}  // namespace
-
 Dual extractDual(const Complex& cx) {
   const size_t n = size_t(cx.hexCapacity());
-  UnionFind sheetUF(3 * n), chordUF(3 * n);
-  for (HexId h : cx.hexes())
-    for (int f = 0; f < 6; ++f) {
-      Gluing g = cx.gluing(h, f);
-      if (g.boundary()) continue;
-      int nf = axisOfFace(f);
-      chordUF.unite(slotIndex(h, nf), slotIndex(g.hex, axisOfFace(g.face)));
-      for (int a = 0; a < 3; ++a)
-        if (a != nf) sheetUF.unite(slotIndex(h, a), slotIndex(g.hex, mapAxisAcross(cx, h, f, a)));
-    }
-
   Dual d;
   d.sheetOf.assign(n, {-1, -1, -1});
   d.chordOf.assign(n, {-1, -1, -1});
-  std::vector<int32_t> sheetRoot(3 * n, -1), chordRoot(3 * n, -1);
+  // Flat views of the per-hex arrays (std::array<int32_t,3> is contiguous).
+  int32_t* sheetOf = n ? d.sheetOf[0].data() : nullptr;
+  int32_t* chordOf = n ? d.chordOf[0].data() : nullptr;
+  std::vector<int8_t> sign(3 * n, 0);
+  std::vector<Slot> stack;
+  std::vector<uint8_t> orientable;
   for (HexId h : cx.hexes())
     for (int a = 0; a < 3; ++a) {
-      size_t rs = sheetUF.find(slotIndex(h, a)), rc = chordUF.find(slotIndex(h, a));
-      if (sheetRoot[rs] < 0) {
-        sheetRoot[rs] = int32_t(d.sheets.size());
+      if (sheetOf[slotIndex(h, a)] < 0) {
+        int32_t id = int32_t(d.sheets.size());
         d.sheets.emplace_back();
-        d.sheets.back().id = sheetRoot[rs];
+        d.sheets.back().id = id;
+        d.sheets.back().orientable = floodSheet(cx, {h, a}, id, sheetOf, sign, stack);
       }
-      if (chordRoot[rc] < 0) {
-        chordRoot[rc] = int32_t(d.chords.size());
+      if (chordOf[slotIndex(h, a)] < 0) {
         d.chords.emplace_back();
-        d.chords.back().id = chordRoot[rc];
+        d.chords.back().id = int32_t(d.chords.size() - 1);
+        walkChord(cx, {h, a}, d.chords.back(), chordOf);
       }
-      d.sheetOf[h][a] = sheetRoot[rs];
-      d.chordOf[h][a] = chordRoot[rc];
-      d.sheets[size_t(sheetRoot[rs])].slots.push_back({h, a});
-      d.chords[size_t(chordRoot[rc])].slots.push_back({h, a});
     }
 
-  for (Chord& ch : d.chords) {
-    for (size_t i = 1; i < ch.slots.size(); ++i)
-      if (ch.slots[i].hex == ch.slots[i - 1].hex) ch.selfIntersecting = true;  // slots are sorted by hex
-    orderChord(cx, ch);
+  for (HexId h : cx.hexes()) {
+    const auto &s = d.sheetOf[h], &c = d.chordOf[h];
+    if (s[0] == s[1] || s[0] == s[2]) d.sheets[size_t(s[0])].selfIntersecting = true;
+    if (s[1] == s[2]) d.sheets[size_t(s[1])].selfIntersecting = true;
+    if (c[0] == c[1] || c[0] == c[2]) d.chords[size_t(c[0])].selfIntersecting = true;
+    if (c[1] == c[2]) d.chords[size_t(c[1])].selfIntersecting = true;
   }
+  // Sheet slot lists in (hex, axis) order, sized first to avoid regrowth.
+  std::vector<size_t> sizes(d.sheets.size(), 0);
+  for (HexId h : cx.hexes())
+    for (int a = 0; a < 3; ++a) ++sizes[size_t(d.sheetOf[h][a])];
+  for (size_t s = 0; s < d.sheets.size(); ++s) d.sheets[s].slots.reserve(sizes[s]);
+  for (HexId h : cx.hexes())
+    for (int a = 0; a < 3; ++a) d.sheets[size_t(d.sheetOf[h][a])].slots.push_back({h, a});
 
-  // Sheet mid-surfaces: faces = slots, edges = (slot, parallel face) incidences, vertices = edge classes.
+  // Mid-surfaces: faces = slots, edges = (slot, parallel face) incidences, vertices = edge classes.
   int32_t numEdges = 0;
   auto edgeClass = cx.edgeClasses(&numEdges);
-  std::vector<int64_t> interiorSides(d.sheets.size(), 0), boundarySides(d.sheets.size(), 0), verts(d.sheets.size(), 0);
-  std::vector<uint8_t> edgeSeen(size_t(numEdges), 0);
-  UnionFind loopUF{size_t(numEdges)};
-  std::vector<uint8_t> onBoundary(size_t(numEdges), 0);
+  const size_t ns = d.sheets.size();
+  std::vector<int64_t> interiorSides(ns, 0), boundarySides(ns, 0), verts(ns, 0);
+  std::vector<int32_t> edgeSheet(size_t(numEdges), -1);
+  // Boundary loops: union-find over boundary edge classes along boundary mid-edges.
+  std::vector<int32_t> loopParent(size_t(numEdges), -1);
+  auto root = [&](int32_t x) {
+    while (loopParent[size_t(x)] != x) x = loopParent[size_t(x)] = loopParent[size_t(loopParent[size_t(x)])];
+    return x;
+  };
   for (HexId h : cx.hexes())
     for (int a = 0; a < 3; ++a) {
       size_t s = size_t(d.sheetOf[h][a]);
       for (int k = 0; k < 4; ++k) {
         int32_t ec = edgeClass[size_t(12) * h + 4 * a + k];
-        if (!edgeSeen[size_t(ec)]) {
-          edgeSeen[size_t(ec)] = 1;
+        if (edgeSheet[size_t(ec)] < 0) {
+          edgeSheet[size_t(ec)] = int32_t(s);
           ++verts[s];
         }
       }
       for (int f = 0; f < 6; ++f) {
         if (axisOfFace(f) == a) continue;
-        if (!cx.gluing(h, f).boundary()) {
+        if (!cx.isBoundary({h, f})) {
           ++interiorSides[s];
           continue;
         }
         ++boundarySides[s];
-        int e0 = -1;
-        midDirection(f, a, &e0);
-        for (int p = 0; p < 4; ++p) {
-          int e = kFaceEdges[f][p];
-          if (axisOfEdge(e) != a) continue;
-          int32_t ec = edgeClass[size_t(12) * h + e];
-          onBoundary[size_t(ec)] = 1;
-          loopUF.unite(size_t(edgeClass[size_t(12) * h + e0]), size_t(ec));
-        }
+        const MidSide& m = kMidSides[f * 3 + a];
+        int32_t e0 = edgeClass[size_t(12) * h + m.firstEdge], e1 = edgeClass[size_t(12) * h + m.secondEdge];
+        for (int32_t e : {e0, e1})
+          if (loopParent[size_t(e)] < 0) loopParent[size_t(e)] = e;
+        int32_t r0 = root(e0), r1 = root(e1);
+        if (r0 != r1) loopParent[size_t(std::max(r0, r1))] = std::min(r0, r1);
       }
     }
-  std::vector<uint8_t> rootCounted(size_t(numEdges), 0);
-  std::vector<int32_t> edgeSheet(size_t(numEdges), -1);
-  for (HexId h : cx.hexes())
-    for (int a = 0; a < 3; ++a)
-      for (int k = 0; k < 4; ++k) edgeSheet[size_t(edgeClass[size_t(12) * h + 4 * a + k])] = d.sheetOf[h][a];
-  for (int32_t ec = 0; ec < numEdges; ++ec) {
-    if (!onBoundary[size_t(ec)]) continue;
-    size_t r = loopUF.find(size_t(ec));
-    if (rootCounted[r]) continue;
-    rootCounted[r] = 1;
-    ++d.sheets[size_t(edgeSheet[size_t(ec)])].boundaryLoops;
-  }
-
-  // Orientability: propagate a sign per slot; across a shared mid-edge the two quads must run opposite ways.
-  std::vector<int8_t> sign(3 * n, 0);
-  std::vector<Slot> stack;
+  for (int32_t ec = 0; ec < numEdges; ++ec)
+    if (loopParent[size_t(ec)] == ec) ++d.sheets[size_t(edgeSheet[size_t(ec)])].boundaryLoops;
   for (Sheet& sh : d.sheets) {
     size_t s = size_t(sh.id);
     sh.euler = verts[s] - (interiorSides[s] / 2 + boundarySides[s]) + int64_t(sh.slots.size());
-    for (size_t i = 1; i < sh.slots.size(); ++i)
-      if (sh.slots[i].hex == sh.slots[i - 1].hex) sh.selfIntersecting = true;
-    sign[slotIndex(sh.slots[0].hex, sh.slots[0].axis)] = 1;
-    stack.assign(1, sh.slots[0]);
-    while (!stack.empty() && sh.orientable) {
-      Slot cur = stack.back();
-      stack.pop_back();
-      int sc = sign[slotIndex(cur.hex, cur.axis)];
-      for (int f = 0; f < 6 && sh.orientable; ++f) {
-        if (axisOfFace(f) == cur.axis) continue;
-        Gluing g = cx.gluing(cur.hex, f);
-        if (g.boundary()) continue;
-        int e0 = -1;
-        int dir = midDirection(f, cur.axis, &e0);
-        int a2 = mapAxisAcross(cx, cur.hex, f, cur.axis);
-        int e0b = -1;
-        int dir2 = midDirection(g.face, a2, &e0b);
-        // Where does our first a-edge land in the neighbour?
-        int c0 = cx.mappedCorner(cur.hex, f, kEdgeCorners[e0][0]);
-        int c1 = cx.mappedCorner(cur.hex, f, kEdgeCorners[e0][1]);
-        int img = edgeBetween(c0, c1);
-        int dirImage = img == e0b ? dir2 : -dir2;  // direction the neighbour runs from our first edge
-        int want = -sc * dir * dirImage;
-        int8_t& sn = sign[slotIndex(g.hex, a2)];
-        if (sn == 0) {
-          sn = int8_t(want);
-          stack.push_back({g.hex, a2});
-        } else if (sn != want) {
-          sh.orientable = false;
-        }
-      }
-    }
     sh.topology = classifySurface(sh.euler, sh.boundaryLoops, sh.orientable);
   }
   return d;
+}
+
+}  // namespace hexdual
+
+namespace hexdual {
+
+void validateDual(const Complex& cx, const Dual& d) {
+  auto fail = [](const std::string& m) { throw Error("validateDual: " + m); };
+  auto slotName = [](Slot s) { return "slot (hex " + std::to_string(s.hex) + ", axis " + std::to_string(s.axis) + ")"; };
+  if (d.sheetOf.size() < size_t(cx.hexCapacity()) || d.chordOf.size() < size_t(cx.hexCapacity()))
+    fail("per-hex arrays are shorter than the hex capacity");
+  std::vector<uint8_t> seenSheet(size_t(3) * size_t(cx.hexCapacity()), 0), seenChord(seenSheet.size(), 0);
+  auto mark = [&](std::vector<uint8_t>& seen, Slot s, const char* what, int id) {
+    if (!cx.isHex(s.hex)) fail(std::string(what) + " " + std::to_string(id) + " lists dead hex " + std::to_string(s.hex));
+    uint8_t& m = seen[size_t(3) * size_t(s.hex) + size_t(s.axis)];
+    if (m) fail(slotName(s) + " is listed twice among " + what + "s");
+    m = 1;
+  };
+  for (size_t i = 0; i < d.sheets.size(); ++i)
+    for (Slot s : d.sheets[i].slots) {
+      mark(seenSheet, s, "sheet", d.sheets[i].id);
+      if (d.sheetOf[s.hex][s.axis] != d.sheets[i].id) fail(slotName(s) + " is in sheet " + std::to_string(d.sheets[i].id) + " but sheetOf says otherwise");
+    }
+  for (size_t i = 0; i < d.chords.size(); ++i) {
+    const Chord& ch = d.chords[i];
+    for (size_t k = 0; k < ch.slots.size(); ++k) {
+      Slot s = ch.slots[k];
+      mark(seenChord, s, "chord", ch.id);
+      if (d.chordOf[s.hex][s.axis] != ch.id) fail(slotName(s) + " is in chord " + std::to_string(ch.id) + " but chordOf says otherwise");
+      bool last = k + 1 == ch.slots.size();
+      if (last && !ch.closed) continue;
+      Slot next = ch.slots[last ? 0 : k + 1];
+      Gluing a = cx.gluing(s.hex, 2 * s.axis), b = cx.gluing(s.hex, 2 * s.axis + 1);
+      bool adjacent = (!a.boundary() && a.hex == next.hex && axisOfFace(a.face) == next.axis) ||
+                      (!b.boundary() && b.hex == next.hex && axisOfFace(b.face) == next.axis);
+      if (!adjacent) fail("chord " + std::to_string(ch.id) + ": " + slotName(s) + " is not glued to the next " + slotName(next));
+    }
+  }
+  for (HexId h : cx.hexes())
+    for (int a = 0; a < 3; ++a) {
+      Slot s{h, a};
+      if (!seenSheet[size_t(3) * size_t(h) + size_t(a)]) fail(slotName(s) + " is in no sheet");
+      if (!seenChord[size_t(3) * size_t(h) + size_t(a)]) fail(slotName(s) + " is in no chord");
+      for (int f = 0; f < 6; ++f) {
+        Gluing g = cx.gluing(h, f);
+        if (g.boundary()) continue;
+        int a2 = mapAxisAcross(cx, h, f, a);
+        if (axisOfFace(f) == a) {
+          if (d.chordOf[h][a] != d.chordOf[g.hex][a2]) fail(slotName(s) + " and its neighbour across face " + std::to_string(f) + " are in different chords");
+        } else if (d.sheetOf[h][a] != d.sheetOf[g.hex][a2]) {
+          fail(slotName(s) + " and its neighbour across face " + std::to_string(f) + " are in different sheets");
+        }
+      }
+    }
 }
 
 }  // namespace hexdual

@@ -53,3 +53,11 @@ Dual extractDual(const Complex& cx);
 std::string classifySurface(int64_t euler, int loops, bool orientable);
 
 }  // namespace hexdual
+
+namespace hexdual {
+// Checks that a Dual describes the complex: every live slot is listed exactly once in the sheet
+// and chord named by sheetOf/chordOf, slots glued across parallel (sheet) or normal (chord) quads
+// share a sheet or chord, and chords list consecutive glued slots. Throws Error naming the first
+// inconsistency. Used after incremental updates in debug builds and tests.
+void validateDual(const Complex& cx, const Dual& dual);
+}  // namespace hexdual

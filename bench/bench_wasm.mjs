@@ -1,0 +1,36 @@
+// Wasm benchmark in Node: `node bench/bench_wasm.mjs build N [REPS]` prints one JSON line with the
+// same fields as `hexdual_bench build N` (times are medians of the warm repetitions).
+import { init, Mesh } from '../wasm/index.js';
+
+const [, , what, nArg, repsArg] = process.argv;
+if (what !== 'build' || !nArg) {
+  console.error('usage: node bench/bench_wasm.mjs build N [REPS]');
+  process.exit(2);
+}
+const n = Number(nArg), reps = Number(repsArg || 5);
+await init();
+const build = [], dual = [];
+let sizes, bytes;
+for (let r = 0; r < reps; r++) {
+  const t0 = performance.now();
+  const m = Mesh.grid(n, n, n);
+  const t1 = performance.now();
+  sizes = m.dualSizes();
+  const t2 = performance.now();
+  bytes = m.memoryBytes();
+  m.delete();
+  build.push(t1 - t0);
+  dual.push(t2 - t1);
+}
+const coldMs = build[0] + dual[0];
+if (reps > 1) {
+  build.shift();
+  dual.shift();
+}
+const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
+const hexes = n ** 3;
+console.log(JSON.stringify({
+  bench: 'build-wasm', n, hexes, coldMs: +coldMs.toFixed(3), buildMs: +median(build).toFixed(3), dualMs: +median(dual).toFixed(3),
+  totalMs: +(median(build) + median(dual)).toFixed(3), bytesPerHex: +(bytes / hexes).toFixed(1), ...sizes,
+  peakRssMb: +(process.resourceUsage().maxRSS / 1024).toFixed(1),
+}));
