@@ -49,3 +49,32 @@ inline const char* kPillowNative =
     "end\n";
 
 }  // namespace hexdual::test
+
+#include <sstream>
+
+namespace hexdual::test {
+// Everything observable about a complex, ids and tombstones included: equal dumps = same state.
+inline std::string stateDump(const Complex& cx) {
+  std::ostringstream o;
+  o.precision(17);
+  o << cx.hexCapacity() << " " << cx.vertexCapacity() << " " << cx.numHexes() << " " << cx.numVertices() << " "
+    << cx.numBoundaryQuads() << " " << cx.revision() << "\n";
+  for (HexId h = 0; h < cx.hexCapacity(); ++h) {
+    if (!cx.isHex(h)) {
+      o << "x\n";
+      continue;
+    }
+    for (int c = 0; c < 8; ++c) o << cx.vertex(h, c) << " ";
+    for (int f = 0; f < 6; ++f) {
+      Gluing g = cx.gluing(h, f);
+      o << "|" << g.hex << "," << g.face << "," << g.orient;
+    }
+    o << "\n";
+  }
+  for (VertexId v = 0; v < cx.vertexCapacity(); ++v) {
+    Vec3 p = cx.position(v);
+    o << cx.isVertex(v) << " " << p.x << " " << p.y << " " << p.z << "\n";
+  }
+  return o.str();
+}
+}  // namespace hexdual::test

@@ -23,6 +23,7 @@ VertexId Complex::addVertex(Vec3 p) {
   pos_.push_back(p);
   refs_.push_back(0);
   ++revision_;
+  record({JournalEntry::AddVertex, VertexId(pos_.size() - 1), 0, 0, {}});
   return VertexId(pos_.size() - 1);
 }
 
@@ -40,6 +41,7 @@ HexId Complex::addHex(const std::array<VertexId, 8>& v) {
   ++numHexes_;
   numBoundarySides_ += 6;
   ++revision_;
+  record({JournalEntry::AddHex, HexId(alive_.size() - 1), 0, 0, {}});
   return HexId(alive_.size() - 1);
 }
 
@@ -54,12 +56,14 @@ void Complex::glue(HexId a, int fa, HexId b, int fb, int orient) {
   glue_[b][fb] = pack(a, fa, inverseOrient(orient));
   numBoundarySides_ -= 2;
   ++revision_;
+  record({JournalEntry::Glue, a, fa, 0, {}});
 }
 
 void Complex::unglue(HexId h, int f) {
   requireHex(h, "unglue");
   Gluing g = gluing(h, f);
   if (g.boundary()) return;
+  record({JournalEntry::Unglue, h, f, glue_[h][f], {}});
   glue_[h][f] = kBoundary;
   glue_[g.hex][g.face] = kBoundary;
   numBoundarySides_ += 2;
@@ -76,6 +80,7 @@ void Complex::removeHex(HexId h) {
   --numHexes_;
   numBoundarySides_ -= 6;
   ++revision_;
+  record({JournalEntry::RemoveHex, h, 0, 0, {}});
 }
 
 void Complex::setCorner(HexId h, int c, VertexId v) {
@@ -87,9 +92,80 @@ void Complex::setCorner(HexId h, int c, VertexId v) {
   if (refs_[v]++ == 0) ++numVertices_;
   verts_[h][c] = v;
   ++revision_;
+  record({JournalEntry::SetCorner, h, c, uint32_t(old), {}});
+}
+
+void Complex::beginTransaction() {
+  if (journaling_) throw Error("beginTransaction: a transaction is already open");
+  journal_.clear();
+  journaling_ = true;
+  revisionAtBegin_ = revision_;
+}
+
+void Complex::commitTransaction() {
+  journaling_ = false;
+  journal_.clear();
+}
+
+void Complex::rollbackTransaction() {
+  journaling_ = false;
+  for (auto it = journal_.rbegin(); it != journal_.rend(); ++it) {
+    const JournalEntry& e = *it;
+    switch (e.kind) {
+      case JournalEntry::AddVertex:
+        pos_.pop_back();
+        refs_.pop_back();
+        break;
+      case JournalEntry::AddHex:
+        for (VertexId x : verts_.back())
+          if (--refs_[x] == 0) --numVertices_;
+        verts_.pop_back();
+        glue_.pop_back();
+        alive_.pop_back();
+        --numHexes_;
+        numBoundarySides_ -= 6;
+        break;
+      case JournalEntry::Glue: {
+        Gluing g = gluing(e.hex, e.face);
+        glue_[e.hex][e.face] = kBoundary;
+        glue_[g.hex][g.face] = kBoundary;
+        numBoundarySides_ += 2;
+        break;
+      }
+      case JournalEntry::Unglue: {
+        uint32_t v = e.value;
+        HexId b = HexId(v >> 6);
+        int fb = int((v >> 3) & 7), o = int(v & 7);
+        glue_[e.hex][e.face] = v;
+        glue_[b][fb] = pack(e.hex, e.face, inverseOrient(o));
+        numBoundarySides_ -= 2;
+        break;
+      }
+      case JournalEntry::RemoveHex:
+        alive_[e.hex] = 1;
+        for (VertexId x : verts_[e.hex])
+          if (refs_[x]++ == 0) ++numVertices_;
+        ++numHexes_;
+        numBoundarySides_ += 6;
+        break;
+      case JournalEntry::SetCorner: {
+        VertexId cur = verts_[e.hex][e.face], old = VertexId(e.value);
+        if (--refs_[cur] == 0) --numVertices_;
+        if (refs_[old]++ == 0) ++numVertices_;
+        verts_[e.hex][e.face] = old;
+        break;
+      }
+      case JournalEntry::SetPosition:
+        pos_[e.hex] = e.pos;
+        break;
+    }
+  }
+  journal_.clear();
+  revision_ = revisionAtBegin_;
 }
 
 void Complex::compact() {
+  if (journaling_) throw Error("compact: not allowed inside a transaction");
   std::vector<HexId> newHex(alive_.size(), -1);
   HexId nh = 0;
   for (HexId h = 0; h < (HexId)alive_.size(); ++h)

@@ -165,12 +165,24 @@ class Complex {
   std::vector<int32_t> edgeClasses(int32_t* numClasses) const;
 
   Vec3 position(VertexId v) const { return pos_[v]; }
-  void setPosition(VertexId v, Vec3 p) { pos_[v] = p; }
+  void setPosition(VertexId v, Vec3 p) {
+    record({JournalEntry::SetPosition, v, 0, 0, pos_[v]});
+    pos_[v] = p;
+  }
   const std::vector<Vec3>& positions() const { return pos_; }
   Vec3 hexCentroid(HexId h) const;
 
   // Checks every invariant; throws Error naming the first violation.
   void validate() const;
+  // Checks the invariants that an edit of these hexes can break: their gluings, their 8 distinct
+  // vertices, and the links of their vertices (found by walking, so this is local).
+  void validateAround(const std::vector<HexId>& hexes) const;
+
+  // ---- transactions: every edit between begin and rollback is undone exactly ----
+  void beginTransaction();
+  void commitTransaction();
+  void rollbackTransaction();
+  bool inTransaction() const { return journaling_; }
   // Modification counter: changes on every topological edit.
   uint64_t revision() const { return revision_; }
   // Bytes held by the topology and positions (for benchmarks).
@@ -187,6 +199,19 @@ class Complex {
   std::vector<uint8_t> alive_;
   std::vector<Vec3> pos_;
   std::vector<int32_t> refs_;  // number of (hex, corner) incidences per vertex
+  struct JournalEntry {
+    enum Kind : uint8_t { AddVertex, AddHex, Glue, Unglue, RemoveHex, SetCorner, SetPosition } kind;
+    HexId hex;
+    int face;
+    uint32_t value;
+    Vec3 pos;
+  };
+  void record(JournalEntry e) {
+    if (journaling_) journal_.push_back(e);
+  }
+  std::vector<JournalEntry> journal_;
+  bool journaling_ = false;
+  uint64_t revisionAtBegin_ = 0;
   int64_t numHexes_ = 0, numVertices_ = 0, numBoundarySides_ = 0;
   uint64_t revision_ = 0;
 };

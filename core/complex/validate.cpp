@@ -136,3 +136,68 @@ void Complex::validateLinks(const std::vector<int32_t>& edgeClass) const {
 }
 
 }  // namespace hexdual
+
+namespace hexdual {
+
+void Complex::validateAround(const std::vector<HexId>& hexList) const {
+  std::vector<VertexId> verts;
+  for (HexId h : hexList) {
+    if (!isHex(h)) continue;
+    for (int c = 0; c < 8; ++c) {
+      VertexId v = verts_[h][c];
+      for (int d = 0; d < c; ++d)
+        if (verts_[h][d] == v)
+          fail("hex " + std::to_string(h) + " uses vertex " + std::to_string(v) + " at corners " + std::to_string(d) +
+               " and " + std::to_string(c));
+      verts.push_back(v);
+    }
+    for (int f = 0; f < 6; ++f) {
+      Gluing g = gluing(h, f);
+      if (g.boundary()) continue;
+      if (!isHex(g.hex)) fail(hf(h, f) + " is glued to missing hex " + std::to_string(g.hex));
+      Gluing back = gluing(g.hex, g.face);
+      if (back.hex != h || back.face != f || back.orient != inverseOrient(g.orient))
+        fail(hf(h, f) + " is glued to " + hf(g.hex, g.face) + ", which is not glued back the same way");
+      for (int p = 0; p < 4; ++p) {
+        int c = kFaceCorners[f][p], c2 = kFaceCorners[g.face][mapPosition(p, g.orient)];
+        if (verts_[h][c] != verts_[g.hex][c2])
+          fail(hf(h, f) + " is glued to " + hf(g.hex, g.face) + " but their vertices differ");
+      }
+    }
+  }
+  std::sort(verts.begin(), verts.end());
+  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+  // Vertex links, found by walking from one corner: connected, and a sphere or a disk.
+  for (VertexId v : verts) {
+    HexId h0 = -1;
+    int c0 = -1;
+    for (HexId h : hexList)
+      if (isHex(h))
+        for (int c = 0; c < 8 && h0 < 0; ++c)
+          if (verts_[h][c] == v) {
+            h0 = h;
+            c0 = c;
+          }
+    auto corners = cornersOfVertex(h0, c0);
+    std::string name = "vertex " + std::to_string(v);
+    if ((int32_t)corners.size() != refs_[v])
+      fail(name + " is non-manifold: its link is not connected");
+    int64_t boundarySides = 0;
+    std::vector<EdgeRef> edges;
+    for (auto [h, c] : corners) {
+      for (int f : facesOfCorner(c)) boundarySides += gluing(h, f).boundary();
+      for (int e : edgesOfCorner(c)) edges.push_back(canonical(EdgeRef{h, e}));
+    }
+    std::sort(edges.begin(), edges.end());
+    int64_t linkV = std::unique(edges.begin(), edges.end()) - edges.begin();
+    int64_t linkT = int64_t(corners.size());
+    int64_t linkE = (3 * linkT - boundarySides) / 2 + boundarySides;
+    int64_t chi = linkV - linkE + linkT;
+    if (boundarySides == 0 && chi != 2)
+      fail(name + " is interior but its link is not a sphere (Euler characteristic " + std::to_string(chi) + ")");
+    if (boundarySides > 0 && chi != 1)
+      fail(name + " is on the boundary but its link is not a disk (Euler characteristic " + std::to_string(chi) + ")");
+  }
+}
+
+}  // namespace hexdual

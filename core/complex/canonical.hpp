@@ -1,0 +1,21 @@
+// Canonical form of a complex up to isomorphism: relabel hexes by a breadth-first traversal from a
+// start flag (hex + one of the cube's 48 frames), recording each hex's vertices and, per face,
+// its neighbour and the relative frame across the gluing.
+// With a fixed boundary (the default) the isomorphism must keep every boundary vertex id, hence
+// every boundary quad: the start flag is read off the smallest boundary quad. A complex without
+// boundary (or fixedBoundary = false) tries every start flag: quadratic, for small complexes.
+// Assumes a connected complex.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "complex/complex.hpp"
+
+namespace hexdual {
+
+std::vector<int64_t> canonicalForm(const Complex& cx, bool fixedBoundary = true);
+// 64-bit FNV-1a hash of the canonical form.
+uint64_t canonicalHash(const Complex& cx, bool fixedBoundary = true);
+bool isomorphic(const Complex& a, const Complex& b, bool fixedBoundary = true);
+
+}  // namespace hexdual

@@ -1,0 +1,107 @@
+// Minimal pillow and its inverse (TK03 §4.3, Fig. 7; MOAB atomic_pillow / rev_atomic_pillow).
+#include "ops/support.hpp"
+
+namespace hexdual {
+using namespace tables;
+using namespace ops;
+
+OpResult pillow(Complex& cx, QuadSide q) {
+  const std::string op = "pillow";
+  if (!cx.isHex(q.hex)) reject(op, hexName(q.hex) + " does not exist");
+  if (q.face < 0 || q.face > 5) reject(op, "local face " + std::to_string(q.face) + " is not 0..5");
+  Gluing gB = cx.gluing(q);
+  if (gB.boundary()) reject(op, "quad " + sideName(q) + " is on the boundary; a pillow needs an interior quad");
+  const HexId A = q.hex, B = gB.hex;
+  const int fA = q.face, fB = gB.face;
+
+  // q's vertices in A's face cycle; the new ones move 30% of the way toward B's centre.
+  std::array<VertexId, 4> Q, N;
+  Vec3 cB = cx.hexCentroid(B);
+  Transaction tx(cx);
+  for (int p = 0; p < 4; ++p) {
+    Q[size_t(p)] = cx.vertex(A, kFaceCorners[size_t(fA)][size_t(p)]);
+    Vec3 x = cx.position(Q[size_t(p)]);
+    N[size_t(p)] = cx.addVertex(x + 0.3 * (cB - x));
+  }
+  // X: q at the bottom (face 4), the new vertices on top; Y: its mirror, q' on top.
+  std::array<VertexId, 8> vx, vy;
+  for (int p = 0; p < 4; ++p) {
+    vx[size_t(kFaceCorners[4][size_t(p)])] = Q[size_t(p)];
+    vx[size_t(kFaceCorners[5][size_t(p)])] = N[size_t(p)];
+    vy[size_t(kFaceCorners[4][size_t(p)])] = N[size_t(p)];
+    vy[size_t(kFaceCorners[5][size_t(p)])] = Q[size_t(p)];
+  }
+  cx.unglue(A, fA);
+  HexId X = cx.addHex(vx), Y = cx.addHex(vy);
+  glueByVertices(cx, A, fA, X, 4);
+  glueByVertices(cx, X, 5, Y, 4);
+  for (int f = 0; f < 4; ++f) glueByVertices(cx, X, f, Y, f);
+  glueByVertices(cx, Y, 5, B, fB);
+
+  OpResult r;
+  r.op = op;
+  r.createdHexes = {X, Y};
+  r.createdVertices.assign(N.begin(), N.end());
+  r.inverse = "unpillow h" + std::to_string(X);
+  tx.commit(r, {A, B, X, Y});
+  return r;
+}
+
+OpResult unpillow(Complex& cx, HexId x) {
+  const std::string op = "unpillow";
+  if (!cx.isHex(x)) reject(op, hexName(x) + " does not exist");
+  // The partner is the hex glued to x across exactly 5 faces; x's sixth face is its free face.
+  HexId y = -1;
+  int freeX = -1;
+  for (int f = 0; f < 6 && y < 0; ++f) {
+    Gluing g = cx.gluing(x, f);
+    if (g.boundary() || g.hex == x) continue;
+    int n = 0, other = -1;
+    for (int k = 0; k < 6; ++k) {
+      Gluing gk = cx.gluing(x, k);
+      if (!gk.boundary() && gk.hex == g.hex) ++n;
+      else other = k;
+    }
+    if (n == 5) {
+      y = g.hex;
+      freeX = other;
+    }
+  }
+  if (y < 0) reject(op, hexName(x) + " is not half of a pillow (no hex shares exactly 5 quads with it)");
+  int freeY = -1;
+  for (int f = 0; f < 6; ++f) {
+    Gluing g = cx.gluing(y, f);
+    if (g.boundary() || g.hex != x) freeY = f;
+  }
+  Gluing gA = cx.gluing(x, freeX), gB = cx.gluing(y, freeY);
+  if (gA.boundary() || gB.boundary())
+    reject(op, "the pillow of " + hexName(x) + " and " + hexName(y) + " touches the boundary; it must lie between two hexes");
+  if (faceVertexSet(cx, x, freeX) != faceVertexSet(cx, y, freeY))
+    reject(op, "the free quads of " + hexName(x) + " and " + hexName(y) + " are not on the same 4 vertices");
+  // The inner vertices (opposite x's free face) must be used by x and y only.
+  std::vector<VertexId> inner;
+  for (int p = 0; p < 4; ++p) {
+    VertexId v = cx.vertex(x, kFaceCorners[size_t(oppositeFace(freeX))][size_t(p)]);
+    if (cx.cornersOfVertex(x, kFaceCorners[size_t(oppositeFace(freeX))][size_t(p)]).size() != 2)
+      reject(op, "vertex " + std::to_string(v) + " inside the pillow is used by other hexes");
+    inner.push_back(v);
+  }
+  const HexId A = gA.hex, B = gB.hex;
+  const int fA = gA.face, fB = gB.face;
+  if (A == y || B == x) reject(op, "the pillow is glued to itself");
+  Transaction tx(cx);
+  for (int f = 0; f < 6; ++f) cx.unglue(x, f);
+  for (int f = 0; f < 6; ++f) cx.unglue(y, f);
+  cx.removeHex(x);
+  cx.removeHex(y);
+  glueByVertices(cx, A, fA, B, fB);
+  OpResult r;
+  r.op = op;
+  r.removedHexes = {x, y};
+  r.removedVertices = inner;
+  r.inverse = "pillow h" + std::to_string(A) + "f" + std::to_string(fA);
+  tx.commit(r, {A, B});
+  return r;
+}
+
+}  // namespace hexdual

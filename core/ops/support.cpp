@@ -1,0 +1,104 @@
+#include "ops/support.hpp"
+
+namespace hexdual::ops {
+using namespace tables;
+
+std::array<VertexId, 4> faceVertexSet(const Complex& cx, HexId h, int f) {
+  std::array<VertexId, 4> s;
+  for (int p = 0; p < 4; ++p) s[size_t(p)] = cx.vertex(h, kFaceCorners[size_t(f)][size_t(p)]);
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+int orientByVertices(const Complex& cx, HexId a, int fa, HexId b, int fb) {
+  auto posInB = [&](int pa) {
+    VertexId v = cx.vertex(a, kFaceCorners[size_t(fa)][size_t(pa)]);
+    for (int p = 0; p < 4; ++p)
+      if (cx.vertex(b, kFaceCorners[size_t(fb)][size_t(p)]) == v) return p;
+    return -1;
+  };
+  int p0 = posInB(0), p1 = posInB(1);
+  if (p0 < 0 || p1 < 0) return -1;
+  if (((p1 - p0) & 3) != 1 && ((p0 - p1) & 3) != 1) return -1;
+  int o = orientFromPositions(p0, p1);
+  for (int p = 2; p < 4; ++p)
+    if (posInB(p) != mapPosition(p, o)) return -1;
+  return o;
+}
+
+void glueByVertices(Complex& cx, HexId a, int fa, HexId b, int fb) {
+  int o = orientByVertices(cx, a, fa, b, fb);
+  if (o < 0)
+    throw Error("internal: hex " + std::to_string(a) + " face " + std::to_string(fa) + " and hex " + std::to_string(b) +
+                " face " + std::to_string(fb) + " do not carry the same vertices");
+  cx.glue(a, fa, b, fb, o);
+}
+
+EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op) {
+  if (!cx.isHex(e.hex)) reject(op, hexName(e.hex) + " does not exist");
+  if (e.edge < 0 || e.edge > 11) reject(op, "local edge " + std::to_string(e.edge) + " is not 0..11");
+  EdgeStar st;
+  EdgeRef cur = e;
+  int exitFace = facesOfEdge(e.edge)[0];
+  int entry = facesOfEdge(e.edge)[1];
+  for (size_t guard = 0; guard <= size_t(12) * size_t(cx.numHexes()); ++guard) {
+    st.inc.push_back(cur);
+    st.entryFace.push_back(entry);
+    st.exitFace.push_back(exitFace);
+    Gluing g = cx.gluing(cur.hex, exitFace);
+    if (g.boundary()) reject(op, "edge " + edgeName(e) + " is on the boundary; it needs a closed cycle of hexes");
+    int c0 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[size_t(cur.edge)][0]);
+    int c1 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[size_t(cur.edge)][1]);
+    cur = {g.hex, edgeBetween(c0, c1)};
+    entry = g.face;
+    auto fs = facesOfEdge(cur.edge);
+    exitFace = fs[0] == g.face ? fs[1] : fs[0];
+    if (cur == e) {
+      st.entryFace[0] = entry;
+      return st;
+    }
+  }
+  reject(op, "the cycle around edge " + edgeName(e) + " does not close");
+}
+
+int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side) {
+  (void)cx;
+  size_t n = st.inc.size();
+  for (size_t k = 0; k < n; ++k) {
+    QuadSide a{st.inc[k].hex, st.exitFace[k]}, b{st.inc[(k + 1) % n].hex, st.entryFace[(k + 1) % n]};
+    if (a == side || b == side) return int(k);
+  }
+  return -1;
+}
+
+void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) {
+#ifdef HEXDUAL_CHECK_INVARIANTS
+  (void)touched;
+  cx_.validate();
+#else
+  cx_.validateAround(touched);
+#endif
+  r.dV = cx_.numVertices() - v0_;
+  r.dF = cx_.numQuads() - f0_;
+  r.dH = cx_.numHexes() - h0_;
+  r.dE = r.dV + r.dF - r.dH;  // V - E + F - H is invariant under every local operation
+  cx_.commitTransaction();
+  open_ = false;
+}
+
+std::vector<std::pair<HexId, int>> cornersOnSide(const Complex& cx, std::pair<HexId, int> seed,
+                                                 const std::vector<QuadSide>& walls) {
+  auto isWall = [&](HexId h, int f) { return std::find(walls.begin(), walls.end(), QuadSide{h, f}) != walls.end(); };
+  std::vector<std::pair<HexId, int>> out{seed};
+  for (size_t i = 0; i < out.size(); ++i) {
+    auto [h, c] = out[i];
+    for (int f : facesOfCorner(c)) {
+      if (cx.gluing(h, f).boundary() || isWall(h, f)) continue;
+      std::pair<HexId, int> n{cx.gluing(h, f).hex, cx.mappedCorner(h, f, c)};
+      if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+    }
+  }
+  return out;
+}
+
+}  // namespace hexdual::ops

@@ -1,0 +1,64 @@
+// Helpers shared by the operations (not part of the public API).
+#pragma once
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "complex/complex.hpp"
+#include "ops/ops.hpp"
+
+namespace hexdual::ops {
+
+[[noreturn]] inline void reject(const std::string& op, const std::string& why) { throw Error(op + ": " + why); }
+
+inline std::string hexName(HexId h) { return "hex " + std::to_string(h); }
+inline std::string sideName(QuadSide s) { return "h" + std::to_string(s.hex) + "f" + std::to_string(s.face); }
+inline std::string edgeName(EdgeRef e) { return "h" + std::to_string(e.hex) + "e" + std::to_string(e.edge); }
+
+// The orientation code that maps face fa of hex a onto face fb of hex b vertex for vertex, or -1.
+int orientByVertices(const Complex& cx, HexId a, int fa, HexId b, int fb);
+// Glues two boundary faces that carry the same 4 vertices in cyclic order (throws otherwise).
+void glueByVertices(Complex& cx, HexId a, int fa, HexId b, int fb);
+// The sorted vertex ids of a face.
+std::array<VertexId, 4> faceVertexSet(const Complex& cx, HexId h, int f);
+
+// The closed cycle of hexes and quads around an interior edge: incidence k, then quad k between
+// incidence k (its face exitFace[k]) and incidence k+1 (its face entryFace[k+1]).
+struct EdgeStar {
+  std::vector<EdgeRef> inc;
+  std::vector<int> exitFace, entryFace;
+};
+// Throws (as op) when e is not an edge of a live hex or its cycle does not close.
+EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op);
+// Index k of quad k of the star that has `side` as one of its sides, or -1.
+int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side);
+
+// Opens a transaction; rolls back unless commit() is reached. Also fills the result's counts.
+class Transaction {
+ public:
+  explicit Transaction(Complex& cx) : cx_(cx) {
+    cx_.beginTransaction();
+    v0_ = cx.numVertices();
+    f0_ = cx.numQuads();
+    h0_ = cx.numHexes();
+  }
+  ~Transaction() {
+    if (open_) cx_.rollbackTransaction();
+  }
+  Transaction(const Transaction&) = delete;
+  Transaction& operator=(const Transaction&) = delete;
+  // Checks the invariants around `touched` (debug builds: everywhere), fills counts, commits.
+  void commit(OpResult& r, const std::vector<HexId>& touched);
+
+ private:
+  Complex& cx_;
+  bool open_ = true;
+  int64_t v0_, f0_, h0_;
+};
+
+// Partition of the corners of vertex v (given one of its corners) into the two sides of a loop of
+// quads through v: corners reachable from `seed` without crossing any of `walls` (quad sides).
+std::vector<std::pair<HexId, int>> cornersOnSide(const Complex& cx, std::pair<HexId, int> seed,
+                                                 const std::vector<QuadSide>& walls);
+
+}  // namespace hexdual::ops
