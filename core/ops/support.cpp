@@ -102,3 +102,66 @@ std::vector<std::pair<HexId, int>> cornersOnSide(const Complex& cx, std::pair<He
 }
 
 }  // namespace hexdual::ops
+
+namespace hexdual::ops {
+
+std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::vector<HexId>& removed,
+                                const std::vector<std::array<VertexId, 8>>& added) {
+  using Key = std::array<VertexId, 4>;
+  auto isRemoved = [&](HexId h) { return std::find(removed.begin(), removed.end(), h) != removed.end(); };
+  std::vector<std::pair<Key, QuadSide>> outside;
+  std::vector<Key> formerBoundary;
+  for (HexId h : removed)
+    for (int f = 0; f < 6; ++f) {
+      Gluing g = cx.gluing(h, f);
+      if (g.boundary()) formerBoundary.push_back(faceVertexSet(cx, h, f));
+      else if (!isRemoved(g.hex)) outside.push_back({faceVertexSet(cx, h, f), {g.hex, g.face}});
+    }
+  for (HexId h : removed)
+    for (int f = 0; f < 6; ++f) cx.unglue(h, f);
+  for (HexId h : removed) cx.removeHex(h);
+  std::vector<HexId> created;
+  for (const auto& v : added) created.push_back(cx.addHex(v));
+  std::vector<std::pair<Key, QuadSide>> open;
+  for (HexId h : created)
+    for (int f = 0; f < 6; ++f) open.push_back({faceVertexSet(cx, h, f), {h, f}});
+  auto take = [&](const Key& k) {
+    std::vector<QuadSide> hits;
+    for (auto it = open.begin(); it != open.end();)
+      if (it->first == k) {
+        hits.push_back(it->second);
+        it = open.erase(it);
+      } else {
+        ++it;
+      }
+    return hits;
+  };
+  for (const auto& [key, side] : outside) {
+    auto hits = take(key);
+    if (hits.size() != 1)
+      reject(op, "the new hexes do not fit the neighbour " + sideName(side) + " (" + std::to_string(hits.size()) +
+                     " faces carry its vertices)");
+    int o = orientByVertices(cx, hits[0].hex, hits[0].face, side.hex, side.face);
+    if (o < 0) reject(op, "the new hexes meet " + sideName(side) + " in a different cyclic order");
+    cx.glue(hits[0].hex, hits[0].face, side.hex, side.face, o);
+  }
+  while (!open.empty()) {
+    Key key = open.front().first;
+    auto hits = take(key);
+    if (hits.size() == 2) {
+      int o = orientByVertices(cx, hits[0].hex, hits[0].face, hits[1].hex, hits[1].face);
+      if (o < 0) reject(op, "two new faces carry the same vertices in different cyclic orders");
+      cx.glue(hits[0].hex, hits[0].face, hits[1].hex, hits[1].face, o);
+    } else if (hits.size() == 1) {
+      auto it = std::find(formerBoundary.begin(), formerBoundary.end(), key);
+      if (it == formerBoundary.end()) reject(op, "the new hexes would change the boundary quad mesh");
+      formerBoundary.erase(it);
+    } else {
+      reject(op, "more than two new faces carry the same 4 vertices");
+    }
+  }
+  if (!formerBoundary.empty()) reject(op, "the new hexes would change the boundary quad mesh");
+  return created;
+}
+
+}  // namespace hexdual::ops

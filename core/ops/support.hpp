@@ -62,3 +62,13 @@ std::vector<std::pair<HexId, int>> cornersOnSide(const Complex& cx, std::pair<He
                                                  const std::vector<QuadSide>& walls);
 
 }  // namespace hexdual::ops
+
+namespace hexdual::ops {
+// Replaces `removed` hexes by hexes on the given vertex arrays (ids assigned in order). Gluings
+// are rebuilt from vertex sets: each former outside neighbour is glued to the one new face with
+// its 4 vertices; new faces with equal vertex sets pair up; a face left over must carry the
+// vertices of a former boundary quad of the removed hexes (the boundary quad mesh is kept).
+// Throws (as op) when the new hexes do not fit. Call inside a Transaction.
+std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::vector<HexId>& removed,
+                                const std::vector<std::array<VertexId, 8>>& added);
+}  // namespace hexdual::ops

@@ -1,0 +1,137 @@
+// Chord push and its inverse (TK03 §4.1, Figs. 2-3).
+#include "ops/support.hpp"
+
+namespace hexdual {
+using namespace tables;
+using namespace ops;
+
+namespace {
+// The vertex of face f of hex h that follows corner c away from corner `away` along the cycle.
+VertexId neighbourInFace(const Complex& cx, HexId h, int f, int c, int away) {
+  int p = positionInFace(f, c);
+  int n1 = kFaceCorners[size_t(f)][size_t((p + 1) & 3)], n3 = kFaceCorners[size_t(f)][size_t((p + 3) & 3)];
+  return cx.vertex(h, n1 == away ? n3 : n1);
+}
+}  // namespace
+
+OpResult chordPush(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
+  const std::string op = "chordPush";
+  EdgeStar st = closedEdgeStar(cx, e, op);
+  const int n = int(st.inc.size());
+  int i = quadIndexInStar(cx, st, f), j = quadIndexInStar(cx, st, g);
+  if (i < 0) reject(op, "quad " + sideName(f) + " is not in the cycle around edge " + edgeName(e));
+  if (j < 0) reject(op, "quad " + sideName(g) + " is not in the cycle around edge " + edgeName(e));
+  if (i == j) reject(op, "f and g are the same quad; chord push needs two distinct quads");
+  // Quad k lies between incidence k (exit face) and k+1 (entry face). Arc L runs i+1..j, R runs j+1..i.
+  const EdgeRef li = st.inc[size_t((i + 1) % n)], lj = st.inc[size_t(j)];
+  const QuadSide fL{li.hex, st.entryFace[size_t((i + 1) % n)]}, fR{st.inc[size_t(i)].hex, st.exitFace[size_t(i)]};
+  const QuadSide gL{lj.hex, st.exitFace[size_t(j)]}, gR{st.inc[size_t((j + 1) % n)].hex, st.entryFace[size_t((j + 1) % n)]};
+  const int ca = kEdgeCorners[size_t(li.edge)][0], cb = kEdgeCorners[size_t(li.edge)][1];
+  const VertexId a = cx.vertex(li.hex, ca), b = cx.vertex(li.hex, cb);
+  const VertexId fa = neighbourInFace(cx, li.hex, fL.face, ca, cb), fb = neighbourInFace(cx, li.hex, fL.face, cb, ca);
+  // In arc L's last hex the edge may be numbered the other way round.
+  int da = kEdgeCorners[size_t(lj.edge)][0], db = kEdgeCorners[size_t(lj.edge)][1];
+  if (cx.vertex(lj.hex, da) != a) std::swap(da, db);
+  const VertexId ga = neighbourInFace(cx, lj.hex, gL.face, da, db), gb = neighbourInFace(cx, lj.hex, gL.face, db, da);
+  if (fa == ga || fa == gb || fb == ga || fb == gb)
+    reject(op, "quads " + sideName(f) + " and " + sideName(g) + " share more than edge " + edgeName(e));
+
+  Transaction tx(cx);
+  auto place = [&](VertexId base, VertexId u, VertexId w) {
+    Vec3 p = cx.position(base);
+    return cx.addVertex(p + 0.3 * (cx.position(u) - p) + 0.3 * (cx.position(w) - p));
+  };
+  const VertexId na = place(a, fa, ga), nb = place(b, fb, gb);
+  // Local frame of X and Y: x along e, face y=0 on f, face z=0 on g.
+  std::array<VertexId, 8> v;
+  v[size_t(cornerAt(0, 0, 0))] = a;
+  v[size_t(cornerAt(1, 0, 0))] = b;
+  v[size_t(cornerAt(0, 0, 1))] = fa;
+  v[size_t(cornerAt(1, 0, 1))] = fb;
+  v[size_t(cornerAt(0, 1, 0))] = ga;
+  v[size_t(cornerAt(1, 1, 0))] = gb;
+  v[size_t(cornerAt(0, 1, 1))] = na;
+  v[size_t(cornerAt(1, 1, 1))] = nb;
+  cx.unglue(fL.hex, fL.face);
+  cx.unglue(gL.hex, gL.face);
+  HexId X = cx.addHex(v), Y = cx.addHex(v);
+  glueByVertices(cx, X, 2, fL.hex, fL.face);
+  glueByVertices(cx, X, 4, gL.hex, gL.face);
+  glueByVertices(cx, Y, 2, fR.hex, fR.face);
+  glueByVertices(cx, Y, 4, gR.hex, gR.face);
+  for (int k : {0, 1, 3, 5}) glueByVertices(cx, X, k, Y, k);
+  OpResult r;
+  r.op = op;
+  r.createdHexes = {X, Y};
+  r.createdVertices = {na, nb};
+  r.inverse = "chordpull h" + std::to_string(X);
+  tx.commit(r, {X, Y, fL.hex, fR.hex, gL.hex, gR.hex});
+  return r;
+}
+
+OpResult chordPull(Complex& cx, HexId x) {
+  const std::string op = "chordPull";
+  if (!cx.isHex(x)) reject(op, hexName(x) + " does not exist");
+  HexId y = -1;
+  std::vector<int> freeX;
+  for (int f = 0; f < 6 && y < 0; ++f) {
+    Gluing g = cx.gluing(x, f);
+    if (g.boundary() || g.hex == x) continue;
+    std::vector<int> others;
+    for (int k = 0; k < 6; ++k)
+      if (cx.gluing(x, k).boundary() || cx.gluing(x, k).hex != g.hex) others.push_back(k);
+    if (others.size() == 2) {
+      y = g.hex;
+      freeX = others;
+    }
+  }
+  if (y < 0) reject(op, hexName(x) + " is not half of a blind chord (no hex shares exactly 4 quads with it)");
+  if (axisOfFace(freeX[0]) == axisOfFace(freeX[1]))
+    reject(op, "the two quads of " + hexName(x) + " not shared with " + hexName(y) + " are opposite; they must share an edge");
+  // y's free faces carry the same vertices as x's.
+  std::vector<int> freeY;
+  for (int k = 0; k < 6; ++k)
+    if (cx.gluing(y, k).boundary() || cx.gluing(y, k).hex != x) freeY.push_back(k);
+  if (freeY.size() != 2) reject(op, hexName(y) + " does not share exactly 4 quads with " + hexName(x));
+  if (faceVertexSet(cx, y, freeY[0]) != faceVertexSet(cx, x, freeX[0])) std::swap(freeY[0], freeY[1]);
+  for (int k = 0; k < 2; ++k) {
+    if (faceVertexSet(cx, y, freeY[size_t(k)]) != faceVertexSet(cx, x, freeX[size_t(k)]))
+      reject(op, "the free quads of " + hexName(x) + " and " + hexName(y) + " are not on the same vertices");
+    if (cx.gluing(x, freeX[size_t(k)]).boundary() || cx.gluing(y, freeY[size_t(k)]).boundary())
+      reject(op, "the blind chord of " + hexName(x) + " and " + hexName(y) + " touches the boundary");
+  }
+  // The two corners of x on neither free face are its inner vertices: used by x and y only.
+  std::vector<VertexId> inner;
+  for (int c = 0; c < 8; ++c) {
+    if (positionInFace(freeX[0], c) >= 0 || positionInFace(freeX[1], c) >= 0) continue;
+    if (cx.cornersOfVertex(x, c).size() != 2)
+      reject(op, "vertex " + std::to_string(cx.vertex(x, c)) + " inside the blind chord is used by other hexes");
+    inner.push_back(cx.vertex(x, c));
+  }
+  QuadSide f1 = {cx.gluing(x, freeX[0]).hex, cx.gluing(x, freeX[0]).face};
+  QuadSide f2 = {cx.gluing(y, freeY[0]).hex, cx.gluing(y, freeY[0]).face};
+  QuadSide g1 = {cx.gluing(x, freeX[1]).hex, cx.gluing(x, freeX[1]).face};
+  QuadSide g2 = {cx.gluing(y, freeY[1]).hex, cx.gluing(y, freeY[1]).face};
+  if (f1.hex == y || f2.hex == x || g1.hex == y || g2.hex == x) reject(op, "the blind chord is glued to itself");
+  // The restored edge: the one shared by f and g, named in f1's hex.
+  int sharedCorners[2], ns = 0;
+  for (int c = 0; c < 8; ++c)
+    if (positionInFace(freeX[0], c) >= 0 && positionInFace(freeX[1], c) >= 0) sharedCorners[ns++] = c;
+  int e1 = edgeBetween(cx.mappedCorner(x, freeX[0], sharedCorners[0]), cx.mappedCorner(x, freeX[0], sharedCorners[1]));
+  Transaction tx(cx);
+  for (int k = 0; k < 6; ++k) cx.unglue(x, k);
+  for (int k = 0; k < 6; ++k) cx.unglue(y, k);
+  cx.removeHex(x);
+  cx.removeHex(y);
+  glueByVertices(cx, f1.hex, f1.face, f2.hex, f2.face);
+  glueByVertices(cx, g1.hex, g1.face, g2.hex, g2.face);
+  OpResult r;
+  r.op = op;
+  r.removedHexes = {x, y};
+  r.removedVertices = inner;
+  r.inverse = "chordpush " + edgeName({f1.hex, e1}) + " " + sideName(f1) + " " + sideName(g1);
+  tx.commit(r, {f1.hex, f2.hex, g1.hex, g2.hex});
+  return r;
+}
+
+}  // namespace hexdual

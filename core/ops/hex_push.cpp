@@ -1,0 +1,172 @@
+// Hex push (the 2-6 flip) and hex pull (6-2), TK03 §4.2, Figs. 4-5; MOAB face_shrink.
+#include "ops/support.hpp"
+
+namespace hexdual {
+using namespace tables;
+using namespace ops;
+
+namespace {
+int flipAxis(int c, int axis) {
+  int b[3] = {cornerBit(c, 0), cornerBit(c, 1), cornerBit(c, 2)};
+  b[axis] ^= 1;
+  return cornerAt(b[0], b[1], b[2]);
+}
+int sharedQuads(const Complex& cx, HexId a, HexId b) {
+  int n = 0;
+  for (int f = 0; f < 6; ++f) n += !cx.gluing(a, f).boundary() && cx.gluing(a, f).hex == b;
+  return n;
+}
+}  // namespace
+
+OpResult hexPush(Complex& cx, QuadSide q) {
+  const std::string op = "hexPush";
+  if (!cx.isHex(q.hex)) reject(op, hexName(q.hex) + " does not exist");
+  if (q.face < 0 || q.face > 5) reject(op, "local face " + std::to_string(q.face) + " is not 0..5");
+  Gluing gB = cx.gluing(q);
+  if (gB.boundary()) reject(op, "quad " + sideName(q) + " is on the boundary; hex push needs an interior quad");
+  const HexId A = q.hex, B = gB.hex;
+  const int fA = q.face, fB = gB.face;
+  if (A == B) reject(op, "quad " + sideName(q) + " joins " + hexName(A) + " to itself");
+  int shared = sharedQuads(cx, A, B);
+  if (shared != 1)
+    reject(op, "hexes " + std::to_string(A) + " and " + std::to_string(B) + " share " + std::to_string(shared) +
+                   " quads; hex push needs exactly one");
+  int common = 0;
+  for (VertexId v : cx.hexVertices(A))
+    for (VertexId w : cx.hexVertices(B)) common += v == w;
+  if (common != 4)
+    reject(op, "hexes " + std::to_string(A) + " and " + std::to_string(B) + " share " + std::to_string(common) +
+                   " vertices; hex push needs exactly the 4 of the quad");
+
+  // Q: q's vertices (A's face positions); P: across A; R: across B; N: new, halfway to q's centre.
+  const int na = axisOfFace(fA), nb = axisOfFace(fB);
+  std::array<int, 4> cA, cB;
+  Vec3 centre;
+  for (int p = 0; p < 4; ++p) {
+    cA[size_t(p)] = kFaceCorners[size_t(fA)][size_t(p)];
+    cB[size_t(p)] = cx.mappedCorner(A, fA, cA[size_t(p)]);
+    centre = centre + 0.25 * cx.position(cx.vertex(A, cA[size_t(p)]));
+  }
+  Transaction tx(cx);
+  std::array<VertexId, 4> N;
+  for (int p = 0; p < 4; ++p) N[size_t(p)] = cx.addVertex(0.5 * (cx.position(cx.vertex(A, cA[size_t(p)])) + centre));
+  auto qIndexOfA = [&](int c) { return positionInFace(fA, c); };  // corner of A on q -> p
+  // A' and B': A and B with q's vertices replaced by N.
+  std::array<VertexId, 8> a2 = cx.hexVertices(A), b2 = cx.hexVertices(B);
+  for (int p = 0; p < 4; ++p) {
+    a2[size_t(cA[size_t(p)])] = N[size_t(p)];
+    b2[size_t(cB[size_t(p)])] = N[size_t(p)];
+  }
+  std::vector<std::array<VertexId, 8>> added{a2, b2};
+  // Ring hex for each side face s of A: A's corners on s stay; a corner off s takes R (if its partner
+  // on s is a q corner) or N (if its partner is a corner of the face opposite q).
+  for (int s = 0; s < 6; ++s) {
+    if (axisOfFace(s) == na) continue;
+    std::array<VertexId, 8> ring = cx.hexVertices(A);
+    for (int c = 0; c < 8; ++c) {
+      if (positionInFace(s, c) >= 0) continue;
+      int partner = flipAxis(c, axisOfFace(s));
+      int p = qIndexOfA(partner);
+      if (p >= 0) {
+        ring[size_t(c)] = cx.vertex(B, flipAxis(cB[size_t(p)], nb));  // R_p
+      } else {
+        ring[size_t(c)] = N[size_t(qIndexOfA(flipAxis(partner, na)))];  // N_p
+      }
+    }
+    added.push_back(ring);
+  }
+  auto created = replaceHexes(cx, op, {A, B}, added);
+  OpResult r;
+  r.op = op;
+  r.removedHexes = {A, B};
+  r.createdHexes = created;
+  r.createdVertices.assign(N.begin(), N.end());
+  r.inverse = "hexpull h" + std::to_string(created[0]) + "f" + std::to_string(fA);
+  std::vector<HexId> touched = created;
+  for (HexId h : created)
+    for (int f = 0; f < 6; ++f)
+      if (!cx.gluing(h, f).boundary()) touched.push_back(cx.gluing(h, f).hex);
+  tx.commit(r, touched);
+  return r;
+}
+
+OpResult hexPull(Complex& cx, QuadSide r) {
+  const std::string op = "hexPull";
+  if (!cx.isHex(r.hex)) reject(op, hexName(r.hex) + " does not exist");
+  if (r.face < 0 || r.face > 5) reject(op, "local face " + std::to_string(r.face) + " is not 0..5");
+  Gluing gB = cx.gluing(r);
+  if (gB.boundary()) reject(op, "quad " + sideName(r) + " is on the boundary; hex pull needs an interior quad");
+  const HexId A2 = r.hex, B2 = gB.hex;
+  const int fr = r.face, fb = gB.face;
+  if (A2 == B2) reject(op, "quad " + sideName(r) + " joins " + hexName(A2) + " to itself");
+  // The 4 hexes on A''s sides form the ring; each is glued to B' as well.
+  std::vector<HexId> ring;
+  for (int s = 0; s < 6; ++s) {
+    if (axisOfFace(s) == axisOfFace(fr)) continue;
+    Gluing g = cx.gluing(A2, s);
+    if (g.boundary() || g.hex == B2 || g.hex == A2 || std::find(ring.begin(), ring.end(), g.hex) != ring.end())
+      reject(op, "the 4 side quads of " + hexName(A2) + " must be glued to 4 distinct ring hexes");
+    if (sharedQuads(cx, g.hex, B2) != 1 || sharedQuads(cx, g.hex, A2) != 1)
+      reject(op, "ring " + hexName(g.hex) + " must share one quad with each of " + hexName(A2) + " and " + hexName(B2));
+    ring.push_back(g.hex);
+  }
+  // The 4 vertices of r: used by A', B' and two ring hexes each.
+  std::array<VertexId, 4> N, Q;
+  for (int p = 0; p < 4; ++p) {
+    int c = kFaceCorners[size_t(fr)][size_t(p)];
+    N[size_t(p)] = cx.vertex(A2, c);
+    if (cx.cornersOfVertex(A2, c).size() != 4)
+      reject(op, "vertex " + std::to_string(N[size_t(p)]) + " of quad " + sideName(r) + " is used by other hexes");
+    // Q_p: in a ring hex holding P_p and N_p, the edge-neighbour of P_p outside A'.
+    int cp = c;
+    {
+      int bits[3] = {cornerBit(c, 0), cornerBit(c, 1), cornerBit(c, 2)};
+      bits[axisOfFace(fr)] ^= 1;
+      cp = cornerAt(bits[0], bits[1], bits[2]);
+    }
+    VertexId P = cx.vertex(A2, cp);
+    Q[size_t(p)] = -1;
+    for (HexId h : ring) {
+      int ch = -1;
+      for (int k = 0; k < 8; ++k)
+        if (cx.vertex(h, k) == P) ch = k;
+      if (ch < 0) continue;
+      bool hasN = false;
+      for (int k = 0; k < 8; ++k) hasN |= cx.vertex(h, k) == N[size_t(p)];
+      if (!hasN) continue;
+      for (int ed : edgesOfCorner(ch)) {
+        int other = kEdgeCorners[size_t(ed)][0] == ch ? kEdgeCorners[size_t(ed)][1] : kEdgeCorners[size_t(ed)][0];
+        VertexId w = cx.vertex(h, other);
+        bool inA2 = false;
+        for (VertexId u : cx.hexVertices(A2)) inA2 |= u == w;
+        if (!inA2) Q[size_t(p)] = w;
+      }
+      break;
+    }
+    if (Q[size_t(p)] < 0) reject(op, "the hexes around " + sideName(r) + " do not form a hex push");
+  }
+  std::array<VertexId, 8> a = cx.hexVertices(A2), b = cx.hexVertices(B2);
+  for (int p = 0; p < 4; ++p) {
+    a[size_t(kFaceCorners[size_t(fr)][size_t(p)])] = Q[size_t(p)];
+    b[size_t(cx.mappedCorner(A2, fr, kFaceCorners[size_t(fr)][size_t(p)]))] = Q[size_t(p)];
+  }
+  (void)fb;
+  Transaction tx(cx);
+  std::vector<HexId> removed{A2, B2};
+  removed.insert(removed.end(), ring.begin(), ring.end());
+  auto created = replaceHexes(cx, op, removed, {a, b});
+  OpResult res;
+  res.op = op;
+  res.removedHexes = removed;
+  res.createdHexes = created;
+  res.removedVertices.assign(N.begin(), N.end());
+  res.inverse = "hexpush h" + std::to_string(created[0]) + "f" + std::to_string(fr);
+  std::vector<HexId> touched = created;
+  for (HexId h : created)
+    for (int f = 0; f < 6; ++f)
+      if (!cx.gluing(h, f).boundary()) touched.push_back(cx.gluing(h, f).hex);
+  tx.commit(res, touched);
+  return res;
+}
+
+}  // namespace hexdual
