@@ -1,0 +1,165 @@
+// Face open-collapse and its inverse (MOAB face_open_collapse; OPERATIONS.md 4b).
+#include "ops/support.hpp"
+
+namespace hexdual {
+using namespace tables;
+using namespace ops;
+
+namespace {
+VertexId neighbourInFace(const Complex& cx, HexId h, int f, int c, int away) {
+  int p = positionInFace(f, c);
+  int n1 = kFaceCorners[size_t(f)][size_t((p + 1) & 3)], n3 = kFaceCorners[size_t(f)][size_t((p + 3) & 3)];
+  return cx.vertex(h, n1 == away ? n3 : n1);
+}
+int cornerWithVertex(const Complex& cx, HexId h, VertexId v) {
+  for (int c = 0; c < 8; ++c)
+    if (cx.vertex(h, c) == v) return c;
+  return -1;
+}
+bool onBoundary(const Complex& cx, HexId h, int c) {
+  for (auto [hh, cc] : cx.cornersOfVertex(h, c))
+    for (int f : facesOfCorner(cc))
+      if (cx.gluing(hh, f).boundary()) return true;
+  return false;
+}
+}  // namespace
+
+OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
+  const std::string op = "faceCollapse";
+  EdgeStar st = closedEdgeStar(cx, e, op);
+  const int n = int(st.inc.size());
+  int i = quadIndexInStar(cx, st, f), j = quadIndexInStar(cx, st, g);
+  if (i < 0) reject(op, "quad " + sideName(f) + " is not in the cycle around edge " + edgeName(e));
+  if (j < 0) reject(op, "quad " + sideName(g) + " is not in the cycle around edge " + edgeName(e));
+  if (i == j) reject(op, "f and g are the same quad; face collapse needs two distinct quads");
+  const EdgeRef li = st.inc[size_t((i + 1) % n)], lj = st.inc[size_t(j)];
+  const QuadSide fL{li.hex, st.entryFace[size_t((i + 1) % n)]}, fR{st.inc[size_t(i)].hex, st.exitFace[size_t(i)]};
+  const QuadSide gL{lj.hex, st.exitFace[size_t(j)]}, gR{st.inc[size_t((j + 1) % n)].hex, st.entryFace[size_t((j + 1) % n)]};
+  const int ca = kEdgeCorners[size_t(li.edge)][0], cb = kEdgeCorners[size_t(li.edge)][1];
+  const VertexId a = cx.vertex(li.hex, ca);
+  const VertexId c = neighbourInFace(cx, li.hex, fL.face, ca, cb), d = neighbourInFace(cx, li.hex, fL.face, cb, ca);
+  int da = kEdgeCorners[size_t(lj.edge)][0], db = kEdgeCorners[size_t(lj.edge)][1];
+  if (cx.vertex(lj.hex, da) != a) std::swap(da, db);
+  const VertexId c2 = neighbourInFace(cx, lj.hex, gL.face, da, db), d2 = neighbourInFace(cx, lj.hex, gL.face, db, da);
+  if (c == c2 || c == d2 || d == c2 || d == d2)
+    reject(op, "quads " + sideName(f) + " and " + sideName(g) + " share more than edge " + edgeName(e));
+  // c merges with c2 and d with d2 (each pair keeps its smaller id); none may be on the boundary.
+  std::vector<std::pair<HexId, int>> cornersC2, cornersD2, cornersC, cornersD;
+  cornersC = cx.cornersOfVertex(li.hex, cornerWithVertex(cx, li.hex, c));
+  cornersD = cx.cornersOfVertex(li.hex, cornerWithVertex(cx, li.hex, d));
+  cornersC2 = cx.cornersOfVertex(lj.hex, cornerWithVertex(cx, lj.hex, c2));
+  cornersD2 = cx.cornersOfVertex(lj.hex, cornerWithVertex(cx, lj.hex, d2));
+  for (auto [h, vtx] : {std::pair{li.hex, c}, std::pair{li.hex, d}, std::pair{lj.hex, c2}, std::pair{lj.hex, d2}})
+    if (onBoundary(cx, h, cornerWithVertex(cx, h, vtx)))
+      reject(op, "vertex " + std::to_string(vtx) + " would merge but it is on the boundary");
+  const VertexId keepC = std::min(c, c2), keepD = std::min(d, d2);
+  std::vector<HexId> touched;
+  Transaction tx(cx);
+  cx.unglue(fL.hex, fL.face);
+  cx.unglue(gL.hex, gL.face);
+  for (const auto& list : {cornersC, cornersC2})
+    for (auto [h, k] : list) {
+      cx.setCorner(h, k, keepC);
+      touched.push_back(h);
+    }
+  for (const auto& list : {cornersD, cornersD2})
+    for (auto [h, k] : list) {
+      cx.setCorner(h, k, keepD);
+      touched.push_back(h);
+    }
+  OpResult r;
+  r.op = op;
+  r.removedVertices = {std::max(c, c2), std::max(d, d2)};
+  if (fL == gL || fR == gR) reject(op, "the collapse would glue a quad to itself");
+  int o1 = orientByVertices(cx, fL.hex, fL.face, gL.hex, gL.face), o2 = orientByVertices(cx, fR.hex, fR.face, gR.hex, gR.face);
+  if (o1 < 0 || o2 < 0) reject(op, "after merging, the opened quads do not carry the same vertices");
+  cx.glue(fL.hex, fL.face, gL.hex, gL.face, o1);
+  cx.glue(fR.hex, fR.face, gR.hex, gR.face, o2);
+  for (QuadSide s : {fL, fR, gL, gR}) touched.push_back(s.hex);
+  r.inverse = "facesplit " + sideName(fL) + " " + sideName(fR);
+  try {
+    tx.commit(r, touched);
+  } catch (const Error& err) {
+    reject(op, std::string("the result would not be a valid complex (") + err.what() + ")");
+  }
+  return r;
+}
+
+OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
+  const std::string op = "faceSplit";
+  for (QuadSide s : {sL, sR}) {
+    if (!cx.isHex(s.hex)) reject(op, hexName(s.hex) + " does not exist");
+    if (s.face < 0 || s.face > 5) reject(op, "local face " + std::to_string(s.face) + " is not 0..5");
+    if (cx.gluing(s).boundary()) reject(op, "quad " + sideName(s) + " is on the boundary");
+  }
+  if (cx.canonical(sL) == cx.canonical(sR)) reject(op, "the two sides belong to the same quad");
+  if (faceVertexSet(cx, sL.hex, sL.face) != faceVertexSet(cx, sR.hex, sR.face))
+    reject(op, "quads " + sideName(sL) + " and " + sideName(sR) + " are not on the same 4 vertices");
+  const QuadSide gL{cx.gluing(sL).hex, cx.gluing(sL).face}, gR{cx.gluing(sR).hex, cx.gluing(sR).face};
+  // The quads share 3 of their 4 edges; the fourth (a doubled edge ab) stays, the vertices c, d
+  // opposite it split in two.
+  auto edgesOf = [&](QuadSide s) {
+    std::vector<EdgeRef> es;
+    for (int p = 0; p < 4; ++p) es.push_back(cx.canonical(EdgeRef{s.hex, kFaceEdges[size_t(s.face)][size_t(p)]}));
+    return es;
+  };
+  auto eL = edgesOf(sL), eR = edgesOf(sR);
+  int own = -1, owns = 0;
+  for (int p = 0; p < 4; ++p)
+    if (std::find(eR.begin(), eR.end(), eL[size_t(p)]) == eR.end()) {
+      own = p;
+      ++owns;
+    }
+  if (owns != 1) reject(op, "quads " + sideName(sL) + " and " + sideName(sR) + " are not a collapsed face pair");
+  const int cA = kFaceCorners[size_t(sL.face)][size_t(own)], cB = kFaceCorners[size_t(sL.face)][size_t((own + 1) & 3)];
+  const int cD = kFaceCorners[size_t(sL.face)][size_t((own + 2) & 3)], cC = kFaceCorners[size_t(sL.face)][size_t((own + 3) & 3)];
+  std::vector<QuadSide> walls{sL, gL, sR, gR};
+  struct Split {
+    VertexId v;
+    std::vector<std::pair<HexId, int>> gSide;
+  };
+  std::vector<Split> splits;
+  for (int corner : {cC, cD}) {
+    auto keep = cornersOnSide(cx, {sL.hex, corner}, walls);
+    auto all = cx.cornersOfVertex(sL.hex, corner);
+    if (onBoundary(cx, sL.hex, corner)) reject(op, "vertex " + std::to_string(cx.vertex(sL.hex, corner)) + " is on the boundary");
+    Split s{cx.vertex(sL.hex, corner), {}};
+    for (auto k : all)
+      if (std::find(keep.begin(), keep.end(), k) == keep.end()) s.gSide.push_back(k);
+    if (s.gSide.empty() || cornersOnSide(cx, s.gSide[0], walls).size() != s.gSide.size())
+      reject(op, "the two quads do not cut vertex " + std::to_string(s.v) + " into two sides");
+    splits.push_back(s);
+  }
+  Transaction tx(cx);
+  cx.unglue(sL.hex, sL.face);
+  cx.unglue(sR.hex, sR.face);
+  OpResult r;
+  r.op = op;
+  std::vector<HexId> touched{sL.hex, sR.hex, gL.hex, gR.hex};
+  for (const Split& s : splits) {
+    Vec3 c;
+    for (auto [h, k] : s.gSide) c = c + (1.0 / double(s.gSide.size())) * cx.hexCentroid(h);
+    Vec3 p = cx.position(s.v);
+    VertexId nv = cx.addVertex(p + 0.25 * (c - p));
+    r.createdVertices.push_back(nv);
+    for (auto [h, k] : s.gSide) {
+      cx.setCorner(h, k, nv);
+      touched.push_back(h);
+    }
+  }
+  int o1 = orientByVertices(cx, sL.hex, sL.face, sR.hex, sR.face), o2 = orientByVertices(cx, gL.hex, gL.face, gR.hex, gR.face);
+  if (o1 < 0 || o2 < 0) reject(op, "after splitting, the quads to re-glue do not carry the same vertices");
+  cx.glue(sL.hex, sL.face, sR.hex, sR.face, o1);
+  cx.glue(gL.hex, gL.face, gR.hex, gR.face, o2);
+  // The restored edge ab, named in sL's hex, and f = sL, g = gL's quad.
+  r.inverse = "facecollapse " + edgeName({sL.hex, edgeBetween(cA, cB)}) + " " + sideName(sL) + " " + sideName(gL);
+  (void)cD;
+  try {
+    tx.commit(r, touched);
+  } catch (const Error& err) {
+    reject(op, std::string("the result would not be a valid complex (") + err.what() + ")");
+  }
+  return r;
+}
+
+}  // namespace hexdual

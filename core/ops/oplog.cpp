@@ -1,0 +1,267 @@
+#include "ops/oplog.hpp"
+
+#include <map>
+
+namespace hexdual {
+
+namespace {
+
+struct OpSpec {
+  const char* name;
+  char urlCode;
+  std::vector<OpArg::Kind> args;  // a single Pair entry means "one or more pairs"
+};
+const std::vector<OpSpec>& specs() {
+  static const std::vector<OpSpec> s = {
+      {"pillow", 'P', {OpArg::Quad}},
+      {"unpillow", 'Q', {OpArg::Hex}},
+      {"chordpush", 'C', {OpArg::Edge, OpArg::Quad, OpArg::Quad}},
+      {"chordpull", 'D', {OpArg::Hex}},
+      {"hexpush", 'H', {OpArg::Quad}},
+      {"hexpull", 'I', {OpArg::Quad}},
+      {"ringcollapse", 'R', {OpArg::Edge}},
+      {"ringsplit", 'S', {OpArg::Pair}},
+      {"facecollapse", 'F', {OpArg::Edge, OpArg::Quad, OpArg::Quad}},
+      {"facesplit", 'G', {OpArg::Quad, OpArg::Quad}},
+  };
+  return s;
+}
+const OpSpec* specByName(std::string_view name) {
+  for (const auto& s : specs())
+    if (name == s.name) return &s;
+  return nullptr;
+}
+const char* kindName(OpArg::Kind k) {
+  switch (k) {
+    case OpArg::Hex: return "a hex (h12)";
+    case OpArg::Quad: return "a quad (h12f3)";
+    case OpArg::Edge: return "an edge (h12e7)";
+    case OpArg::Pair: return "a quad pair (h1f2/h3f4)";
+  }
+  return "?";
+}
+
+[[noreturn]] void fail(size_t pos, const std::string& why, std::string_view token) {
+  throw Error("oplog: position " + std::to_string(pos) + ": " + why + " at '" + std::string(token) + "'");
+}
+
+// Reads digits at s[i...]; returns -1 when none.
+int64_t readInt(std::string_view s, size_t& i) {
+  size_t b = i;
+  int64_t v = 0;
+  while (i < s.size() && s[i] >= '0' && s[i] <= '9' && i - b < 9) v = v * 10 + (s[i++] - '0');
+  if (i == b || (i < s.size() && s[i] >= '0' && s[i] <= '9')) return -1;
+  return v;
+}
+
+// One entity "h12", "h12f3", "h12.f3", "h12e7"; returns false on malformed text.
+bool parseEntity(std::string_view t, OpArg& out) {
+  size_t i = 0;
+  if (t.empty() || t[i++] != 'h') return false;
+  int64_t h = readInt(t, i);
+  if (h < 0) return false;
+  out.hex = HexId(h);
+  if (i == t.size()) {
+    out.kind = OpArg::Hex;
+    return true;
+  }
+  if (t[i] == '.') ++i;
+  if (i >= t.size() || (t[i] != 'f' && t[i] != 'e')) return false;
+  out.kind = t[i] == 'f' ? OpArg::Quad : OpArg::Edge;
+  ++i;
+  int64_t l = readInt(t, i);
+  if (l < 0 || i != t.size()) return false;
+  out.local = int(l);
+  return true;
+}
+
+std::string entityText(HexId h, char kind, int local) {
+  std::string s = "h" + std::to_string(h);
+  if (kind) s += kind + std::to_string(local);
+  return s;
+}
+
+}  // namespace
+
+OpStep parseOpStep(std::string_view text, size_t offset) {
+  OpStep step;
+  step.position = offset;
+  size_t i = 0;
+  std::vector<std::pair<std::string_view, size_t>> tokens;
+  while (i < text.size()) {
+    if (text[i] == ' ') {
+      if (i == 0 || i + 1 == text.size() || text[i + 1] == ' ') fail(offset + i, "stray space", text);
+      ++i;
+      continue;
+    }
+    size_t b = i;
+    while (i < text.size() && text[i] != ' ') ++i;
+    tokens.push_back({text.substr(b, i - b), offset + b});
+  }
+  if (tokens.empty()) fail(offset, "empty step", text);
+  const OpSpec* spec = specByName(tokens[0].first);
+  if (!spec) fail(tokens[0].second, "unknown operation", tokens[0].first);
+  step.op = spec->name;
+  bool pairs = spec->args.size() == 1 && spec->args[0] == OpArg::Pair;
+  size_t want = spec->args.size();
+  if (pairs ? tokens.size() < 2 : tokens.size() - 1 != want)
+    fail(tokens[0].second, std::string(spec->name) + " takes " + (pairs ? "one or more" : std::to_string(want)) +
+                               " argument(s), not " + std::to_string(tokens.size() - 1),
+         text);
+  for (size_t k = 1; k < tokens.size(); ++k) {
+    auto [tok, pos] = tokens[k];
+    OpArg::Kind kind = pairs ? OpArg::Pair : spec->args[k - 1];
+    OpArg a;
+    if (kind == OpArg::Pair) {
+      size_t slash = tok.find('/');
+      OpArg second;
+      if (slash == std::string_view::npos || !parseEntity(tok.substr(0, slash), a) ||
+          !parseEntity(tok.substr(slash + 1), second) || a.kind != OpArg::Quad || second.kind != OpArg::Quad)
+        fail(pos, std::string("expected ") + kindName(kind), tok);
+      a.kind = OpArg::Pair;
+      a.second = {second.hex, second.local};
+    } else if (!parseEntity(tok, a) || a.kind != kind) {
+      fail(pos, std::string("expected ") + kindName(kind), tok);
+    }
+    step.args.push_back(a);
+  }
+  return step;
+}
+
+OpLog parseOpLog(std::string_view text) {
+  OpLog log;
+  size_t end = text.find(';');
+  std::string_view head = text.substr(0, end);
+  if (head != "v1") fail(0, "a log starts with its version 'v1'", head);
+  size_t pos = end == std::string_view::npos ? text.size() : end + 1;
+  while (end != std::string_view::npos) {
+    end = text.find(';', pos);
+    std::string_view stepText = text.substr(pos, end == std::string_view::npos ? std::string_view::npos : end - pos);
+    log.steps.push_back(parseOpStep(stepText, pos));
+    pos = end + 1;
+  }
+  return log;
+}
+
+std::string formatOpStep(const OpStep& step) {
+  std::string s = step.op;
+  for (const OpArg& a : step.args) {
+    s += " ";
+    switch (a.kind) {
+      case OpArg::Hex: s += entityText(a.hex, 0, 0); break;
+      case OpArg::Quad: s += entityText(a.hex, 'f', a.local); break;
+      case OpArg::Edge: s += entityText(a.hex, 'e', a.local); break;
+      case OpArg::Pair:
+        s += entityText(a.hex, 'f', a.local) + "/" + entityText(a.second.hex, 'f', a.second.face);
+        break;
+    }
+  }
+  return s;
+}
+
+std::string formatOpLog(const OpLog& log) {
+  std::string s = "v" + std::to_string(log.version);
+  for (const OpStep& st : log.steps) s += ";" + formatOpStep(st);
+  return s;
+}
+
+std::string encodeOpLogUrl(const OpLog& log) {
+  std::string s = std::to_string(log.version);
+  for (const OpStep& st : log.steps) {
+    s += "." + std::string(1, specByName(st.op)->urlCode);
+    for (size_t k = 0; k < st.args.size(); ++k) {
+      const OpArg& a = st.args[k];
+      if (k) s += "_";
+      s += std::to_string(a.hex);
+      if (a.kind == OpArg::Quad || a.kind == OpArg::Pair) s += "f" + std::to_string(a.local);
+      if (a.kind == OpArg::Edge) s += "e" + std::to_string(a.local);
+      if (a.kind == OpArg::Pair) s += "~" + std::to_string(a.second.hex) + "f" + std::to_string(a.second.face);
+    }
+  }
+  return s;
+}
+
+OpLog decodeOpLogUrl(std::string_view text) {
+  // Translate back to the text form, then parse it strictly.
+  for (size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    bool ok = (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '.' || c == '_' || c == '~';
+    if (!ok) fail(i, "character not allowed in a URL-encoded log", text.substr(i, 1));
+  }
+  size_t dot = text.find('.');
+  std::string out = "v" + std::string(text.substr(0, dot));
+  size_t pos = dot;
+  while (pos != std::string_view::npos) {
+    size_t next = text.find('.', pos + 1);
+    std::string_view step = text.substr(pos + 1, next == std::string_view::npos ? std::string_view::npos : next - pos - 1);
+    if (step.empty()) fail(pos, "empty step", text.substr(pos));
+    const OpSpec* spec = nullptr;
+    for (const auto& s : specs())
+      if (s.urlCode == step[0]) spec = &s;
+    if (!spec) fail(pos + 1, "unknown operation code", step.substr(0, 1));
+    out += ";" + std::string(spec->name);
+    std::string args(step.substr(1));
+    if (!args.empty()) {
+      out += " h";
+      for (char c : args) {
+        if (c == '_') out += " h";
+        else if (c == '~') out += "/h";
+        else out += c;
+      }
+    }
+    pos = next;
+  }
+  return parseOpLog(out);
+}
+
+OpResult applyStep(Complex& cx, const OpStep& st) {
+  auto quad = [&](size_t k) { return QuadSide{st.args[k].hex, st.args[k].local}; };
+  auto edge = [&](size_t k) { return EdgeRef{st.args[k].hex, st.args[k].local}; };
+  const std::string& op = st.op;
+  if (op == "pillow") return pillow(cx, quad(0));
+  if (op == "unpillow") return unpillow(cx, st.args[0].hex);
+  if (op == "chordpush") return chordPush(cx, edge(0), quad(1), quad(2));
+  if (op == "chordpull") return chordPull(cx, st.args[0].hex);
+  if (op == "hexpush") return hexPush(cx, quad(0));
+  if (op == "hexpull") return hexPull(cx, quad(0));
+  if (op == "ringcollapse") return ringCollapse(cx, edge(0));
+  if (op == "ringsplit") {
+    std::vector<std::pair<QuadSide, QuadSide>> bands;
+    for (const OpArg& a : st.args) bands.push_back({{a.hex, a.local}, a.second});
+    return ringSplit(cx, bands);
+  }
+  if (op == "facecollapse") return faceCollapse(cx, edge(0), quad(1), quad(2));
+  if (op == "facesplit") return faceSplit(cx, quad(0), quad(1));
+  throw Error("oplog: unknown operation '" + op + "'");
+}
+
+OpResult applyStep(Complex& cx, std::string_view stepText) { return applyStep(cx, parseOpStep(stepText)); }
+
+ApplyReport apply(Complex& cx, const OpLog& log) {
+  ApplyReport rep;
+  for (size_t k = 0; k < log.steps.size(); ++k) {
+    try {
+      rep.results.push_back(applyStep(cx, log.steps[k]));
+    } catch (const Error& e) {
+      rep.failedStep = int(k + 1);
+      rep.error = e.what();
+      break;
+    }
+  }
+  return rep;
+}
+
+ApplyReport apply(Complex& cx, std::string_view logText) {
+  OpLog log;
+  try {
+    log = parseOpLog(logText);
+  } catch (const Error& e) {
+    ApplyReport rep;
+    rep.failedStep = -1;
+    rep.error = e.what();
+    return rep;
+  }
+  return apply(cx, log);
+}
+
+}  // namespace hexdual

@@ -1,0 +1,57 @@
+// The operation log: a versioned text form of a sequence of operations, e.g.
+//   v1;pillow h12f3;chordpush h4e7 h4f2 h9f0;hexpush h5f1
+// and a compact URL-safe form of the same log. Grammar and id assignment: docs/oplog.md.
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "complex/complex.hpp"
+#include "ops/ops.hpp"
+
+namespace hexdual {
+
+// One argument: a hex "h12", a quad side "h12f3", an edge "h12e7", or a quad pair "h1f2/h3f4".
+struct OpArg {
+  enum Kind { Hex, Quad, Edge, Pair } kind = Hex;
+  HexId hex = -1;
+  int local = 0;        // face or edge
+  QuadSide second{};    // for Pair
+};
+
+struct OpStep {
+  std::string op;  // lower-case name, e.g. "chordpush"
+  std::vector<OpArg> args;
+  size_t position = 0;  // character offset of the step in the log text
+};
+
+struct OpLog {
+  int version = 1;
+  std::vector<OpStep> steps;
+};
+
+// Parses strictly; throws Error "oplog: position P: <reason> at 'TOKEN'".
+OpLog parseOpLog(std::string_view text);
+OpStep parseOpStep(std::string_view text, size_t offset = 0);
+std::string formatOpLog(const OpLog& log);
+std::string formatOpStep(const OpStep& step);
+
+// URL-safe compact form ("1.P12f3.H5f1"): digits, letters, '.', '_' and '~' only.
+std::string encodeOpLogUrl(const OpLog& log);
+OpLog decodeOpLogUrl(std::string_view text);
+
+// Applies one step (text or parsed). Throws as the operation does; the complex is then unchanged.
+OpResult applyStep(Complex& cx, const OpStep& step);
+OpResult applyStep(Complex& cx, std::string_view stepText);
+
+struct ApplyReport {
+  std::vector<OpResult> results;  // one per applied step
+  int failedStep = 0;             // 1-based index of the step that failed, 0 when all applied
+  std::string error;
+};
+// Applies every step in order. On an error at step k it stops: the complex is as after step k-1,
+// and the report names k and the reason. (A free function: core/complex does not know ops.)
+ApplyReport apply(Complex& cx, const OpLog& log);
+ApplyReport apply(Complex& cx, std::string_view logText);
+
+}  // namespace hexdual

@@ -1,0 +1,72 @@
+#include <doctest/doctest.h>
+
+#include "complex/builders.hpp"
+#include "complex/canonical.hpp"
+#include "helpers.hpp"
+#include "ops/oplog.hpp"
+#include "ops/ops.hpp"
+
+using namespace hexdual;
+using namespace hexdual::test;
+
+namespace {
+// 4x4x4 grid: the z-edge at x=2, y=2, z in [1,2] (hex 21 = (1,1,1), corners 2-6) has hexes 21, 22, 26, 25
+// around it; f = 21|22 and g = 25|26 are opposite quads whose far vertices are all interior.
+const EdgeRef kEdge{21, tables::edgeBetween(2, 6)};
+const QuadSide kF{21, 1}, kG{25, 1};
+}  // namespace
+
+TEST_CASE("face collapse in a 4x4x4 grid: counts, two sheets merge, face split restores") {
+  Complex cx = makeGrid(4, 4, 4);
+  Complex orig = cx;
+  Counts before = cx.counts();
+  Dual d0 = extractDual(cx);
+  OpResult r = faceCollapse(cx, kEdge, kF, kG);
+  cx.validate();
+  Counts after = cx.counts();
+  CHECK(after.vertices - before.vertices == -2);
+  CHECK(after.edges - before.edges == -2);
+  CHECK(after.quads - before.quads == 0);
+  CHECK(after.hexes - before.hexes == 0);
+  CHECK(r.dE == -2);
+  Dual d1 = extractDual(cx);
+  CHECK(d1.sheets.size() == d0.sheets.size() - 1);
+  CHECK(d1.chords.size() == d0.chords.size());  // the chords through f and g are cut and rejoined crosswise
+  OpResult back = applyStep(cx, r.inverse);
+  cx.validate();
+  CHECK(back.dV == 2);
+  CHECK(back.dE == 2);
+  CHECK(cx.counts() == before);
+  CHECK(isomorphic(cx, orig));
+}
+
+TEST_CASE("chord push then ring collapse of the blind chord (far diagonal) equals face collapse") {
+  Complex a = makeGrid(4, 4, 4), b = makeGrid(4, 4, 4), c = makeGrid(4, 4, 4);
+  Counts base = a.counts();
+  OpResult p = chordPush(a, kEdge, kF, kG);
+  // In X's frame x runs along e; edge 1 (y=1,z=0) is g's far edge, its diagonal edge 2 is f's far edge.
+  OpResult rc = ringCollapse(a, {p.createdHexes[0], 1});
+  a.validate();
+  faceCollapse(b, kEdge, kF, kG);
+  CHECK(a.counts() == b.counts());
+  CHECK(isomorphic(a, b));
+  CHECK(rc.inverse.empty());  // a ring glued to itself has no ring-split inverse
+  // The other diagonal merges e with the blind chord's inner edge: that undoes the chord push.
+  OpResult p2 = chordPush(c, kEdge, kF, kG);
+  ringCollapse(c, {p2.createdHexes[0], 0});
+  c.validate();
+  CHECK(c.counts() == base);
+  CHECK(isomorphic(c, makeGrid(4, 4, 4)));
+}
+
+TEST_CASE("face collapse rejections leave the complex untouched") {
+  Complex cx = makeGrid(3, 3, 3);
+  std::string before = stateDump(cx);
+  // Around the centre z-edge of a 3x3x3 grid, g = 16|17 has its far vertices on the boundary.
+  CHECK(errorOf([&] { faceCollapse(cx, {13, 11}, {13, 1}, {16, 1}); }) ==
+        "faceCollapse: vertex 30 would merge but it is on the boundary");
+  // Consecutive quads leave arc R = {13} glued to itself: not a valid complex.
+  CHECK(errorOf([&] { faceCollapse(cx, {13, 11}, {13, 1}, {13, 3}); }).rfind("faceCollapse: the result would not be a valid complex", 0) == 0);
+  CHECK(errorOf([&] { faceSplit(cx, {13, 1}, {13, 3}); }) == "faceSplit: quads h13f1 and h13f3 are not on the same 4 vertices");
+  CHECK(stateDump(cx) == before);
+}
