@@ -102,14 +102,29 @@ void Complex::beginTransaction() {
   revisionAtBegin_ = revision_;
 }
 
-void Complex::commitTransaction() {
+Complex::EditLog Complex::commitTransaction() {
   journaling_ = false;
+  EditLog log{std::move(journal_), revisionAtBegin_, revision_};
   journal_.clear();
+  return log;
 }
 
 void Complex::rollbackTransaction() {
   journaling_ = false;
-  for (auto it = journal_.rbegin(); it != journal_.rend(); ++it) {
+  revert(journal_);
+  journal_.clear();
+  revision_ = revisionAtBegin_;
+}
+
+void Complex::undo(const EditLog& log) {
+  if (journaling_) throw Error("undo: not allowed inside a transaction");
+  if (revision_ != log.revisionAfter) throw Error("undo: the complex has changed since that operation; undo the later ones first");
+  revert(log.edits);
+  revision_ = log.revisionBefore;
+}
+
+void Complex::revert(const std::vector<Edit>& edits) {
+  for (auto it = edits.rbegin(); it != edits.rend(); ++it) {
     const JournalEntry& e = *it;
     switch (e.kind) {
       case JournalEntry::AddVertex:
@@ -160,8 +175,6 @@ void Complex::rollbackTransaction() {
         break;
     }
   }
-  journal_.clear();
-  revision_ = revisionAtBegin_;
 }
 
 void Complex::compact() {

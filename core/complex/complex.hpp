@@ -179,10 +179,24 @@ class Complex {
   void validateAround(const std::vector<HexId>& hexes) const;
 
   // ---- transactions: every edit between begin and rollback is undone exactly ----
+  struct Edit {
+    enum Kind : uint8_t { AddVertex, AddHex, Glue, Unglue, RemoveHex, SetCorner, SetPosition } kind;
+    HexId hex;
+    int face;
+    uint32_t value;
+    Vec3 pos;
+  };
+  // The edits of one committed transaction, enough to undo it exactly (ids included).
+  struct EditLog {
+    std::vector<Edit> edits;
+    uint64_t revisionBefore = 0, revisionAfter = 0;
+  };
   void beginTransaction();
-  void commitTransaction();
+  EditLog commitTransaction();
   void rollbackTransaction();
   bool inTransaction() const { return journaling_; }
+  // Undoes a committed transaction; legal only while nothing has changed since (LIFO undo).
+  void undo(const EditLog& log);
   // Modification counter: changes on every topological edit.
   uint64_t revision() const { return revision_; }
   // Bytes held by the topology and positions (for benchmarks).
@@ -199,13 +213,8 @@ class Complex {
   std::vector<uint8_t> alive_;
   std::vector<Vec3> pos_;
   std::vector<int32_t> refs_;  // number of (hex, corner) incidences per vertex
-  struct JournalEntry {
-    enum Kind : uint8_t { AddVertex, AddHex, Glue, Unglue, RemoveHex, SetCorner, SetPosition } kind;
-    HexId hex;
-    int face;
-    uint32_t value;
-    Vec3 pos;
-  };
+  using JournalEntry = Edit;
+  void revert(const std::vector<Edit>& edits);
   void record(JournalEntry e) {
     if (journaling_) journal_.push_back(e);
   }

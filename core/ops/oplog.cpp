@@ -237,7 +237,7 @@ OpResult applyStep(Complex& cx, const OpStep& st) {
 
 OpResult applyStep(Complex& cx, std::string_view stepText) { return applyStep(cx, parseOpStep(stepText)); }
 
-ApplyReport apply(Complex& cx, const OpLog& log) {
+ApplyReport applyLog(Complex& cx, const OpLog& log) {
   ApplyReport rep;
   for (size_t k = 0; k < log.steps.size(); ++k) {
     try {
@@ -251,7 +251,7 @@ ApplyReport apply(Complex& cx, const OpLog& log) {
   return rep;
 }
 
-ApplyReport apply(Complex& cx, std::string_view logText) {
+ApplyReport applyLog(Complex& cx, std::string_view logText) {
   OpLog log;
   try {
     log = parseOpLog(logText);
@@ -261,7 +261,7 @@ ApplyReport apply(Complex& cx, std::string_view logText) {
     rep.error = e.what();
     return rep;
   }
-  return apply(cx, log);
+  return applyLog(cx, log);
 }
 
 }  // namespace hexdual

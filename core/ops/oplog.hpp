@@ -50,8 +50,8 @@ struct ApplyReport {
   std::string error;
 };
 // Applies every step in order. On an error at step k it stops: the complex is as after step k-1,
-// and the report names k and the reason. (A free function: core/complex does not know ops.)
-ApplyReport apply(Complex& cx, const OpLog& log);
-ApplyReport apply(Complex& cx, std::string_view logText);
+// and the report names k and the reason. (A free function rather than Complex::apply: core/complex does not depend on ops.)
+ApplyReport applyLog(Complex& cx, const OpLog& log);
+ApplyReport applyLog(Complex& cx, std::string_view logText);
 
 }  // namespace hexdual

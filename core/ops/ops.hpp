@@ -16,7 +16,8 @@ struct OpResult {
   std::vector<HexId> createdHexes, removedHexes;
   std::vector<VertexId> createdVertices, removedVertices;
   int64_t dV = 0, dE = 0, dF = 0, dH = 0;  // change in (V, E, F, H); E from Euler's V-E+F-H invariance
-  std::string inverse;                  // the operation-log step that undoes this one
+  std::string inverse;                  // the operation-log step that undoes this one (up to ids)
+  Complex::EditLog edits;               // cx.undo(edits) restores the exact previous state, ids included
 };
 
 // ---- 1. minimal pillow (TK03 §4.3) ----

@@ -82,7 +82,7 @@ void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) {
   r.dF = cx_.numQuads() - f0_;
   r.dH = cx_.numHexes() - h0_;
   r.dE = r.dV + r.dF - r.dH;  // V - E + F - H is invariant under every local operation
-  cx_.commitTransaction();
+  r.edits = cx_.commitTransaction();
   open_ = false;
 }
 
