@@ -59,10 +59,12 @@ constexpr auto kMidSides = makeMidSides();
 
 size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
 
+}  // namespace
+
 // Floods one sheet from a slot: labels its slots with `id` and an orientation sign per slot.
 // Returns false when two paths disagree on a sign (a non-orientable sheet).
-bool floodSheet(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, std::vector<int8_t>& sign,
-                std::vector<Slot>& stack) {
+bool floodSheet(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, int8_t* sign, std::vector<Slot>& stack,
+                std::vector<Slot>* outSlots) {
   bool orientable = true;
   sheetOf[slotIndex(start.hex, start.axis)] = id;
   sign[slotIndex(start.hex, start.axis)] = 1;
@@ -70,6 +72,7 @@ bool floodSheet(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, std
   while (!stack.empty()) {
     Slot cur = stack.back();
     stack.pop_back();
+    if (outSlots) outSlots->push_back(cur);
     int sc = sign[slotIndex(cur.hex, cur.axis)];
     for (int f = 0; f < 6; ++f) {
       if (axisOfFace(f) == cur.axis) continue;
@@ -130,8 +133,6 @@ void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf) {
   (void)first;
 }
 
-}  // namespace
-
 int mapAxisAcross(const Complex& cx, HexId h, int face, int axis) { return axisAcrossGluing(face, axis, cx.gluing(h, face)); }
 
 std::string classifySurface(int64_t euler, int loops, bool orientable) {
@@ -160,7 +161,7 @@ Dual extractDual(const Complex& cx) {
         int32_t id = int32_t(d.sheets.size());
         d.sheets.emplace_back();
         d.sheets.back().id = id;
-        d.sheets.back().orientable = floodSheet(cx, {h, a}, id, sheetOf, sign, stack);
+        d.sheets.back().orientable = floodSheet(cx, {h, a}, id, sheetOf, sign.data(), stack, nullptr);
       }
       if (chordOf[slotIndex(h, a)] < 0) {
         d.chords.emplace_back();
@@ -283,6 +284,94 @@ void validateDual(const Complex& cx, const Dual& d) {
         }
       }
     }
+}
+
+}  // namespace hexdual
+
+#include <unordered_map>
+
+namespace hexdual {
+
+namespace {
+uint64_t edgeKey(EdgeRef e) { return (uint64_t(uint32_t(e.hex)) << 4) | uint64_t(e.edge); }
+}  // namespace
+
+void classifySheet(const Complex& cx, Sheet& sh) {
+  std::sort(sh.slots.begin(), sh.slots.end());
+  sh.selfIntersecting = false;
+  for (size_t i = 1; i < sh.slots.size(); ++i)
+    if (sh.slots[i].hex == sh.slots[i - 1].hex) sh.selfIntersecting = true;
+  // Mid-surface vertices = primal edges crossing the sheet; boundary loops by union-find over them.
+  std::unordered_map<uint64_t, int32_t> vertexIndex;
+  std::vector<int32_t> parent;
+  auto indexOf = [&](EdgeRef e) {
+    auto [it, inserted] = vertexIndex.try_emplace(edgeKey(cx.canonical(e)), int32_t(parent.size()));
+    if (inserted) parent.push_back(-1);
+    return it->second;
+  };
+  auto root = [&](int32_t x) {
+    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+    return x;
+  };
+  int64_t interiorSides = 0, boundarySides = 0;
+  for (Slot s : sh.slots) {
+    for (int k = 0; k < 4; ++k) indexOf({s.hex, 4 * s.axis + k});
+    for (int f = 0; f < 6; ++f) {
+      if (axisOfFace(f) == s.axis) continue;
+      if (!cx.isBoundary({s.hex, f})) {
+        ++interiorSides;
+        continue;
+      }
+      ++boundarySides;
+      const MidSide& m = kMidSides[f * 3 + s.axis];
+      int32_t e0 = indexOf({s.hex, m.firstEdge}), e1 = indexOf({s.hex, m.secondEdge});
+      for (int32_t e : {e0, e1})
+        if (parent[size_t(e)] < 0) parent[size_t(e)] = e;
+      int32_t r0 = root(e0), r1 = root(e1);
+      if (r0 != r1) parent[size_t(std::max(r0, r1))] = std::min(r0, r1);
+    }
+  }
+  sh.boundaryLoops = 0;
+  for (size_t i = 0; i < parent.size(); ++i) sh.boundaryLoops += parent[i] == int32_t(i);
+  sh.euler = int64_t(vertexIndex.size()) - (interiorSides / 2 + boundarySides) + int64_t(sh.slots.size());
+  sh.topology = classifySurface(sh.euler, sh.boundaryLoops, sh.orientable);
+}
+
+void compareDuals(const Complex& cx, const Dual& a, const Dual& b) {
+  auto fail = [](const std::string& m) { throw Error("compareDuals: " + m); };
+  std::unordered_map<int32_t, int32_t> sheetMap, chordMap, sheetBack, chordBack;
+  auto link = [&](std::unordered_map<int32_t, int32_t>& fwd, std::unordered_map<int32_t, int32_t>& back, int32_t x,
+                  int32_t y, const char* what, Slot s) {
+    auto [it, ins] = fwd.try_emplace(x, y);
+    auto [jt, jns] = back.try_emplace(y, x);
+    if (it->second != y || jt->second != x)
+      fail(std::string(what) + "s differ at slot (hex " + std::to_string(s.hex) + ", axis " + std::to_string(s.axis) + ")");
+  };
+  for (HexId h : cx.hexes())
+    for (int ax = 0; ax < 3; ++ax) {
+      link(sheetMap, sheetBack, a.sheetOf[h][ax], b.sheetOf[h][ax], "sheet", {h, ax});
+      link(chordMap, chordBack, a.chordOf[h][ax], b.chordOf[h][ax], "chord", {h, ax});
+    }
+  size_t liveA = 0, liveB = 0;
+  for (const Sheet& s : a.sheets) liveA += s.alive;
+  for (const Sheet& s : b.sheets) liveB += s.alive;
+  if (liveA != liveB || liveA != sheetMap.size()) fail("different numbers of sheets");
+  for (auto [x, y] : sheetMap) {
+    const Sheet &p = a.sheets[size_t(x)], &q = b.sheets[size_t(y)];
+    if (p.slots.size() != q.slots.size() || p.euler != q.euler || p.boundaryLoops != q.boundaryLoops ||
+        p.topology != q.topology || p.selfIntersecting != q.selfIntersecting || p.orientable != q.orientable)
+      fail("sheet " + std::to_string(x) + " and sheet " + std::to_string(y) + " are classified differently (" +
+           p.topology + " euler " + std::to_string(p.euler) + " vs " + q.topology + " euler " + std::to_string(q.euler) + ")");
+  }
+  liveA = liveB = 0;
+  for (const Chord& c : a.chords) liveA += c.alive;
+  for (const Chord& c : b.chords) liveB += c.alive;
+  if (liveA != liveB || liveA != chordMap.size()) fail("different numbers of chords");
+  for (auto [x, y] : chordMap) {
+    const Chord &p = a.chords[size_t(x)], &q = b.chords[size_t(y)];
+    if (p.slots.size() != q.slots.size() || p.closed != q.closed || p.selfIntersecting != q.selfIntersecting)
+      fail("chord " + std::to_string(x) + " and chord " + std::to_string(y) + " are classified differently");
+  }
 }
 
 }  // namespace hexdual

@@ -20,6 +20,7 @@ struct Slot {
 
 struct Sheet {
   int id = -1;
+  bool alive = true;        // false for an id retired by an operation (DualTracker)
   std::vector<Slot> slots;  // sorted; a self-intersecting sheet has a hex twice
   int64_t euler = 0;        // of the sheet's mid-surface
   int boundaryLoops = 0;
@@ -30,6 +31,7 @@ struct Sheet {
 
 struct Chord {
   int id = -1;
+  bool alive = true;
   std::vector<Slot> slots;  // in order along the chord (from a boundary end when open)
   bool closed = false;      // a ring that never reaches the boundary
   bool selfIntersecting = false;
@@ -51,6 +53,22 @@ Dual extractDual(const Complex& cx);
 
 // Names a sheet's topology from its Euler characteristic, boundary loops and orientability.
 std::string classifySurface(int64_t euler, int loops, bool orientable);
+
+// Recomputes a sheet's Euler characteristic, boundary loops, self-intersection and topology from
+// its slots alone (local: cost proportional to the sheet). `orientable` must already be set.
+void classifySheet(const Complex& cx, Sheet& sheet);
+
+// Floods the sheet through a slot, labelling unlabelled slots (-1 in the flat per-slot array
+// `sheetOf`, 3 per hex) with `id`; `sign` (same layout) receives an orientation per slot.
+// Returns false when the sheet is not orientable; appends the slots to `out`.
+bool floodSheet(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, int8_t* sign, std::vector<Slot>& stack,
+                std::vector<Slot>* out);
+// Walks the chord through a slot, labelling its slots with `chord.id` in `chordOf` (flat array).
+void walkChord(const Complex& cx, Slot start, Chord& chord, int32_t* chordOf);
+
+// Compares two duals of the same complex up to renaming of ids: same partition of slots into
+// sheets and chords, same classification. Throws Error naming the first difference.
+void compareDuals(const Complex& cx, const Dual& a, const Dual& b);
 
 }  // namespace hexdual
 

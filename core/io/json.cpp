@@ -37,12 +37,14 @@ std::string infoJson(const Complex& cx, const Dual& dual) {
   w.key("hexes").value(c.hexes).key("boundaryQuads").value(c.boundaryQuads);
   w.key("sheets").beginArray();
   for (const Sheet& s : dual.sheets) {
+    if (!s.alive) continue;
     w.beginObject().key("id").value(s.id).key("hexes").value(int64_t(s.slots.size()));
     w.key("topology").value(s.topology).key("boundaryLoops").value(s.boundaryLoops);
     w.key("euler").value(s.euler).key("selfIntersecting").value(s.selfIntersecting).endObject();
   }
   w.endArray().key("chords").beginArray();
   for (const Chord& ch : dual.chords) {
+    if (!ch.alive) continue;
     w.beginObject().key("id").value(ch.id).key("hexes").value(int64_t(ch.slots.size()));
     w.key("closed").value(ch.closed).key("selfIntersecting").value(ch.selfIntersecting).endObject();
   }

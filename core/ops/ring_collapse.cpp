@@ -14,7 +14,15 @@ struct RingHex {
   HexId hex;
   int axis, entry, exit;
   int diag;  // local edge along the chord whose vertex line merges with its diagonal opposite
+  int keep;  // one of the two kept edges, carried round the ring (its side quads form band f)
 };
+
+// The edge along `axis` at the corner that `edge`'s end on face `exitFace` maps to across the gluing.
+int carryEdge(const Complex& cx, HexId h, int exitFace, int edge, int axis) {
+  int c = positionInFace(exitFace, kEdgeCorners[size_t(edge)][0]) >= 0 ? kEdgeCorners[size_t(edge)][0]
+                                                                       : kEdgeCorners[size_t(edge)][1];
+  return edgesOfCorner(cx.mappedCorner(h, exitFace, c))[size_t(axis)];
+}
 
 bool onBoundary(const Complex& cx, HexId h, int c) {
   for (auto [hh, cc] : cx.cornersOfVertex(h, c))
@@ -29,7 +37,7 @@ std::vector<RingHex> walkRing(const Complex& cx, EdgeRef e, const std::string& o
   if (e.edge < 0 || e.edge > 11) reject(op, "local edge " + std::to_string(e.edge) + " is not 0..11");
   std::vector<RingHex> ring;
   int axis = axisOfEdge(e.edge);
-  RingHex cur{e.hex, axis, 2 * axis, 2 * axis + 1, e.edge};
+  RingHex cur{e.hex, axis, 2 * axis, 2 * axis + 1, e.edge, e.edge ^ 2};
   for (;;) {
     for (const RingHex& r : ring)
       if (r.hex == cur.hex) reject(op, "the chord passes " + hexName(cur.hex) + " twice; a ring must not cross itself");
@@ -37,12 +45,10 @@ std::vector<RingHex> walkRing(const Complex& cx, EdgeRef e, const std::string& o
     Gluing g = cx.gluing(cur.hex, cur.exit);
     if (g.boundary())
       reject(op, "the chord through " + edgeName(e) + " reaches the boundary; ring collapse needs a closed chord");
-    // Carry the diagonal: its corner on the exit face maps to a corner of the next hex.
-    int c = positionInFace(cur.exit, kEdgeCorners[size_t(cur.diag)][0]) >= 0 ? kEdgeCorners[size_t(cur.diag)][0]
-                                                                               : kEdgeCorners[size_t(cur.diag)][1];
-    int c2 = cx.mappedCorner(cur.hex, cur.exit, c);
+    // Carry the diagonal and the kept edge: their corners on the exit face map into the next hex.
     int a2 = axisOfFace(g.face);
-    RingHex next{g.hex, a2, g.face, oppositeFace(g.face), edgesOfCorner(c2)[size_t(a2)]};
+    RingHex next{g.hex, a2, g.face, oppositeFace(g.face), carryEdge(cx, cur.hex, cur.exit, cur.diag, a2),
+                 carryEdge(cx, cur.hex, cur.exit, cur.keep, a2)};
     if (next.hex == ring[0].hex && next.axis == ring[0].axis) {
       if (next.entry != ring[0].entry) reject(op, "the chord through " + edgeName(e) + " returns reversed");
       if (next.diag != ring[0].diag && next.diag != (ring[0].diag ^ 3))
@@ -75,7 +81,7 @@ OpResult ringCollapse(Complex& cx, EdgeRef e) {
     for (int s = 0; s < 6; ++s)
       if (axisOfFace(s) != r.axis && cx.gluing(r.hex, s).boundary())
         reject(op, "side quad " + sideName({r.hex, s}) + " of the ring is on the boundary");
-    for (int keep : {r.diag ^ 1, r.diag ^ 2}) {
+    for (int keep : {r.keep, r.keep ^ 3}) {
       auto fs = facesOfEdge(keep);
       collapsePartner[{r.hex, fs[0]}] = fs[1];
       collapsePartner[{r.hex, fs[1]}] = fs[0];
@@ -133,7 +139,7 @@ OpResult ringCollapse(Complex& cx, EdgeRef e) {
   std::vector<std::pair<QuadSide, QuadSide>> bandSides;
   bool allOutside = true;
   for (const RingHex& r : ring) {
-    Gluing gf = cx.gluing(r.hex, facesOfEdge(r.diag ^ 2)[0]), gg = cx.gluing(r.hex, facesOfEdge(r.diag ^ 1)[0]);
+    Gluing gf = cx.gluing(r.hex, facesOfEdge(r.keep)[0]), gg = cx.gluing(r.hex, facesOfEdge(r.keep ^ 3)[0]);
     allOutside = allOutside && !inRing(gf.hex) && !inRing(gg.hex);
     bandSides.push_back({{gf.hex, gf.face}, {gg.hex, gg.face}});
   }

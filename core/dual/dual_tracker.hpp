@@ -1,0 +1,38 @@
+// Keeps the dual current across operations. After an operation only the sheets and chords
+// through the touched hexes are recomputed (cost proportional to those sheets and chords, not to
+// the mesh). Surviving sheets and chords keep their ids; new ones get fresh ids; when several
+// old ones merge, the result keeps the smallest id; when one splits, the piece holding its
+// smallest slot keeps the id.
+#pragma once
+#include <vector>
+
+#include "complex/complex.hpp"
+#include "dual/dual.hpp"
+#include "ops/ops.hpp"
+
+namespace hexdual {
+
+struct DualChange {
+  std::vector<int> sheetsCreated, sheetsRemoved, sheetsChanged;  // changed: same id, new slots
+  std::vector<int> chordsCreated, chordsRemoved, chordsChanged;
+};
+
+class DualTracker {
+ public:
+  explicit DualTracker(const Complex& cx) : dual_(extractDual(cx)) {}
+  const Dual& dual() const { return dual_; }
+  // Brings the dual up to date after `result` was applied to cx (or undone: pass undone = true).
+  DualChange update(const Complex& cx, const OpResult& result);
+  // The same after an arbitrary set of edited hexes (ids of live or removed hexes).
+  DualChange update(const Complex& cx, std::vector<HexId> touched);
+
+ private:
+  Dual dual_;
+  std::vector<int8_t> sign_;
+  std::vector<Slot> stack_;
+};
+
+// Hex ids whose gluings or corners an edit log changed (created, removed, re-glued, renumbered).
+std::vector<HexId> touchedHexes(const Complex& cx, const Complex::EditLog& edits);
+
+}  // namespace hexdual
