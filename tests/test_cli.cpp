@@ -1,6 +1,7 @@
 // The CLI as a user runs it: exit status and output.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <string>
@@ -52,4 +53,42 @@ TEST_CASE("cli: bad input gives a one-line error and a non-zero status") {
   CHECK(dims.out == "hexdual: dimensions must look like 3x3x3, not '3x3'\n");
   CHECK(run("frobnicate").status == 1);
   CHECK(run("").status == 2);
+}
+
+TEST_CASE("cli: apply writes the result and reports each step; a failing step writes nothing") {
+  CHECK(run("grid 3x3x3 -o /tmp/hexdual_cli_a.hxd").status == 0);
+  std::remove("/tmp/hexdual_cli_a2.hxd");
+  Run ok = run("apply /tmp/hexdual_cli_a.hxd --ops 'v1;pillow h13f5;hexpush h13f5' -o /tmp/hexdual_cli_a2.hxd --json");
+  CHECK(ok.status == 0);
+  CHECK(contains(ok.out, "\"step\":1,\"op\":\"pillow\",\"text\":\"pillow h13f5\",\"createdHexes\":[27,28]"));
+  CHECK(contains(ok.out, "\"delta\":{\"V\":4,\"E\":8,\"F\":6,\"H\":2}"));
+  CHECK(contains(ok.out, "\"delta\":{\"V\":4,\"E\":12,\"F\":12,\"H\":4}"));
+  CHECK(contains(ok.out, "\"sheets\":{\"created\":[9],\"removed\":[],\"changed\":[3,5,7,8]}"));
+  CHECK(contains(ok.out, "\"counts\":{\"vertices\":72,\"edges\":164,\"quads\":126,\"hexes\":33}"));
+  CHECK(contains(run("info /tmp/hexdual_cli_a2.hxd").out, "hexes 33"));
+  // The URL form gives the same result.
+  Run url = run("apply /tmp/hexdual_cli_a.hxd --ops 1.P13f5.H13f5 -o /tmp/hexdual_cli_a3.hxd");
+  CHECK(url.status == 0);
+  CHECK(contains(url.out, "delta (V,E,F,H) = (+4,+12,+12,+4)"));
+  std::remove("/tmp/hexdual_cli_a4.hxd");
+  Run bad = run("apply /tmp/hexdual_cli_a.hxd --ops 'v1;pillow h13f5;hexpush h0f0' -o /tmp/hexdual_cli_a4.hxd");
+  CHECK(bad.status == 1);
+  CHECK(bad.out ==
+        "hexdual: step 2 (hexpush h0f0): hexPush: quad h0f0 is on the boundary; hex push needs an interior quad; "
+        "nothing was written\n");
+  CHECK(run("info /tmp/hexdual_cli_a4.hxd").status == 1);
+  Run parse = run("apply /tmp/hexdual_cli_a.hxd --ops 'v1;pilow h1f1' -o /tmp/x.hxd");
+  CHECK(parse.out == "hexdual: oplog: position 3: unknown operation at 'pilow'\n");
+}
+
+TEST_CASE("cli: candidates lists only steps that apply") {
+  CHECK(run("grid 3x3x3 -o /tmp/hexdual_cli_c.hxd").status == 0);
+  Run hp = run("candidates /tmp/hexdual_cli_c.hxd hexpush");
+  CHECK(hp.status == 0);
+  CHECK(std::count(hp.out.begin(), hp.out.end(), '\n') == 54);  // every interior quad of a 3x3x3 grid
+  CHECK(run("candidates /tmp/hexdual_cli_c.hxd ringcollapse").out.empty());  // a grid has no closed chord
+  CHECK(run("candidates /tmp/hexdual_cli_c.hxd unpillow").out.empty());
+  CHECK(run("apply /tmp/hexdual_cli_c.hxd --ops 'v1;pillow h13f5' -o /tmp/hexdual_cli_c2.hxd").status == 0);
+  CHECK(run("candidates /tmp/hexdual_cli_c2.hxd unpillow").out == "unpillow h27\nunpillow h28\n");
+  CHECK(run("candidates /tmp/hexdual_cli_c.hxd frob").out == "hexdual: candidates: unknown operation 'frob'\n");
 }

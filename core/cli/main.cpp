@@ -5,8 +5,14 @@
 #include <string>
 #include <vector>
 
+#include <fstream>
+#include <sstream>
+
 #include "complex/builders.hpp"
 #include "dual/dual.hpp"
+#include "dual/dual_tracker.hpp"
+#include "ops/candidates.hpp"
+#include "ops/oplog.hpp"
 #include "io/io.hpp"
 #include "io/json.hpp"
 
@@ -20,11 +26,14 @@ const char* kUsage =
     "  hexdual ring NxRxZ -o FILE [--binary]     write an O-grid: N around, R radial, Z axial\n"
     "  hexdual info FILE [--json]                counts, sheets and chords\n"
     "  hexdual validate FILE                     check every invariant\n"
-    "  hexdual convert IN OUT [--binary]         convert between .vtk, .mesh and .hxd\n";
+    "  hexdual convert IN OUT [--binary]         convert between .vtk, .mesh and .hxd\n"
+    "  hexdual apply FILE --ops LOG -o OUT [--json]\n"
+    "                                            apply an operation log (text, URL form, or @file)\n"
+    "  hexdual candidates FILE OP                steps of operation OP that apply to FILE\n";
 
 struct Args {
   std::vector<std::string> positional;
-  std::string output;
+  std::string output, ops;
   bool json = false, binary = false;
 };
 
@@ -35,6 +44,9 @@ Args parseArgs(int argc, char** argv, int from) {
     if (s == "-o") {
       if (i + 1 >= argc) throw Error("-o needs a file name");
       a.output = argv[++i];
+    } else if (s == "--ops") {
+      if (i + 1 >= argc) throw Error("--ops needs an operation log");
+      a.ops = argv[++i];
     } else if (s == "--json") {
       a.json = true;
     } else if (s == "--binary") {
@@ -59,6 +71,78 @@ std::array<int, 3> parseDims(const std::string& s) {
 
 void need(const Args& a, size_t n, const char* what) {
   if (a.positional.size() != n) throw Error(std::string("expected ") + what);
+}
+
+// The log from --ops: text ("v1;..."), the URL form ("1.P13f5"), or @FILE holding either.
+OpLog readLog(const std::string& arg) {
+  std::string text = arg;
+  if (!text.empty() && text[0] == '@') {
+    std::ifstream in(text.substr(1));
+    if (!in) throw Error(text.substr(1) + ": cannot open file");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    text = ss.str();
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
+  }
+  if (!text.empty() && text[0] >= '0' && text[0] <= '9') return decodeOpLogUrl(text);
+  return parseOpLog(text);
+}
+
+std::string idList(const std::vector<int32_t>& v) {
+  std::string s = "[";
+  for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + std::to_string(v[i]);
+  return s + "]";
+}
+std::string signedNum(int64_t x) { return (x > 0 ? "+" : "") + std::to_string(x); }
+
+int runApply(const Args& a) {
+  need(a, 1, "one input file");
+  if (a.ops.empty()) throw Error("apply needs --ops LOG");
+  if (a.output.empty()) throw Error("apply needs -o OUT");
+  Complex cx = io::readFile(a.positional[0]);
+  OpLog log = readLog(a.ops);
+  DualTracker tracker(cx);
+  io::JsonWriter w;
+  w.beginObject().key("steps").beginArray();
+  std::string text;
+  for (size_t k = 0; k < log.steps.size(); ++k) {
+    Counts before = cx.counts();
+    OpResult r;
+    try {
+      r = applyStep(cx, log.steps[k]);
+    } catch (const Error& e) {
+      throw Error("step " + std::to_string(k + 1) + " (" + formatOpStep(log.steps[k]) + "): " + e.what() +
+                  "; nothing was written");
+    }
+    Counts after = cx.counts();
+    DualChange ch = tracker.update(cx, r);
+    int64_t dV = after.vertices - before.vertices, dE = after.edges - before.edges, dF = after.quads - before.quads,
+            dH = after.hexes - before.hexes;
+    std::string stepText = formatOpStep(log.steps[k]);
+    w.beginObject().key("step").value(int64_t(k + 1)).key("op").value(log.steps[k].op).key("text").value(stepText);
+    w.key("createdHexes").raw(idList(r.createdHexes)).key("removedHexes").raw(idList(r.removedHexes));
+    w.key("createdVertices").raw(idList(r.createdVertices)).key("removedVertices").raw(idList(r.removedVertices));
+    w.key("delta").beginObject().key("V").value(dV).key("E").value(dE).key("F").value(dF).key("H").value(dH).endObject();
+    w.key("sheets").beginObject().key("created").raw(idList(ch.sheetsCreated)).key("removed").raw(idList(ch.sheetsRemoved));
+    w.key("changed").raw(idList(ch.sheetsChanged)).endObject();
+    w.key("chords").beginObject().key("created").raw(idList(ch.chordsCreated)).key("removed").raw(idList(ch.chordsRemoved));
+    w.key("changed").raw(idList(ch.chordsChanged)).endObject();
+    w.key("inverse").value(r.inverse).endObject();
+    text += "step " + std::to_string(k + 1) + ": " + stepText + "\n";
+    text += "  hexes created " + idList(r.createdHexes) + " removed " + idList(r.removedHexes) + "; vertices created " +
+            idList(r.createdVertices) + " removed " + idList(r.removedVertices) + "\n";
+    text += "  delta (V,E,F,H) = (" + signedNum(dV) + "," + signedNum(dE) + "," + signedNum(dF) + "," + signedNum(dH) + ")\n";
+    text += "  sheets created " + idList(ch.sheetsCreated) + " removed " + idList(ch.sheetsRemoved) + " changed " +
+            idList(ch.sheetsChanged) + "; chords created " + idList(ch.chordsCreated) + " removed " +
+            idList(ch.chordsRemoved) + " changed " + idList(ch.chordsChanged) + "\n";
+    text += "  inverse: " + (r.inverse.empty() ? std::string("(none; use undo)") : r.inverse) + "\n";
+  }
+  Counts c = cx.counts();
+  w.endArray().key("counts").beginObject().key("vertices").value(c.vertices).key("edges").value(c.edges);
+  w.key("quads").value(c.quads).key("hexes").value(c.hexes).endObject().endObject();
+  io::writeFile(cx, a.output, a.binary);
+  std::cout << (a.json ? w.str() + "\n" : text);
+  return 0;
 }
 
 int run(int argc, char** argv) {
@@ -94,6 +178,13 @@ int run(int argc, char** argv) {
     need(a, 2, "an input and an output file");
     Complex cx = io::readFile(a.positional[0]);
     io::writeFile(cx, a.positional[1], a.binary);
+    return 0;
+  }
+  if (cmd == "apply") return runApply(a);
+  if (cmd == "candidates") {
+    need(a, 2, "an input file and an operation name");
+    Complex cx = io::readFile(a.positional[0]);
+    for (const std::string& step : candidates(cx, a.positional[1])) std::cout << step << "\n";
     return 0;
   }
   throw Error("unknown command '" + cmd + "'\n" + kUsage);
