@@ -9,8 +9,13 @@
 #include <string>
 #include <vector>
 
+#include <functional>
+#include <random>
+
 #include "complex/builders.hpp"
 #include "dual/dual.hpp"
+#include "dual/dual_tracker.hpp"
+#include "ops/oplog.hpp"
 
 using namespace hexdual;
 using Clock = std::chrono::steady_clock;
@@ -59,8 +64,110 @@ static int benchBuild(int n, int reps) {
   return 0;
 }
 
+// Latency of each operation at the centre of an N^3 grid: the operation alone, and the operation
+// followed by the incremental dual update. Each is applied and undone REPS times (median reported).
+static int benchOps(int n, int reps) {
+  Complex cx = makeGrid(n, n, n);
+  DualTracker tracker(cx);
+  auto id = [&](int i, int j, int k) { return i + n * (j + n * k); };
+  const int c = n / 2;
+  const HexId centre = id(c, c, c);
+  // The z-edge at the centre hex's (x=1,y=1) corner: f = centre|+x, g = (c,c+1)|(c+1,c+1).
+  const std::string edge = "h" + std::to_string(centre) + "e11";
+  const std::string f = "h" + std::to_string(centre) + "f1", g = "h" + std::to_string(id(c, c + 1, c)) + "f1";
+  struct Case {
+    const char* name;
+    std::string setup, step;
+  };
+  std::vector<Case> cases = {
+      {"pillow", "", "pillow h" + std::to_string(centre) + "f5"},
+      {"unpillow", "pillow h" + std::to_string(centre) + "f5", "unpillow h" + std::to_string(cx.hexCapacity())},
+      {"chordPush", "", "chordpush " + edge + " " + f + " " + g},
+      {"chordPull", "chordpush " + edge + " " + f + " " + g, "chordpull h" + std::to_string(cx.hexCapacity())},
+      {"hexPush", "", "hexpush h" + std::to_string(centre) + "f5"},
+      {"hexPull", "hexpush h" + std::to_string(centre) + "f5", "hexpull h" + std::to_string(cx.hexCapacity()) + "f5"},
+      {"faceCollapse", "", "facecollapse " + edge + " " + f + " " + g},
+      {"ringCollapse", "hexpush h" + std::to_string(centre) + "f5", "ringcollapse h" + std::to_string(cx.hexCapacity() + 2) + "e"},
+  };
+  for (Case& k : cases) {
+    Complex::EditLog setupLog;
+    if (!k.setup.empty()) {
+      OpResult s = applyStep(cx, k.setup);
+      tracker.update(cx, s);
+      setupLog = s.edits;
+    }
+    std::string step = k.step;
+    if (std::string(k.name) == "ringCollapse") {
+      // The ring chord's axis in the first ring hex.
+      HexId rh = cx.hexCapacity() - 4;
+      for (int a = 0; a < 3; ++a)
+        if (tracker.dual().chords[size_t(tracker.dual().chordOf[size_t(rh)][size_t(a)])].closed) step += std::to_string(4 * a);
+    }
+    std::vector<double> opOnly, withDual;
+    for (int r = 0; r < reps; ++r) {  // the operation alone (then undone)
+      auto t0 = Clock::now();
+      OpResult res = applyStep(cx, step);
+      auto t1 = Clock::now();
+      cx.undo(res.edits);
+      opOnly.push_back(ms(t1 - t0));
+    }
+    for (int r = 0; r < reps; ++r) {  // the operation and the incremental dual update (then both undone)
+      auto t2 = Clock::now();
+      OpResult res = applyStep(cx, step);
+      tracker.update(cx, res);
+      auto t3 = Clock::now();
+      cx.undo(res.edits);
+      tracker.update(cx, touchedHexes(cx, res.edits), DualTracker::keepsSheetTopology(res.op));
+      withDual.push_back(ms(t3 - t2));
+    }
+    if (!k.setup.empty()) {
+      cx.undo(setupLog);
+      tracker.update(cx, touchedHexes(cx, setupLog));
+    }
+    std::sort(opOnly.begin(), opOnly.end());
+    std::sort(withDual.begin(), withDual.end());
+    std::printf("{\"bench\":\"op\",\"n\":%d,\"op\":\"%s\",\"opUs\":%.2f,\"opPlusDualUs\":%.2f}\n", n, k.name,
+                1000 * opOnly[opOnly.size() / 2], 1000 * withDual[withDual.size() / 2]);
+  }
+  return 0;
+}
+
+// Throughput of random operation sequences (as in the property test, without the checks).
+static int benchThroughput(int n, int steps) {
+  Complex cx = makeGrid(n, n, n);
+  DualTracker tracker(cx);
+  std::mt19937 rng(7);
+  int64_t applied = 0, attempted = 0;
+  std::vector<HexId> live;
+  auto t0 = Clock::now();
+  const char* ops[] = {"pillow", "hexpush", "chordpush"};
+  for (int s = 0; s < steps; ++s) {
+    HexId h = HexId(rng() % uint32_t(cx.hexCapacity()));
+    if (!cx.isHex(h)) continue;
+    std::string op = ops[rng() % 3];
+    std::string text = op == "chordpush" ? "chordpush h" + std::to_string(h) + "e" + std::to_string(rng() % 12) + " h" +
+                                               std::to_string(h) + "f" + std::to_string(rng() % 6) + " h" + std::to_string(h) +
+                                               "f" + std::to_string(rng() % 6)
+                                         : op + " h" + std::to_string(h) + "f" + std::to_string(rng() % 6);
+    ++attempted;
+    try {
+      OpResult r = applyStep(cx, text);
+      tracker.update(cx, r);
+      ++applied;
+    } catch (const Error&) {
+    }
+  }
+  double sec = ms(Clock::now() - t0) / 1000;
+  std::printf("{\"bench\":\"throughput\",\"n\":%d,\"attempted\":%lld,\"applied\":%lld,\"appliedPerSec\":%.0f,\"hexesAfter\":%lld}\n",
+              n, (long long)attempted, (long long)applied, applied / sec, (long long)cx.numHexes());
+  return 0;
+}
+
 int main(int argc, char** argv) {
   if (argc >= 3 && !std::strcmp(argv[1], "build")) return benchBuild(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
-  std::fprintf(stderr, "usage: hexdual_bench build N [REPS]\n");
+  if (argc >= 3 && !std::strcmp(argv[1], "ops")) return benchOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 21);
+  if (argc >= 3 && !std::strcmp(argv[1], "throughput"))
+    return benchThroughput(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 20000);
+  std::fprintf(stderr, "usage: hexdual_bench build N [REPS] | ops N [REPS] | throughput N [STEPS]\n");
   return 2;
 }

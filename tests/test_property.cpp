@@ -101,7 +101,7 @@ void runSequence(const Complex& start, uint32_t seed, Stats& stats) {
   std::string startDump = stateDump(start);
   for (auto it = done.rbegin(); it != done.rend(); ++it) {
     cx.undo(it->edits);
-    tracker.update(cx, touchedHexes(cx, it->edits));
+    tracker.update(cx, touchedHexes(cx, it->edits), DualTracker::keepsSheetTopology(it->op));
   }
   CAPTURE(seed);
   REQUIRE(stateDump(cx) == startDump);

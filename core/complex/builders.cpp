@@ -11,7 +11,9 @@ Complex makeGrid(int a, int b, int c) {
   if (a < 1 || b < 1 || c < 1) throw Error("grid: every dimension must be at least 1");
   if (int64_t(a) * b * c > (int64_t(1) << 26)) throw Error("grid: more than 2^26 hexes");
   Complex cx;
-  cx.reserve(size_t(a) * b * c, size_t(a + 1) * (b + 1) * (c + 1));
+  // Headroom so that the first operations on a large mesh do not reallocate everything.
+  size_t h = size_t(a) * b * c, v = size_t(a + 1) * (b + 1) * (c + 1);
+  cx.reserve(h + h / 8 + 64, v + v / 8 + 64);
   for (int k = 0; k <= c; ++k)
     for (int j = 0; j <= b; ++j)
       for (int i = 0; i <= a; ++i) cx.addVertex({double(i), double(j), double(k)});
@@ -72,7 +74,7 @@ std::string quadName(const std::array<VertexId, 4>& k) {
 
 Complex fromConnectivity(const std::vector<Vec3>& points, const std::vector<std::array<VertexId, 8>>& hexes) {
   Complex cx;
-  cx.reserve(hexes.size(), points.size());
+  cx.reserve(hexes.size() + hexes.size() / 8 + 64, points.size() + points.size() / 8 + 64);
   for (Vec3 p : points) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw Error("point " + std::to_string(cx.vertexCapacity()) + " has a coordinate that is not a finite number");

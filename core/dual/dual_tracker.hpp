@@ -19,15 +19,25 @@ struct DualChange {
 
 class DualTracker {
  public:
-  explicit DualTracker(const Complex& cx) : dual_(extractDual(cx)) {}
+  explicit DualTracker(const Complex& cx);
   const Dual& dual() const { return dual_; }
-  // Brings the dual up to date after `result` was applied to cx (or undone: pass undone = true).
+  // Brings the dual up to date after `result` was applied to cx.
   DualChange update(const Complex& cx, const OpResult& result);
-  // The same after an arbitrary set of edited hexes (ids of live or removed hexes).
-  DualChange update(const Complex& cx, std::vector<HexId> touched);
+  // The same after an arbitrary set of edited hexes (ids of live or removed hexes). With
+  // sheetsKeepTopology (pillow, chord push, hex push, their inverses, and undoing them) new slots
+  // join the sheet they touch and no sheet is re-flooded: the cost is local. A merge of two
+  // sheets, if one is ever found, falls back to re-flooding the sheets involved.
+  DualChange update(const Complex& cx, std::vector<HexId> touched, bool sheetsKeepTopology = false);
+
+  // True for the operations that never cut, merge or re-shape an existing sheet.
+  static bool keepsSheetTopology(const std::string& op);
 
  private:
+  bool updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
+  void updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
+  void updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   Dual dual_;
+  std::vector<int32_t> selfHexes_;  // per sheet id: hexes with two or more slots on it
   std::vector<int8_t> sign_;
   std::vector<Slot> stack_;
 };
