@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # Runs the benchmarks (after `bash .ci/test` or `bash .ci/demo` has built everything) and prints
-# a markdown table. Each size runs in its own process so peak RSS belongs to that size.
+# markdown tables. Each size runs in its own process so peak RSS belongs to that size.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SIZES=${SIZES:-"10 20 50 100"}
 REPS=${REPS:-5}
+OP_REPS=${OP_REPS:-21}
+
+echo "### Build + dual extraction"
+echo
 echo "| n³ hexes | native cold ms | native warm build+dual ms | wasm cold ms | wasm warm build+dual ms | wasm/native (warm) | bytes/hex | native peak RSS MB | node peak RSS MB |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for n in $SIZES; do
@@ -15,4 +19,33 @@ for n in $SIZES; do
     const f = (x) => x.toFixed(1);
     console.log(`| ${a.n}³ = ${a.hexes} | ${f(a.coldMs)} | ${f(a.buildMs)} + ${f(a.dualMs)} = ${f(a.totalMs)} | ${f(b.coldMs)} | ${f(b.buildMs)} + ${f(b.dualMs)} = ${f(b.totalMs)} | ${(b.totalMs / a.totalMs).toFixed(2)} | ${f(a.bytesPerHex)} | ${f(a.peakRssMb)} | ${f(b.peakRssMb)} |`);
   ' "$nat" "$was"
+done
+
+echo
+echo "### Operation latency at the centre of an n³ grid (µs, median of $OP_REPS; op alone / op + incremental dual update)"
+echo
+lines=""
+for n in $SIZES; do lines+=$(build/native/hexdual_bench ops "$n" "$OP_REPS")$'\n'; done
+node -e '
+  const rows = process.argv[1].trim().split("\n").map((l) => JSON.parse(l));
+  const sizes = [...new Set(rows.map((r) => r.n))], ops = [...new Set(rows.map((r) => r.op))];
+  const first = sizes[0], last = sizes[sizes.length - 1];
+  console.log(`| operation | ${sizes.map((n) => `${n}³`).join(" | ")} | ratio ${last}³/${first}³ (op / op+dual) |`);
+  console.log(`| --- | ${sizes.map(() => "---").join(" | ")} | --- |`);
+  for (const op of ops) {
+    const get = (n) => rows.find((r) => r.n === n && r.op === op);
+    const cells = sizes.map((n) => `${get(n).opUs.toFixed(0)} / ${get(n).opPlusDualUs.toFixed(0)}`);
+    const ra = get(last).opUs / get(first).opUs, rb = get(last).opPlusDualUs / get(first).opPlusDualUs;
+    console.log(`| ${op} | ${cells.join(" | ")} | ${ra.toFixed(2)} / ${rb.toFixed(2)} |`);
+  }
+' "$lines"
+
+echo
+echo "### Random sequences (pillow, hex push, chord push at random places, with dual updates)"
+echo
+echo "| grid | attempted | applied | applied per second | hexes at the end |"
+echo "| --- | --- | --- | --- | --- |"
+for n in 10; do
+  t=$(build/native/hexdual_bench throughput "$n" 20000)
+  node -e 'const t = JSON.parse(process.argv[1]); console.log(`| ${t.n}³ | ${t.attempted} | ${t.applied} | ${t.appliedPerSec} | ${t.hexesAfter} |`);' "$t"
 done
