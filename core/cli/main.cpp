@@ -11,6 +11,10 @@
 #include "complex/builders.hpp"
 #include "dual/dual.hpp"
 #include "dual/dual_tracker.hpp"
+#include "flips/decompositions.hpp"
+#include "flips/flip.hpp"
+#include "flips/fourcube.hpp"
+#include "flips/search.hpp"
 #include "ops/candidates.hpp"
 #include "ops/oplog.hpp"
 #include "io/io.hpp"
@@ -29,12 +33,21 @@ const char* kUsage =
     "  hexdual convert IN OUT [--binary]         convert between .vtk, .mesh and .hxd\n"
     "  hexdual apply FILE --ops LOG -o OUT [--json]\n"
     "                                            apply an operation log (text, URL form, or @file)\n"
-    "  hexdual candidates FILE OP                steps of operation OP that apply to FILE\n";
+    "  hexdual candidates FILE OP                steps of operation OP that apply to FILE\n"
+    "  hexdual flip list [--json]                the cubical flips and their stored decompositions\n"
+    "  hexdual flip NAME --at H1,H2,.. FILE -o OUT [--via-atomic]\n"
+    "                                            apply a flip to the named hexes\n"
+    "  hexdual flip verify --all [--json]        check every stored decomposition in host meshes\n"
+    "  hexdual flip search NAME --max-depth D [--max-seconds S] [--max-states N] [--ops a,b]\n"
+    "                                            search atomic sequences for a flip\n";
 
 struct Args {
   std::vector<std::string> positional;
-  std::string output, ops;
-  bool json = false, binary = false;
+  std::string output, ops, at;
+  bool json = false, binary = false, viaAtomic = false, all = false;
+  int maxDepth = 4;
+  double maxSeconds = 60;
+  int64_t maxStates = 200000;
 };
 
 Args parseArgs(int argc, char** argv, int from) {
@@ -47,6 +60,21 @@ Args parseArgs(int argc, char** argv, int from) {
     } else if (s == "--ops") {
       if (i + 1 >= argc) throw Error("--ops needs an operation log");
       a.ops = argv[++i];
+    } else if (s == "--at" || s == "--max-depth" || s == "--max-seconds" || s == "--max-states") {
+      if (i + 1 >= argc) throw Error(s + " needs a value");
+      std::string v = argv[++i];
+      try {
+        if (s == "--at") a.at = v;
+        if (s == "--max-depth") a.maxDepth = std::stoi(v);
+        if (s == "--max-seconds") a.maxSeconds = std::stod(v);
+        if (s == "--max-states") a.maxStates = std::stoll(v);
+      } catch (const std::exception&) {
+        throw Error(s + " needs a number, not '" + v + "'");
+      }
+    } else if (s == "--via-atomic") {
+      a.viaAtomic = true;
+    } else if (s == "--all") {
+      a.all = true;
     } else if (s == "--json") {
       a.json = true;
     } else if (s == "--binary") {
@@ -145,6 +173,147 @@ int runApply(const Args& a) {
   return 0;
 }
 
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string x;
+  while (std::getline(ss, x, ',')) out.push_back(x);
+  return out;
+}
+
+std::string countsText(const Counts& c) {
+  return "(" + std::to_string(c.vertices) + "," + std::to_string(c.edges) + "," + std::to_string(c.quads) + "," +
+         std::to_string(c.hexes) + ")";
+}
+
+const StoredDecomposition* storedFor(const std::string& name) {
+  for (const auto& d : storedDecompositions())
+    if (d.problem == name) return &d;
+  return nullptr;
+}
+
+int runFlip(const Args& a) {
+  if (a.positional.empty()) throw Error("flip needs a subcommand or a flip name (see --help)");
+  const std::string sub = a.positional[0];
+  if (sub == "list") {
+    io::JsonWriter w;
+    w.beginArray();
+    for (const FlipClass& fc : enumerateFlipClasses()) {
+      const StoredDecomposition* d = storedFor(fc.name);
+      Counts b = fc.interiorBefore, f = fc.interiorAfter;
+      Counts dl{f.vertices - b.vertices, f.edges - b.edges, f.quads - b.quads, f.hexes - b.hexes, 0, 0, 0};
+      if (a.json) {
+        w.beginObject().key("name").value(fc.name).key("inverse").value(fc.inverse);
+        w.key("before").raw("[" + std::to_string(b.vertices) + "," + std::to_string(b.edges) + "," + std::to_string(b.quads) + "," + std::to_string(b.hexes) + "]");
+        w.key("after").raw("[" + std::to_string(f.vertices) + "," + std::to_string(f.edges) + "," + std::to_string(f.quads) + "," + std::to_string(f.hexes) + "]");
+        w.key("geometric").value(fc.geometric).key("decomposition");
+        if (d && d->found) {
+          std::string log = "v1";
+          for (const auto& s : d->steps) log += ";" + s;
+          w.value(log);
+        } else {
+          w.raw("null");
+        }
+        w.endObject();
+      } else {
+        std::cout << fc.name << "  before " << countsText(b) << " -> after " << countsText(f) << "  delta " << countsText(dl)
+                  << "  " << (fc.geometric ? "geometric" : "not geometric") << "  ";
+        if (d && d->found) std::cout << d->steps.size() << " atomic steps";
+        else if (d) std::cout << "no decomposition up to depth " << d->depthSearched << " (" << d->states << " states)";
+        else std::cout << "not searched";
+        std::cout << "\n";
+      }
+    }
+    w.endArray();
+    if (a.json) std::cout << w.str() << "\n";
+    return 0;
+  }
+  if (sub == "verify") {
+    if (!a.all) throw Error("flip verify needs --all");
+    io::JsonWriter w;
+    w.beginArray();
+    int failures = 0;
+    for (const StoredDecomposition& d : storedDecompositions()) {
+      if (!d.found) continue;
+      SearchProblem pb = problemFor(d.problem);
+      std::vector<std::string> places;
+      std::string error;
+      try {
+        verifyDecomposition(pb, d.steps);
+        places.push_back("search problem");
+        if (d.problem.find('/') == std::string::npos && d.problem != "tripleChordPush")
+          for (const Embedding& e : flipEmbeddings(d.problem)) {
+            verifyInEmbedding(pb, d.steps, e);
+            places.push_back(e.name);
+          }
+      } catch (const Error& e) {
+        error = e.what();
+      }
+      bool ok = error.empty() && places.size() >= 3;
+      if (error.empty() && places.size() < 3) error = "verified at " + std::to_string(places.size()) + " places only";
+      failures += !ok;
+      if (a.json) {
+        w.beginObject().key("name").value(d.problem).key("verified").value(ok).key("length").value(int64_t(d.steps.size()));
+        w.key("places").value(int64_t(places.size()));
+        if (!ok) w.key("error").value(error);
+        w.endObject();
+      } else {
+        std::cout << d.problem << ": " << (ok ? "verified" : "FAILED") << ", " << d.steps.size() << " steps, " << places.size()
+                  << " places" << (ok ? "" : " (" + error + ")") << "\n";
+      }
+    }
+    w.endArray();
+    if (a.json) std::cout << w.str() << "\n";
+    return failures ? 1 : 0;
+  }
+  if (sub == "search") {
+    need(a, 2, "flip search NAME");
+    SearchOptions o;
+    o.maxDepth = a.maxDepth;
+    o.maxSeconds = a.maxSeconds;
+    o.maxStates = a.maxStates;
+    if (!a.ops.empty()) o.ops = splitList(a.ops);
+    std::string name = a.positional[1];
+    SearchProblem pb = problemFor(name);
+    SearchResult r = searchDecomposition(pb, o);
+    if (r.found) verifyDecomposition(pb, r.steps);
+    std::string label = name + (a.ops == "chordpush,chordpull" ? "/chord-only" : "");
+    std::cout << formatDecomposition(label, r, o) << "\n";
+    std::cerr << (r.found ? "found " + std::to_string(r.steps.size()) + " steps (verified)" : "none found") << "; stopped by "
+              << r.stoppedBy << " after " << r.statesExplored << " states\n";
+    return 0;
+  }
+  // hexdual flip NAME --at H1,H2 FILE -o OUT [--via-atomic]
+  need(a, 2, "flip NAME --at H1,H2,... FILE -o OUT");
+  if (a.at.empty()) throw Error("flip needs --at H1,H2,...");
+  if (a.output.empty()) throw Error("flip needs -o OUT");
+  std::vector<HexId> hexes;
+  for (const std::string& x : splitList(a.at)) {
+    std::string t = x[0] == 'h' ? x.substr(1) : x;
+    try {
+      hexes.push_back(std::stoi(t));
+    } catch (const std::exception&) {
+      throw Error("--at takes hex ids like 12,13 or h12,h13, not '" + x + "'");
+    }
+  }
+  Complex cx = io::readFile(a.positional[1]);
+  const std::string name = a.positional[0];
+  flipClass(name);
+  if (a.viaAtomic) {
+    const StoredDecomposition* d = storedFor(name);
+    if (!d || !d->found) throw Error("flip " + name + " has no stored atomic decomposition (see hexdual flip list)");
+    auto steps = replayInEmbedding(problemFor(name), d->steps, cx, hexes, "the mesh");
+    std::string log = "v1";
+    for (const auto& s : steps) log += ";" + s;
+    std::cout << log << "\n";
+  } else {
+    OpResult r = flip(cx, name, hexes);
+    std::cout << "flip " << name << ": hexes created " << idList(r.createdHexes) << " removed " << idList(r.removedHexes) << "\n";
+  }
+  io::writeFile(cx, a.output, a.binary);
+  return 0;
+}
+
 int run(int argc, char** argv) {
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
     std::cout << kUsage;
@@ -181,6 +350,7 @@ int run(int argc, char** argv) {
     return 0;
   }
   if (cmd == "apply") return runApply(a);
+  if (cmd == "flip") return runFlip(a);
   if (cmd == "candidates") {
     need(a, 2, "an input file and an operation name");
     Complex cx = io::readFile(a.positional[0]);

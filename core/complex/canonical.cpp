@@ -71,7 +71,8 @@ int actualFace(const Frame& f, int k) {
   return -1;
 }
 
-std::vector<int64_t> encodeFrom(const Complex& cx, HexId start, const Frame& startFrame, const std::vector<uint8_t>& keepId) {
+std::vector<int64_t> encodeFrom(const Complex& cx, HexId start, const Frame& startFrame, const std::vector<uint8_t>& keepId,
+                                std::vector<HexId>* orderOut = nullptr, std::vector<Frame>* framesOut = nullptr) {
   const auto& sym = symmetries();
   std::vector<int32_t> label(size_t(cx.hexCapacity()), -1);
   std::vector<int8_t> frameIdx(size_t(cx.hexCapacity()), -1);
@@ -125,15 +126,32 @@ std::vector<int64_t> encodeFrom(const Complex& cx, HexId start, const Frame& sta
     }
   }
   out.push_back(int64_t(order.size()));
+  if (orderOut) *orderOut = order;
+  if (framesOut) {
+    framesOut->clear();
+    for (HexId h : order) framesOut->push_back(frameOf(frameIdx[size_t(h)]));
+  }
   return out;
 }
 
 }  // namespace
 
-std::vector<int64_t> canonicalForm(const Complex& cx, bool fixedBoundary) {
+std::vector<int64_t> canonicalForm(const Complex& cx, bool fixedBoundary) { return canonicalLabelling(cx, fixedBoundary).form; }
+
+CanonicalLabelling canonicalLabelling(const Complex& cx, bool fixedBoundary) {
   std::vector<uint8_t> keepId(size_t(cx.vertexCapacity()), 0);
-  std::vector<int64_t> best;
-  if (cx.numHexes() == 0) return best;
+  CanonicalLabelling bestL;
+  std::vector<int64_t>& best = bestL.form;
+  if (cx.numHexes() == 0) return bestL;
+  std::vector<HexId> order;
+  std::vector<Frame> frames;
+  auto consider = [&](std::vector<int64_t> enc) {
+    if (best.empty() || enc < best) {
+      best = std::move(enc);
+      bestL.order = order;
+      bestL.frame = frames;
+    }
+  };
   auto bq = cx.boundaryQuads();
   if (fixedBoundary && !bq.empty()) {
     for (const auto& q : bq)
@@ -166,17 +184,13 @@ std::vector<int64_t> canonicalForm(const Complex& cx, bool fixedBoundary) {
         if (b & 4) bits[axisOfFace(f)] ^= 1;
         F[size_t(b)] = int8_t(cornerAt(bits[0], bits[1], bits[2]));
       }
-      auto enc = encodeFrom(cx, q.side.hex, F, keepId);
-      if (best.empty() || enc < best) best = std::move(enc);
+      consider(encodeFrom(cx, q.side.hex, F, keepId, &order, &frames));
     }
-    return best;
+    return bestL;
   }
   for (HexId h : cx.hexes())
-    for (int k = 0; k < 48; ++k) {
-      auto enc = encodeFrom(cx, h, frameOf(k), keepId);
-      if (best.empty() || enc < best) best = std::move(enc);
-    }
-  return best;
+    for (int k = 0; k < 48; ++k) consider(encodeFrom(cx, h, frameOf(k), keepId, &order, &frames));
+  return bestL;
 }
 
 uint64_t canonicalHash(const Complex& cx, bool fixedBoundary) {

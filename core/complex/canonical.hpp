@@ -18,4 +18,14 @@ std::vector<int64_t> canonicalForm(const Complex& cx, bool fixedBoundary = true)
 uint64_t canonicalHash(const Complex& cx, bool fixedBoundary = true);
 bool isomorphic(const Complex& a, const Complex& b, bool fixedBoundary = true);
 
+// The labelling behind the canonical form: hexes in canonical order, and for each a frame mapping
+// canonical bit-corners (x + 2y + 4z) to its actual local corners. Two isomorphic complexes have
+// labellings that line up: hex order[i] of one corresponds to order[i] of the other, corner by corner.
+struct CanonicalLabelling {
+  std::vector<int64_t> form;
+  std::vector<HexId> order;
+  std::vector<std::array<int8_t, 8>> frame;  // per order index: canonical bit-corner -> local corner
+};
+CanonicalLabelling canonicalLabelling(const Complex& cx, bool fixedBoundary = true);
+
 }  // namespace hexdual

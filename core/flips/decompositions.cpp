@@ -1,0 +1,75 @@
+#include "flips/decompositions.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+#include "ops/oplog.hpp"
+
+namespace hexdual {
+
+extern const char* const kDecompositionsText;  // generated from core/flips/decompositions.txt
+
+std::vector<StoredDecomposition> parseDecompositions(const std::string& text) {
+  std::vector<StoredDecomposition> out;
+  std::istringstream in(text);
+  std::string line;
+  int lineNo = 0;
+  bool versionSeen = false;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    if (line.empty() || line[0] == '#') {
+      if (line.rfind("# format v1", 0) == 0) versionSeen = true;
+      continue;
+    }
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, '|')) f.push_back(cell);
+    auto bad = [&](const std::string& why) { return Error("decompositions:" + std::to_string(lineNo) + ": " + why); };
+    if (!versionSeen) throw bad("missing '# format v1' header");
+    if (f.size() != 8) throw bad("expected 8 fields separated by '|', found " + std::to_string(f.size()));
+    StoredDecomposition d;
+    d.problem = f[0];
+    if (f[1] != "found" && f[1] != "none") throw bad("second field must be 'found' or 'none'");
+    d.found = f[1] == "found";
+    if (d.found) {
+      OpLog log = parseOpLog(f[2]);
+      for (const OpStep& s : log.steps) d.steps.push_back(formatOpStep(s));
+    }
+    d.maxDepth = std::stoi(f[3]);
+    d.depthSearched = std::stoi(f[4]);
+    d.states = std::stoll(f[5]);
+    d.seconds = std::stod(f[6]);
+    d.ops = f[7];
+    out.push_back(d);
+  }
+  return out;
+}
+
+const std::vector<StoredDecomposition>& storedDecompositions() {
+  static const std::vector<StoredDecomposition> d = parseDecompositions(kDecompositionsText);
+  return d;
+}
+
+std::string formatDecomposition(const std::string& problem, const SearchResult& r, const SearchOptions& o) {
+  std::string steps = "v1";
+  for (const std::string& s : r.steps) steps += ";" + s;
+  std::string ops = "all";
+  if (!o.ops.empty()) {
+    ops.clear();
+    for (const std::string& s : o.ops) ops += (ops.empty() ? "" : ",") + s;
+  }
+  char secs[32];
+  std::snprintf(secs, sizeof secs, "%.2f", r.seconds);
+  return problem + "|" + (r.found ? "found" : "none") + "|" + (r.found ? steps : "-") + "|" + std::to_string(o.maxDepth) + "|" +
+         std::to_string(r.depthSearched) + "|" + std::to_string(r.statesExplored) + "|" + secs + "|" + ops;
+}
+
+SearchProblem problemFor(const std::string& name) {
+  if (name == "tripleChordPush") return tripleChordPushProblem();
+  std::string flipName = name.substr(0, name.find('/'));
+  SearchProblem p = flipProblem(flipName);
+  return p;
+}
+
+}  // namespace hexdual

@@ -1,0 +1,609 @@
+#include "flips/search.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <chrono>
+#include <deque>
+#include <map>
+#include <unordered_map>
+
+#include "complex/builders.hpp"
+#include "complex/canonical.hpp"
+#include "flips/flip.hpp"
+#include "flips/fourcube.hpp"
+#include "ops/oplog.hpp"
+#include "ops/support.hpp"
+
+namespace hexdual {
+using namespace tables;
+
+SearchProblem flipProblem(const std::string& name) {
+  const FlipClass& fc = flipClass(name);
+  SearchProblem p;
+  p.name = name;
+  p.start = makeFourCubeBoundary();
+  p.host = facetsOf(uint8_t(~fc.before));
+  p.goal = p.start;
+  flip(p.goal, name, facetsOf(fc.before));
+  return p;
+}
+
+SearchProblem tripleChordPushProblem() {
+  SearchProblem p;
+  p.name = "tripleChordPush";
+  p.start = makeGrid(3, 3, 3);
+  // The 8 hexes around vertex (1,1,1): i, j, k in {0, 1}.
+  std::vector<HexId> region;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) region.push_back(HexId(i + 3 * j + 9 * k));
+  for (HexId h : p.start.hexes())
+    if (std::find(region.begin(), region.end(), h) == region.end()) p.host.push_back(h);
+  p.goal = p.start;
+  tripleChordPush(p.goal, 13, 0, {13, 0}, {13, 2}, {13, 4});
+  return p;
+}
+
+namespace {
+
+struct HostSnapshot {
+  std::vector<HexId> host;
+  std::vector<std::array<VertexId, 8>> verts;
+  std::vector<std::array<Gluing, 6>> hostGlue;             // gluings to host hexes (else boundary/region marker)
+  std::vector<std::vector<std::vector<EdgeRef>>> edges;  // per host hex, per edge: host incidences on its cycle
+};
+
+bool isHost(const std::vector<HexId>& host, HexId h) { return std::binary_search(host.begin(), host.end(), h); }
+
+std::vector<EdgeRef> hostIncidences(const Complex& cx, const std::vector<HexId>& host, EdgeRef e) {
+  std::vector<EdgeRef> out;
+  for (EdgeRef x : cx.edgeCycle(e))
+    if (isHost(host, x.hex)) out.push_back(x);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+HostSnapshot snapshot(const Complex& cx, std::vector<HexId> host) {
+  HostSnapshot s;
+  std::sort(host.begin(), host.end());
+  s.host = host;
+  for (HexId h : host) {
+    s.verts.push_back(cx.hexVertices(h));
+    std::array<Gluing, 6> g;
+    for (int f = 0; f < 6; ++f) {
+      g[size_t(f)] = cx.gluing(h, f);
+      if (!g[size_t(f)].boundary() && !isHost(host, g[size_t(f)].hex)) g[size_t(f)] = Gluing{-2, 0, 0};
+    }
+    s.hostGlue.push_back(g);
+    std::vector<std::vector<EdgeRef>> es;
+    for (int e = 0; e < 12; ++e) es.push_back(hostIncidences(cx, host, {h, e}));
+    s.edges.push_back(es);
+  }
+  return s;
+}
+
+// Why a state is not local, or "" when it is.
+std::string localityViolation(const Complex& cx, const HostSnapshot& s) {
+  for (size_t i = 0; i < s.host.size(); ++i) {
+    HexId h = s.host[i];
+    if (!cx.isHex(h)) return "host hex " + std::to_string(h) + " was removed";
+    if (cx.hexVertices(h) != s.verts[i]) return "host hex " + std::to_string(h) + " changed its vertices";
+    for (int f = 0; f < 6; ++f) {
+      Gluing g = cx.gluing(h, f), was = s.hostGlue[i][size_t(f)];
+      bool toHost = !g.boundary() && isHost(s.host, g.hex);
+      if (was.hex >= 0 || toHost) {
+        if (g.hex != was.hex || g.face != was.face || g.orient != was.orient)
+          return "host hex " + std::to_string(h) + " face " + std::to_string(f) + " changed its host gluing";
+      } else if ((was.hex == -1) != g.boundary()) {  // -1: was boundary, -2: was glued to the region
+        return "host hex " + std::to_string(h) + " face " + std::to_string(f) + " changed between boundary and region";
+      }
+    }
+    for (int e = 0; e < 12; ++e)
+      if (hostIncidences(cx, s.host, {h, e}) != s.edges[i][size_t(e)])
+        return "host hex " + std::to_string(h) + " edge " + std::to_string(e) + " was split or merged";
+  }
+  return "";
+}
+
+std::vector<HexId> regionOf(const Complex& cx, const std::vector<HexId>& host) {
+  std::vector<HexId> r;
+  for (HexId h : cx.hexes())
+    if (!isHost(host, h)) r.push_back(h);
+  return r;
+}
+
+CanonicalLabelling regionLabelling(const Complex& cx, const std::vector<HexId>& host) {
+  return canonicalLabelling(subcomplex(cx, regionOf(cx, host)), true);
+}
+
+struct Node {
+  std::vector<int64_t> key;
+  Complex cx;
+  int parent = -1;      // index in the same side's node list
+  std::string step;     // the step from the parent (ids of the parent's complex)
+  int depth = 0;
+};
+
+// Candidate steps on region hexes (many are rejected by the operation itself).
+std::vector<std::string> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<std::string>& ops) {
+  auto use = [&](const char* op) { return ops.empty() || std::find(ops.begin(), ops.end(), op) != ops.end(); };
+  auto H = [](HexId h) { return "h" + std::to_string(h); };
+  auto Q = [](QuadSide s) { return "h" + std::to_string(s.hex) + "f" + std::to_string(s.face); };
+  std::vector<std::string> out;
+  auto region = regionOf(cx, host);
+  auto inRegion = [&](HexId h) { return !isHost(host, h); };
+  std::vector<QuadSide> seenQuads;
+  std::vector<EdgeRef> seenEdges;
+  for (HexId h : region) {
+    if (use("unpillow")) out.push_back("unpillow " + H(h));
+    if (use("chordpull")) out.push_back("chordpull " + H(h));
+    for (int f = 0; f < 6; ++f) {
+      Gluing g = cx.gluing(h, f);
+      if (g.boundary()) continue;
+      QuadSide c = cx.canonical(QuadSide{h, f});
+      bool fresh = std::find(seenQuads.begin(), seenQuads.end(), c) == seenQuads.end();
+      if (fresh) seenQuads.push_back(c);
+      if (fresh && use("pillow")) out.push_back("pillow " + Q({h, f}));
+      if (fresh && use("hexpush") && inRegion(g.hex)) out.push_back("hexpush " + Q({h, f}));
+      if (use("hexpull") && inRegion(g.hex)) out.push_back("hexpull " + Q({h, f}));
+    }
+    if (use("facesplit"))
+      for (int f = 0; f < 6; ++f) {
+        Gluing g = cx.gluing(h, f);
+        if (g.boundary()) continue;
+        auto key = ops::faceVertexSet(cx, h, f);
+        for (HexId h2 : region)
+          for (int f2 = 0; f2 < 6; ++f2) {
+            if ((h2 == h && f2 == f) || (h2 == g.hex && f2 == g.face) || cx.gluing(h2, f2).boundary()) continue;
+            if (QuadSide{h2, f2} < QuadSide{h, f} || ops::faceVertexSet(cx, h2, f2) != key) continue;
+            Gluing g2 = cx.gluing(h2, f2);
+            // Every choice of sides: the side of sL keeps the vertex ids (host sides must keep theirs).
+            for (QuadSide a : {QuadSide{h, f}, QuadSide{g.hex, g.face}})
+              for (QuadSide b : {QuadSide{h2, f2}, QuadSide{g2.hex, g2.face}}) out.push_back("facesplit " + Q(a) + " " + Q(b));
+          }
+      }
+    for (int e = 0; e < 12; ++e) {
+      if (use("ringcollapse") && (e & 2) == 0) out.push_back("ringcollapse " + H(h) + "e" + std::to_string(e));
+      if (!use("chordpush") && !use("facecollapse")) continue;
+      EdgeRef ce = cx.canonical(EdgeRef{h, e});
+      if (std::find(seenEdges.begin(), seenEdges.end(), ce) != seenEdges.end()) continue;
+      seenEdges.push_back(ce);
+      bool closed = false;
+      cx.edgeCycle(ce, &closed);
+      if (!closed) continue;
+      auto st = ops::closedEdgeStar(cx, ce, "search");
+      size_t n = st.inc.size();
+      auto touches = [&](size_t k) { return inRegion(st.inc[k].hex) || inRegion(st.inc[(k + 1) % n].hex); };
+      for (size_t i = 0; i < n; ++i)
+        for (size_t j = i + 1; j < n; ++j) {
+          if (!touches(i) || !touches(j)) continue;
+          std::string args = " " + H(ce.hex) + "e" + std::to_string(ce.edge) + " " + Q({st.inc[i].hex, st.exitFace[i]}) + " " +
+                             Q({st.inc[j].hex, st.exitFace[j]});
+          if (use("chordpush")) out.push_back("chordpush" + args);
+          if (use("facecollapse")) out.push_back("facecollapse" + args);
+        }
+    }
+  }
+  return out;
+}
+
+// Rewrites a step's hex ids and local indices from complex `from` to the isomorphic `to`.
+std::string translateStep(const std::string& step, const CanonicalLabelling& from, const CanonicalLabelling& to,
+                          const std::vector<HexId>& host) {
+  OpStep st = parseOpStep(step);
+  auto indexOf = [&](HexId h) {
+    for (size_t i = 0; i < from.order.size(); ++i)
+      if (from.order[i] == h) return int(i);
+    throw Error("translate: hex " + std::to_string(h) + " is not in the region");
+  };
+  auto bitsOf = [](const std::array<int8_t, 8>& frame, int corner) {
+    for (int b = 0; b < 8; ++b)
+      if (frame[size_t(b)] == corner) return b;
+    return -1;
+  };
+  auto mapFace = [&](HexId h, int face, HexId& h2) {
+    if (isHost(host, h)) {
+      h2 = h;
+      return face;
+    }
+    int i = indexOf(h);
+    h2 = to.order[size_t(i)];
+    int corners[4];
+    for (int q = 0; q < 4; ++q) corners[q] = to.frame[size_t(i)][size_t(bitsOf(from.frame[size_t(i)], kFaceCorners[size_t(face)][size_t(q)]))];
+    for (int g = 0; g < 6; ++g) {
+      int hits = 0;
+      for (int q = 0; q < 4; ++q) hits += positionInFace(g, corners[q]) >= 0;
+      if (hits == 4) return g;
+    }
+    return -1;
+  };
+  for (OpArg& a : st.args) {
+    if (a.kind == OpArg::Quad || a.kind == OpArg::Pair) {
+      HexId h2;
+      a.local = mapFace(a.hex, a.local, h2);
+      a.hex = h2;
+      if (a.kind == OpArg::Pair) a.second.face = mapFace(a.second.hex, a.second.face, a.second.hex);
+    } else if (a.kind == OpArg::Edge) {
+      if (!isHost(host, a.hex)) {
+        int i = indexOf(a.hex);
+        int c0 = to.frame[size_t(i)][size_t(bitsOf(from.frame[size_t(i)], kEdgeCorners[size_t(a.local)][0]))];
+        int c1 = to.frame[size_t(i)][size_t(bitsOf(from.frame[size_t(i)], kEdgeCorners[size_t(a.local)][1]))];
+        a.hex = to.order[size_t(i)];
+        a.local = edgeBetween(c0, c1);
+      }
+    } else if (!isHost(host, a.hex)) {
+      a.hex = to.order[size_t(indexOf(a.hex))];
+    }
+  }
+  return formatOpStep(st);
+}
+
+}  // namespace
+
+SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& opt) {
+  auto t0 = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  HostSnapshot hs = snapshot(pb.start, pb.host);
+  std::vector<HexId> host = hs.host;
+  SearchResult res;
+  std::deque<Node> side[2];  // deque: references stay valid while nodes are added
+  std::map<std::vector<int64_t>, int> index[2];
+  for (int s = 0; s < 2; ++s) {
+    Node n;
+    n.cx = s == 0 ? pb.start : pb.goal;
+    n.key = regionLabelling(n.cx, host).form;
+    index[s][n.key] = 0;
+    side[s].push_back(std::move(n));
+  }
+  auto pathTo = [&](int s, int i) {
+    std::vector<int> chain;
+    for (; i >= 0; i = side[s][size_t(i)].parent) chain.push_back(i);
+    std::reverse(chain.begin(), chain.end());
+    return chain;
+  };
+  // Joins the forward path to node fi with the backward path from the goal to node bi (same key).
+  auto finish = [&](int fi, int bi) {
+    std::vector<std::string> steps;
+    auto fchain = pathTo(0, fi);
+    for (size_t k = 1; k < fchain.size(); ++k) steps.push_back(side[0][size_t(fchain[k])].step);
+    Complex cur = side[0][size_t(fi)].cx;
+    auto bchain = pathTo(1, bi);  // goal ... bi
+    for (size_t k = bchain.size() - 1; k > 0; --k) {
+      const Node& here = side[1][size_t(bchain[k])];
+      const Node& prev = side[1][size_t(bchain[k - 1])];
+      // A local move from cur reaching prev's state: first among the generated moves (this also
+      // picks the side that keeps host vertex ids for splits), else the translated inverse.
+      std::string chosen;
+      for (const std::string& m : moves(cur, host, {})) {
+        OpResult r;
+        try {
+          r = applyStep(cur, m);
+        } catch (const Error&) {
+          continue;
+        }
+        bool hit = localityViolation(cur, hs).empty() && regionLabelling(cur, host).form == prev.key;
+        cur.undo(r.edits);
+        if (hit) {
+          chosen = m;
+          break;
+        }
+      }
+      if (chosen.empty()) {
+        Complex tmp = prev.cx;
+        OpResult r = applyStep(tmp, here.step);
+        chosen = translateStep(r.inverse, regionLabelling(tmp, host), regionLabelling(cur, host), host);
+      }
+      applyStep(cur, chosen);
+      steps.push_back(chosen);
+    }
+    res.found = true;
+    res.steps = steps;
+    res.stoppedBy = "found";
+  };
+  if (side[0][0].key == side[1][0].key) {
+    res.found = true;
+    res.stoppedBy = "found";
+    return res;
+  }
+  std::vector<int> frontier[2] = {{0}, {0}};
+  int depth[2] = {0, 0};
+  while (depth[0] + depth[1] < opt.maxDepth) {
+    int s = frontier[0].size() <= frontier[1].size() ? 0 : 1;
+    std::vector<int> next;
+    for (int i : frontier[s]) {
+      Complex& cx = side[s][size_t(i)].cx;
+      for (const std::string& m : moves(cx, host, opt.ops)) {
+        if (elapsed() > opt.maxSeconds) {
+          res.stoppedBy = "time";
+          goto done;
+        }
+        OpResult r;
+        try {
+          r = applyStep(cx, m);
+        } catch (const Error&) {
+          continue;
+        }
+        std::string why = localityViolation(cx, hs);
+        if (std::getenv("HEXDUAL_SEARCH_TRACE")) std::fprintf(stderr, "%s -> %s\n", m.c_str(), why.c_str());
+        bool ok = why.empty() && int(regionOf(cx, host).size()) <= opt.maxRegionHexes;
+        std::vector<int64_t> key;
+        if (ok) key = regionLabelling(cx, host).form;
+        Complex child;
+        if (ok && !index[s].count(key)) child = cx;
+        cx.undo(r.edits);
+        ++res.statesExplored;
+        if (!ok || index[s].count(key)) continue;
+        Node n;
+        n.key = key;
+        n.cx = std::move(child);
+        n.parent = i;
+        n.step = m;
+        n.depth = depth[s] + 1;
+        int id = int(side[s].size());
+        index[s][key] = id;
+        side[s].push_back(std::move(n));
+        next.push_back(id);
+        auto other = index[1 - s].find(key);
+        if (other != index[1 - s].end()) {
+          if (s == 0) finish(id, other->second);
+          else finish(other->second, id);
+          goto done;
+        }
+        if (int64_t(side[0].size() + side[1].size()) > opt.maxStates) {
+          res.stoppedBy = "states";
+          goto done;
+        }
+      }
+    }
+    frontier[s] = next;
+    ++depth[s];
+    res.depthSearched = depth[0] + depth[1];
+    if (frontier[s].empty()) break;
+  }
+  if (res.stoppedBy.empty()) res.stoppedBy = "depth";
+done:
+  if (res.found) res.depthSearched = int(res.steps.size());
+  res.seconds = elapsed();
+  return res;
+}
+
+void verifyDecomposition(const SearchProblem& pb, const std::vector<std::string>& steps) {
+  HostSnapshot hs = snapshot(pb.start, pb.host);
+  Complex cx = pb.start;
+  for (size_t k = 0; k < steps.size(); ++k) {
+    try {
+      applyStep(cx, steps[k]);
+    } catch (const Error& e) {
+      throw Error("verify " + pb.name + ": step " + std::to_string(k + 1) + " (" + steps[k] + "): " + e.what());
+    }
+    std::string why = localityViolation(cx, hs);
+    if (!why.empty()) throw Error("verify " + pb.name + ": step " + std::to_string(k + 1) + " is not local: " + why);
+  }
+  cx.validate();
+  if (regionLabelling(cx, hs.host).form != regionLabelling(pb.goal, hs.host).form)
+    throw Error("verify " + pb.name + ": the result is not isomorphic to the flip's after side");
+}
+
+
+namespace {
+
+// The region of `cx` as a complex whose vertex ids are renamed: ids in `rename` take their mapped
+// value (boundary vertices shared with the problem), all others get fresh ids from `fresh` on.
+Complex renamedRegion(const Complex& cx, const std::vector<HexId>& region, const std::map<VertexId, VertexId>& rename,
+                      VertexId fresh, std::vector<HexId>& regionOrder) {
+  std::map<VertexId, VertexId> ids = rename;
+  Complex out;
+  std::vector<std::array<VertexId, 8>> hexes;
+  for (HexId h : region) {
+    std::array<VertexId, 8> v;
+    for (int c = 0; c < 8; ++c) {
+      VertexId x = cx.vertex(h, c);
+      auto it = ids.find(x);
+      if (it == ids.end()) it = ids.emplace(x, fresh++).first;
+      v[size_t(c)] = it->second;
+    }
+    hexes.push_back(v);
+  }
+  VertexId maxId = 0;
+  for (auto [a, b] : ids) maxId = std::max(maxId, b);
+  for (VertexId v = 0; v <= maxId; ++v) out.addVertex({});
+  for (auto& v : hexes) out.addHex(v);
+  regionOrder = region;
+  for (size_t i = 0; i < region.size(); ++i)
+    for (int f = 0; f < 6; ++f) {
+      Gluing g = cx.gluing(region[i], f);
+      if (g.boundary()) continue;
+      auto j = std::find(region.begin(), region.end(), g.hex) - region.begin();
+      if (size_t(j) == region.size() || QuadSide{g.hex, g.face} < QuadSide{region[i], f}) continue;
+      out.glue(HexId(i), f, HexId(j), g.face, g.orient);
+    }
+  return out;
+}
+
+// Labelling of a region with its hexes named by their ids in cx (not 0..n-1 of the renamed copy).
+CanonicalLabelling labelRegion(const Complex& cx, const std::vector<HexId>& host, const std::map<VertexId, VertexId>& rename,
+                               VertexId fresh) {
+  std::vector<HexId> order;
+  Complex r = renamedRegion(cx, regionOf(cx, host), rename, fresh, order);
+  CanonicalLabelling L = canonicalLabelling(r, true);
+  for (HexId& h : L.order) h = order[size_t(h)];
+  return L;
+}
+
+}  // namespace
+
+std::vector<Embedding> flipEmbeddings(const std::string& name) {
+  const FlipClass& fc = flipClass(name);
+  std::vector<Embedding> out;
+  auto before = facetsOf(fc.before), hostFacets = facetsOf(uint8_t(~fc.before));
+  Complex c = makeFourCubeBoundary();
+  out.push_back({"4-cube boundary", c, before});
+  // A quad between two host facets (every pair of adjacent facets shares exactly one quad).
+  for (HexId a : hostFacets)
+    for (int f = 0; f < 6; ++f) {
+      Gluing g = c.gluing(a, f);
+      if (!g.boundary() && std::find(hostFacets.begin(), hostFacets.end(), g.hex) != hostFacets.end()) {
+        Complex p = c;
+        pillow(p, {a, f});
+        out.push_back({"4-cube boundary, host pillowed at h" + std::to_string(a) + "f" + std::to_string(f), p, before});
+        Complex q = c;
+        hexPush(q, {a, f});
+        out.push_back({"4-cube boundary, host hex-pushed at h" + std::to_string(a) + "f" + std::to_string(f), q, before});
+        goto grids;
+      }
+    }
+grids:
+  if (name == "7-1" || name == "6-2" || name == "5-3c") {
+    // The before side of an inverse flip is what the forward flip creates: flip grids and rings.
+    for (const Embedding& e : flipEmbeddings(fc.inverse)) {
+      if (e.name.rfind("4-cube", 0) == 0) continue;
+      Embedding m{e.name + " after " + fc.inverse, e.mesh, {}};
+      m.before = flip(m.mesh, fc.inverse, e.before).createdHexes;
+      out.push_back(m);
+    }
+  }
+  if (name == "1-7" || name == "2-6" || name == "3-5c") {
+    Complex g = makeGrid(5, 5, 5), r = makeRing(8, 3, 3);
+    auto gid = [](int i, int j, int k) { return HexId(i + 5 * (j + 5 * k)); };
+    auto rid = [](int t, int s, int k) { return HexId((k * 8 + t) * 3 + s); };
+    size_t n = facetsOf(fc.before).size();
+    std::vector<std::vector<HexId>> gridPlaces, ringPlaces;
+    // Interior places: near the mesh boundary some atomic steps are refused by design (an unpillow
+    // of a pillow on the boundary, a ring collapse merging boundary vertices).
+    if (n == 1) gridPlaces = {{gid(2, 2, 2)}, {gid(1, 2, 3)}}, ringPlaces = {{rid(2, 1, 1)}};
+    if (n == 2) gridPlaces = {{gid(2, 2, 2), gid(3, 2, 2)}, {gid(1, 1, 2), gid(1, 1, 3)}}, ringPlaces = {{rid(2, 1, 1), rid(3, 1, 1)}};
+    // (3-5c's decomposition uses a ring collapse, which never merges boundary vertices: interior places.)
+    if (n == 3) gridPlaces = {{gid(2, 2, 1), gid(2, 2, 2), gid(2, 2, 3)}, {gid(1, 2, 2), gid(2, 2, 2), gid(3, 2, 2)}},
+      ringPlaces = {{rid(2, 1, 1), rid(3, 1, 1), rid(4, 1, 1)}};
+    for (auto& pl : gridPlaces) out.push_back({"5x5x5 grid at h" + std::to_string(pl[0]), g, pl});
+    for (auto& pl : ringPlaces) out.push_back({"8x3x3 O-grid at h" + std::to_string(pl[0]), r, pl});
+  }
+  return out;
+}
+
+std::vector<std::string> replayInEmbedding(const SearchProblem& pb, const std::vector<std::string>& steps, Complex& mesh,
+                                           const std::vector<HexId>& beforeHexes, const std::string& placeName) {
+  const std::string what = pb.name + " in " + placeName;
+  Embedding where{placeName, mesh, beforeHexes};
+  // Match the problem's before side (its region) with the embedding's before hexes: flipping both
+  // directly and comparing is the goal; the boundary vertex map comes from the region boundary.
+  std::vector<HexId> regionP = regionOf(pb.start, pb.host);
+  std::vector<HexId> hostE;
+  for (HexId h : where.mesh.hexes())
+    if (std::find(where.before.begin(), where.before.end(), h) == where.before.end()) hostE.push_back(h);
+  // Boundary vertex map (problem -> embedding): the before sides are isomorphic with boundary kept,
+  // so match them by their canonical labellings with both boundaries left free.
+  CanonicalLabelling lp = canonicalLabelling(subcomplex(pb.start, regionP), false);
+  CanonicalLabelling le = canonicalLabelling(subcomplex(where.mesh, where.before), false);
+  if (lp.form != le.form) throw Error(what + ": the hexes are not the before side");
+  std::map<VertexId, VertexId> toProblem;  // embedding vertex -> problem vertex
+  for (size_t i = 0; i < lp.order.size(); ++i)
+    for (int b = 0; b < 8; ++b)
+      toProblem[where.mesh.vertex(le.order[i], le.frame[i][size_t(b)])] = pb.start.vertex(lp.order[i], lp.frame[i][size_t(b)]);
+  std::vector<HexId> hostP = pb.host;
+  std::sort(hostP.begin(), hostP.end());
+  std::sort(hostE.begin(), hostE.end());
+  HostSnapshot snapE = snapshot(where.mesh, hostE);
+  Complex cp = pb.start;
+  Complex& ce = mesh;
+  std::vector<std::string> applied;
+  // Boundary (host) vertices keep shared names: problem ids on both sides; others get fresh ids.
+  std::map<VertexId, VertexId> idP, idE, toProblemHost;
+  for (HexId h : hostP)
+    for (VertexId v : pb.start.hexVertices(h)) idP[v] = v;
+  for (HexId h : hostE)
+    for (VertexId v : where.mesh.hexVertices(h)) idE[v] = v;
+  for (HexId h : where.before)  // the before side's vertices, on the mesh boundary or not
+    for (VertexId v : where.mesh.hexVertices(h)) {
+      idE[v] = v;
+      toProblemHost[v] = toProblem[v];
+    }
+  const VertexId fresh = std::max(pb.start.vertexCapacity(), where.mesh.vertexCapacity()) + 64;
+  for (size_t k = 0; k < steps.size(); ++k) {
+    CanonicalLabelling a = labelRegion(cp, hostP, idP, fresh);
+    CanonicalLabelling b = labelRegion(ce, hostE, toProblemHost, fresh);
+    if (a.form != b.form) throw Error(what + ": before step " + std::to_string(k + 1) + " the regions differ");
+    // Arguments named through a host hex are re-expressed through the region side of the same
+    // quad or edge (host hexes may differ between hosts); `partner` remembers a side to swap back.
+    OpStep src = parseOpStep(steps[k]);
+    std::vector<bool> partner(src.args.size(), false), partner2(src.args.size(), false);
+    for (size_t i = 0; i < src.args.size(); ++i) {
+      OpArg& arg = src.args[i];
+      if (arg.kind == OpArg::Pair && isHost(hostP, arg.second.hex)) {
+        Gluing g = cp.gluing(arg.second);
+        if (g.boundary() || isHost(hostP, g.hex)) throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
+        arg.second = {g.hex, g.face};
+        partner2[i] = true;
+      }
+      if (!isHost(hostP, arg.hex)) continue;
+      if (arg.kind == OpArg::Quad || arg.kind == OpArg::Pair) {
+        Gluing g = cp.gluing(arg.hex, arg.local);
+        if (g.boundary() || isHost(hostP, g.hex)) throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
+        arg.hex = g.hex;
+        arg.local = g.face;
+        partner[i] = true;
+      } else if (arg.kind == OpArg::Edge) {
+        bool placed = false;
+        for (EdgeRef x : cp.edgeCycle({arg.hex, arg.local}))
+          if (!isHost(hostP, x.hex)) {
+            arg.hex = x.hex;
+            arg.local = x.edge;
+            placed = true;
+            break;
+          }
+        if (!placed) throw Error(what + ": step " + std::to_string(k + 1) + " names a host edge away from the region");
+      } else {
+        throw Error(what + ": step " + std::to_string(k + 1) + " names host hex " + std::to_string(arg.hex));
+      }
+    }
+    std::string t = translateStep(formatOpStep(src), a, b, hostP);
+    OpStep st = parseOpStep(t);
+    for (size_t i = 0; i < st.args.size(); ++i) {
+      if (partner[i]) {
+        Gluing g = ce.gluing(st.args[i].hex, st.args[i].local);
+        st.args[i].hex = g.hex;
+        st.args[i].local = g.face;
+      }
+      if (partner2[i]) {
+        Gluing g = ce.gluing(st.args[i].second);
+        st.args[i].second = {g.hex, g.face};
+      }
+    }
+    t = formatOpStep(st);
+    try {
+      applyStep(cp, steps[k]);
+      applyStep(ce, t);
+    } catch (const Error& e) {
+      throw Error(what + ": step " + std::to_string(k + 1) + " (" + t + "): " + e.what());
+    }
+    std::string why = localityViolation(ce, snapE);
+    if (!why.empty()) throw Error(what + ": step " + std::to_string(k + 1) + " is not local: " + why);
+    applied.push_back(t);
+  }
+  (void)idE;
+  return applied;
+}
+
+void verifyInEmbedding(const SearchProblem& pb, const std::vector<std::string>& steps, const Embedding& where) {
+  const std::string what = "verify " + pb.name + " in " + where.name;
+  Complex direct = where.mesh, viaSteps = where.mesh;
+  flip(direct, pb.name, where.before);
+  try {
+    replayInEmbedding(pb, steps, viaSteps, where.before, where.name);
+  } catch (const Error& e) {
+    throw Error("verify " + std::string(e.what()));
+  }
+  viaSteps.validate();
+  std::vector<HexId> hostE;
+  for (HexId h : where.mesh.hexes())
+    if (std::find(where.before.begin(), where.before.end(), h) == where.before.end()) hostE.push_back(h);
+  std::map<VertexId, VertexId> idE;
+  for (HexId h : where.mesh.hexes())
+    for (VertexId v : where.mesh.hexVertices(h)) idE[v] = v;
+  const VertexId fresh = std::max(direct.vertexCapacity(), viaSteps.vertexCapacity()) + 64;
+  if (labelRegion(viaSteps, hostE, idE, fresh).form != labelRegion(direct, hostE, idE, fresh).form)
+    throw Error(what + ": the result is not isomorphic to the flip applied directly");
+}
+
+}  // namespace hexdual

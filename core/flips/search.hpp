@@ -1,0 +1,72 @@
+// Decomposition search: a bidirectional breadth-first search over atomic operations (and their
+// inverses) that stay local to a region, from a "before" complex to an "after" complex, states
+// deduplicated by the canonical form of the region with its boundary fixed.
+//
+// Local (issue 4): every hex removed is a region hex or one the sequence created, every new hex
+// joins the region, and every host hex keeps its vertices, its gluings to other host hexes and
+// its edges — only which region hex it touches across a region boundary quad may change.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "complex/complex.hpp"
+
+namespace hexdual {
+
+struct SearchProblem {
+  std::string name;
+  Complex start, goal;
+  std::vector<HexId> host;  // hexes outside the region (same ids and vertices in start and goal)
+};
+
+// The before side of a flip as the region of the closed 4-cube boundary (host = the after facets),
+// and the goal: the flip applied directly.
+SearchProblem flipProblem(const std::string& flipName);
+// The triple-chord push at the centre corner of a 3x3x3 grid (region: the 8 hexes at that vertex).
+SearchProblem tripleChordPushProblem();
+
+struct SearchOptions {
+  int maxDepth = 4;              // total steps (split between the two directions)
+  int64_t maxStates = 200000;    // stop when this many distinct states were stored
+  double maxSeconds = 60;
+  std::vector<std::string> ops;  // op-log names to use; empty = all atomic operations and inverses
+  int maxRegionHexes = 16;       // prune states whose region grows beyond this
+};
+
+struct SearchResult {
+  bool found = false;
+  std::vector<std::string> steps;  // op-log steps from start (replay with applyLog)
+  int depthSearched = 0;           // every sequence up to this length was examined (if not found)
+  int64_t statesExplored = 0;
+  double seconds = 0;
+  std::string stoppedBy;  // "found", "depth", "states", "time"
+};
+
+SearchResult searchDecomposition(const SearchProblem& problem, const SearchOptions& options);
+
+// Whether applying `steps` to the problem's start gives a complex isomorphic to its goal with the
+// region boundary fixed, every step local. Throws Error naming the failing step otherwise.
+void verifyDecomposition(const SearchProblem& problem, const std::vector<std::string>& steps);
+
+}  // namespace hexdual
+
+namespace hexdual {
+// A place to embed a flip's before side: a mesh and the hexes that form the before side there.
+struct Embedding {
+  std::string name;
+  Complex mesh;
+  std::vector<HexId> before;
+};
+// Host meshes for a flip: the closed 4-cube boundary with its host part changed in three ways
+// (as is, with a pillow between two host hexes, with a hex push between two host hexes), and,
+// where the before side occurs in them, places in a 5x5x5 grid and an 8x3x3 O-grid.
+std::vector<Embedding> flipEmbeddings(const std::string& flipName);
+// Replays the problem's steps inside the embedding (translated step by step through the
+// canonical labellings of the two regions) and checks the result against the flip applied
+// directly there, every step local, region boundary fixed. Throws Error naming what failed.
+void verifyInEmbedding(const SearchProblem& problem, const std::vector<std::string>& steps, const Embedding& where);
+// Applies the problem's steps to `mesh`, where `beforeHexes` form the problem's before side;
+// returns the steps as applied there (ids of `mesh`). Throws Error when a step cannot be placed.
+std::vector<std::string> replayInEmbedding(const SearchProblem& problem, const std::vector<std::string>& steps, Complex& mesh,
+                                           const std::vector<HexId>& beforeHexes, const std::string& placeName);
+}  // namespace hexdual
