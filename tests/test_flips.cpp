@@ -151,3 +151,98 @@ TEST_CASE("triple-chord push at a hex corner: (+2,+6,+6,+2), valid, no new sheet
   g.undo(r.edits);
   CHECK(errorOf([&] { tripleChordPush(g, 0, 0, {0, 0}, {0, 2}, {0, 4}); }) == "tripleChordPush: quad h0f0 is on the boundary");
 }
+
+#include "flips/decompositions.hpp"
+#include "flips/search.hpp"
+#include "ops/oplog.hpp"
+
+TEST_CASE("every stored decomposition is verified at three or more places") {
+  int found = 0;
+  for (const StoredDecomposition& d : storedDecompositions()) {
+    CAPTURE(d.problem);
+    if (!d.found) continue;
+    ++found;
+    SearchProblem pb = problemFor(d.problem);
+    verifyDecomposition(pb, d.steps);
+    int places = 1;
+    for (const Embedding& e : flipEmbeddings(d.problem)) {
+      CAPTURE(e.name);
+      verifyInEmbedding(pb, d.steps, e);
+      ++places;
+    }
+    CHECK(places >= 3);
+  }
+  CHECK(found == 9);  // all six flips and their inverses except the 4-4 vertex type
+}
+
+TEST_CASE("search finds the paper's decompositions: 2-6 is one hex push, 1-7 is pillow + hex push") {
+  SearchOptions o;
+  o.maxDepth = 3;
+  SearchResult r26 = searchDecomposition(flipProblem("2-6"), o);
+  CHECK(r26.found);
+  CHECK(r26.steps == std::vector<std::string>{"hexpush h0f0"});
+  SearchResult r17 = searchDecomposition(flipProblem("1-7"), o);
+  CHECK(r17.found);
+  REQUIRE(r17.steps.size() == 2);
+  CHECK(r17.steps[0].rfind("pillow ", 0) == 0);
+  CHECK(r17.steps[1].rfind("hexpush ", 0) == 0);
+  // A search that cannot succeed stops at its depth and says so.
+  o.maxDepth = 2;
+  o.ops = {"chordpush", "chordpull"};
+  SearchResult none = searchDecomposition(flipProblem("2-6"), o);
+  CHECK_FALSE(none.found);
+  CHECK(none.depthSearched == 2);
+  CHECK(none.stoppedBy == "depth");
+  CHECK(none.statesExplored > 0);
+}
+
+TEST_CASE("a wrong decomposition is caught by verification") {
+  SearchProblem pb = flipProblem("1-7");
+  CHECK(contains(errorOf([&] { verifyDecomposition(pb, {"pillow h0f1"}); }),
+                 "verify 1-7: the result is not isomorphic to the flip's after side"));
+  CHECK(contains(errorOf([&] { verifyDecomposition(pb, {"hexpush h0f1"}); }), "verify 1-7: step 1 is not local: host hex"));
+}
+
+TEST_CASE("the (2,1)-(1,2) flip by the paper's recipe: two hex pushes, a ring collapse; 5 region sheets become 4") {
+  Complex g = makeGrid(5, 5, 5);
+  Complex c = g;
+  // The column of hexes 37, 62, 87 (x=2, y=2, z=1..3).
+  ApplyReport r = applyLog(c, "v1;hexpush h62f5;hexpush h37f5;ringcollapse h127e4");
+  REQUIRE(r.failedStep == 0);
+  c.validate();
+  std::vector<HexId> before, after;
+  for (HexId h = 0; h < g.hexCapacity(); ++h)
+    if (!c.isHex(h)) before.push_back(h);
+  for (HexId h = g.hexCapacity(); h < c.hexCapacity(); ++h)
+    if (c.isHex(h)) after.push_back(h);
+  CHECK(before == std::vector<HexId>{37, 62, 87});
+  CHECK(after.size() == 7);
+  CHECK(extractDual(subcomplex(g, before)).sheets.size() == 5);
+  CHECK(extractDual(subcomplex(c, after)).sheets.size() == 4);
+  CHECK(c.counts().boundaryQuads == g.counts().boundaryQuads);
+}
+
+TEST_CASE("flips change sheets and chords as their duals say") {
+  // In the 4-cube boundary (4 sheets, 12 chords): the sheet and chord counts after each flip.
+  for (const FlipClass& fc : enumerateFlipClasses()) {
+    CAPTURE(fc.name);
+    Complex c = makeFourCubeBoundary();
+    Dual d0 = extractDual(c);
+    CHECK(d0.sheets.size() == 4);
+    CHECK(d0.chords.size() == 6);
+    OpResult r = flip(c, fc.name, facetsOf(fc.before));
+    Dual d1 = extractDual(c);
+    if (fc.name == "1-7") {
+      CHECK(d1.sheets.size() == 5);  // the pillow sheet
+      CHECK(d1.chords.size() == 9);  // and three new closed chords
+    }
+    if (fc.name == "2-6") {
+      CHECK(d1.sheets.size() == 4);
+      CHECK(d1.chords.size() == 7);  // one new closed chord of 4
+    }
+    flip(c, fc.inverse, r.createdHexes);
+    Dual d2 = extractDual(c);
+    CHECK(d2.sheets.size() == 4);
+    CHECK(d2.chords.size() == 6);
+  }
+}
