@@ -19,6 +19,7 @@
 #include "ops/oplog.hpp"
 #include "io/io.hpp"
 #include "io/json.hpp"
+#include "layout/sheet_diagram.hpp"
 
 using namespace hexdual;
 
@@ -34,6 +35,8 @@ const char* kUsage =
     "  hexdual apply FILE --ops LOG -o OUT [--json]\n"
     "                                            apply an operation log (text, URL form, or @file)\n"
     "  hexdual candidates FILE OP                steps of operation OP that apply to FILE\n"
+    "  hexdual sheets FILE [--sheet ID | --all] [--local H1,H2,.. --rings K] --json|--svg OUTDIR\n"
+    "                                            sheet diagrams as JSON or SVG files\n"
     "  hexdual flip list [--json]                the cubical flips and their stored decompositions\n"
     "  hexdual flip NAME --at H1,H2,.. FILE -o OUT [--via-atomic]\n"
     "                                            apply a flip to the named hexes\n"
@@ -43,8 +46,9 @@ const char* kUsage =
 
 struct Args {
   std::vector<std::string> positional;
-  std::string output, ops, at;
+  std::string output, ops, at, local, jsonDir, svgDir;
   bool json = false, binary = false, viaAtomic = false, all = false;
+  int sheet = -1, rings = 2;
   int maxDepth = 4;
   double maxSeconds = 60;
   int64_t maxStates = 200000;
@@ -52,8 +56,23 @@ struct Args {
 
 Args parseArgs(int argc, char** argv, int from) {
   Args a;
+  const bool sheets = std::string(argv[from - 1]) == "sheets";
   for (int i = from; i < argc; ++i) {
     std::string s = argv[i];
+    if (sheets && (s == "--json" || s == "--svg" || s == "--local" || s == "--sheet" || s == "--rings")) {
+      if (i + 1 >= argc) throw Error(s + " needs a value");
+      std::string v = argv[++i];
+      if (s == "--json") a.jsonDir = v;
+      if (s == "--svg") a.svgDir = v;
+      if (s == "--local") a.local = v;
+      try {
+        if (s == "--sheet") a.sheet = std::stoi(v);
+        if (s == "--rings") a.rings = std::stoi(v);
+      } catch (const std::exception&) {
+        throw Error(s + " needs a number, not '" + v + "'");
+      }
+      continue;
+    }
     if (s == "-o") {
       if (i + 1 >= argc) throw Error("-o needs a file name");
       a.output = argv[++i];
@@ -314,6 +333,51 @@ int runFlip(const Args& a) {
   return 0;
 }
 
+int runSheets(const Args& a) {
+  need(a, 1, "one input file");
+  if (a.jsonDir.empty() && a.svgDir.empty()) throw Error("sheets needs --json OUTDIR or --svg OUTDIR");
+  if (a.sheet < 0 && !a.all) throw Error("sheets needs --sheet ID or --all");
+  Complex cx = io::readFile(a.positional[0]);
+  Dual dual = extractDual(cx);
+  std::vector<HexId> around;
+  for (const std::string& x : splitList(a.local)) {
+    try {
+      around.push_back(std::stoi(x[0] == 'h' ? x.substr(1) : x));
+    } catch (const std::exception&) {
+      throw Error("--local takes hex ids like 12,13, not '" + x + "'");
+    }
+  }
+  std::vector<int> ids;
+  if (a.all) {
+    for (const Sheet& s : dual.sheets)
+      if (!around.empty()) {
+        for (HexId h : around)
+          if (cx.isHex(h) && (dual.sheetOf[size_t(h)][0] == s.id || dual.sheetOf[size_t(h)][1] == s.id || dual.sheetOf[size_t(h)][2] == s.id)) {
+            ids.push_back(s.id);
+            break;
+          }
+      } else {
+        ids.push_back(s.id);
+      }
+  } else {
+    ids.push_back(a.sheet);
+  }
+  for (int id : ids) {
+    SheetDiagram d = around.empty() ? layoutSheet(cx, dual, id) : layoutLocal(cx, dual, id, around, a.rings);
+    std::string base = "sheet-" + std::to_string(id) + (around.empty() ? "" : "-local");
+    auto write = [&](const std::string& dir, const std::string& ext, const std::string& text) {
+      std::string path = dir + "/" + base + ext;
+      std::ofstream out(path);
+      if (!out) throw Error(path + ": cannot open file for writing (does the directory exist?)");
+      out << text;
+      std::cout << path << "\n";
+    };
+    if (!a.jsonDir.empty()) write(a.jsonDir, ".json", diagramJson(d) + "\n");
+    if (!a.svgDir.empty()) write(a.svgDir, ".svg", diagramSvg(d));
+  }
+  return 0;
+}
+
 int run(int argc, char** argv) {
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
     std::cout << kUsage;
@@ -351,6 +415,7 @@ int run(int argc, char** argv) {
   }
   if (cmd == "apply") return runApply(a);
   if (cmd == "flip") return runFlip(a);
+  if (cmd == "sheets") return runSheets(a);
   if (cmd == "candidates") {
     need(a, 2, "an input file and an operation name");
     Complex cx = io::readFile(a.positional[0]);

@@ -1,0 +1,143 @@
+#include <doctest/doctest.h>
+
+#include <map>
+#include <random>
+
+#include "complex/builders.hpp"
+#include "flips/flip.hpp"
+#include "flips/fourcube.hpp"
+#include "helpers.hpp"
+#include "layout/sheet_diagram.hpp"
+#include "ops/oplog.hpp"
+
+using namespace hexdual;
+using namespace hexdual::test;
+
+namespace {
+// Lays out and checks every sheet; returns how many used each method.
+std::map<std::string, int> checkAllSheets(const Complex& cx) {
+  Dual d = extractDual(cx);
+  std::map<std::string, int> methods;
+  for (const Sheet& s : d.sheets) {
+    CAPTURE(s.id);
+    CAPTURE(s.topology);
+    SheetDiagram dg = layoutSheet(cx, d, s.id);
+    ++methods[dg.method];
+    checkDiagram(dg, dg.local ? dg.crossings.size() : s.slots.size());
+    CHECK(diagramJson(dg).find("\"crossings\":[") != std::string::npos);
+    CHECK(diagramSvg(dg).rfind("<svg", 0) == 0);
+  }
+  return methods;
+}
+}  // namespace
+
+TEST_CASE("sheet diagrams of grids: disks, every slot once, chords meet only at crossings") {
+  for (auto dims : {std::array<int, 3>{2, 2, 2}, {3, 3, 3}, {4, 3, 2}, {1, 1, 1}}) {
+    auto m = checkAllSheets(makeGrid(dims[0], dims[1], dims[2]));
+    CHECK(m["disk"] == dims[0] + dims[1] + dims[2]);
+  }
+  // The x=0 layer of a 3x3x3 grid: 9 crossings, 6 chords (3 each way), 12 boundary points.
+  Complex g = makeGrid(3, 3, 3);
+  Dual d = extractDual(g);
+  SheetDiagram dg = layoutSheet(g, d, d.sheetOf[0][0]);
+  CHECK(dg.crossings.size() == 9);
+  CHECK(dg.chords.size() == 6);
+  CHECK(dg.boundary.size() == 12);
+  CHECK(dg.loops.size() == 1);
+  for (const auto& c : dg.chords) CHECK_FALSE(c.closed);
+}
+
+TEST_CASE("sheet diagrams of the ring mesh: annuli drawn between two circles, closed chords") {
+  for (auto dims : {std::array<int, 3>{8, 2, 2}, {8, 3, 3}, {6, 1, 4}}) {
+    Complex r = makeRing(dims[0], dims[1], dims[2]);
+    auto m = checkAllSheets(r);
+    CHECK(m["annulus"] == dims[1] + dims[2]);
+    CHECK(m["disk"] == dims[0]);
+  }
+  Complex r = makeRing(8, 3, 3);
+  Dual d = extractDual(r);
+  SheetDiagram dg = layoutSheet(r, d, 0);
+  CHECK(dg.loops.size() == 2);
+  int closed = 0;
+  for (const auto& c : dg.chords) closed += c.closed;
+  CHECK(closed == 3);
+}
+
+TEST_CASE("sheet diagram of a pillow: a sphere opened at one face, drawn outside the circle") {
+  Complex g = makeGrid(3, 3, 3);
+  pillow(g, {13, 5});
+  Dual d = extractDual(g);
+  int sphere = -1;
+  for (const Sheet& s : d.sheets)
+    if (s.topology == "sphere") sphere = s.id;
+  REQUIRE(sphere >= 0);
+  SheetDiagram dg = layoutSheet(g, d, sphere);
+  CHECK(dg.method == "sphere");
+  CHECK(dg.openedHex == 27);
+  CHECK(dg.crossings.size() == 2);
+  CHECK(dg.chords.size() == 2);
+  for (const auto& c : dg.chords) CHECK(c.closed);
+  checkDiagram(dg, 2);
+  CHECK(contains(dg.note, "the face of hex 27"));
+  checkAllSheets(g);
+}
+
+TEST_CASE("sheet diagrams after chord push, hex push, the 1-7 flip, and in every flip configuration") {
+  Complex a = makeGrid(3, 3, 3);
+  chordPush(a, {13, 11}, {13, 1}, {16, 1});
+  checkAllSheets(a);
+  Complex b = makeGrid(3, 3, 3);
+  hexPush(b, {13, 5});
+  checkAllSheets(b);
+  Complex c = makeGrid(3, 3, 3);
+  flip(c, "1-7", {13});
+  checkAllSheets(c);
+  for (const FlipClass& fc : enumerateFlipClasses()) {
+    CAPTURE(fc.name);
+    Complex f = makeFourCubeBoundary();
+    checkAllSheets(f);
+    flip(f, fc.name, facetsOf(fc.before));
+    checkAllSheets(f);
+  }
+}
+
+TEST_CASE("local diagrams: k rings of chosen hexes inside a dotted circle") {
+  Complex g = makeGrid(5, 5, 5);
+  Dual d = extractDual(g);
+  int sheet = d.sheetOf[62][2];
+  SheetDiagram one = layoutLocal(g, d, sheet, {62}, 1);
+  CHECK(one.local);
+  CHECK(one.method == "local");
+  CHECK(one.crossings.size() == 9);  // 3x3 around hex 62 in its z-layer
+  checkDiagram(one, 9);
+  SheetDiagram two = layoutLocal(g, d, sheet, {62}, 2);
+  CHECK(two.crossings.size() == 25);
+  checkDiagram(two, 25);
+  CHECK(contains(diagramSvg(two), "stroke-dasharray"));
+  CHECK(errorOf([&] { layoutLocal(g, d, sheet, {0}, 1); }) == "sheet diagram: none of the given hexes lies on sheet " + std::to_string(sheet));
+  CHECK(errorOf([&] { layoutSheet(g, d, 999); }) == "sheet diagram: sheet 999 does not exist");
+}
+
+TEST_CASE("sheet diagrams after random operation sequences (fixed seeds)") {
+  const uint32_t firstSeed = 77;
+  int diagrams = 0;
+  for (uint32_t seed = firstSeed; seed < firstSeed + 40; ++seed) {
+    CAPTURE(seed);
+    std::mt19937 rng(seed);
+    Complex cx = seed % 2 ? makeGrid(4, 4, 4) : makeRing(8, 3, 3);
+    for (int step = 0; step < 6; ++step) {
+      HexId h = HexId(rng() % uint32_t(cx.hexCapacity()));
+      if (!cx.isHex(h)) continue;
+      const char* ops[] = {"pillow", "hexpush"};
+      try {
+        applyStep(cx, std::string(ops[rng() % 2]) + " h" + std::to_string(h) + "f" + std::to_string(rng() % 6));
+      } catch (const Error&) {
+      }
+    }
+    auto m = checkAllSheets(cx);
+    for (auto& [k, n] : m) diagrams += n;
+  }
+  MESSAGE("sheet diagrams after random sequences: seeds " << firstSeed << ".." << firstSeed + 39 << ", " << diagrams
+                                                          << " diagrams checked");
+  CHECK(diagrams > 400);
+}
