@@ -12,6 +12,8 @@
 #include "io/io.hpp"
 #include "io/json.hpp"
 #include "layout/render_buffers.hpp"
+#include "layout/sheet_diagram.hpp"
+#include "ops/oplog.hpp"
 
 using namespace emscripten;
 using namespace hexdual;
@@ -54,6 +56,23 @@ class WasmMesh {
                          : format == "hxd" ? io::Format::Native
                                            : throw Error("unknown format '" + format + "' (vtk, mesh or hxd)");
           return io::writeMesh(cx_, f, binary);
+        },
+        std::string());
+  }
+  // The sheet diagram of a sheet as JSON (the same as `hexdual sheets --json`).
+  std::string sheetDiagramJson(int id) {
+    return guarded([&] { return diagramJson(layoutSheet(cx_, dual(), id)); }, std::string());
+  }
+  // A local diagram: the sheet within `rings` rings of the given hexes.
+  std::string localSheetDiagramJson(int id, const std::vector<int>& hexes, int rings) {
+    return guarded([&] { return diagramJson(layoutLocal(cx_, dual(), id, hexes, rings)); }, std::string());
+  }
+  // Applies one operation-log step ("pillow h13f5"); returns its inverse step ("" on error).
+  std::string applyStep(const std::string& step) {
+    return guarded(
+        [&] {
+          OpResult r = hexdual::applyStep(cx_, step);
+          return r.inverse.empty() ? std::string("-") : r.inverse;
         },
         std::string());
   }
@@ -123,6 +142,7 @@ double heapUsed() { return double(mallinfo().uordblks); }
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(hexdual) {
+  register_vector<int>("IntVector");
   function("lastError", &lastError);
   function("heapUsed", &heapUsed);
   class_<WasmMesh>("WasmMesh")
@@ -133,6 +153,9 @@ EMSCRIPTEN_BINDINGS(hexdual) {
       .function("save", &WasmMesh::save)
       .function("validate", &WasmMesh::validate)
       .function("numSheets", &WasmMesh::numSheets)
+      .function("sheetDiagramJson", &WasmMesh::sheetDiagramJson)
+      .function("localSheetDiagramJson", &WasmMesh::localSheetDiagramJson)
+      .function("applyStep", &WasmMesh::applyStep)
       .function("numChords", &WasmMesh::numChords)
       .function("memoryBytes", &WasmMesh::memoryBytes)
       .function("sheetHexes", &WasmMesh::sheetHexes)

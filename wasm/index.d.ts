@@ -39,6 +39,21 @@ export interface RenderBuffers {
   triangleHex: Int32Array;
 }
 export type Format = 'vtk' | 'mesh' | 'hxd';
+export type XY = [number, number];
+export interface SheetDiagram {
+  sheet: number;
+  topology: SheetTopology;
+  method: 'disk' | 'annulus' | 'sphere' | 'local';
+  local: boolean;
+  note: string;
+  radius: number;
+  openedHex: number | null;
+  crossings: { hex: number; axis: number; x: number; y: number; chords: [number, number]; outside: boolean }[];
+  boundary: { hex: number; face: number; x: number; y: number }[];
+  chords: { id: number; otherSheet: number; closed: boolean; hexes: number[]; points: XY[] }[];
+  loops: XY[][];
+  cells: { edge: [number, number]; x: number; y: number }[];
+}
 
 export class Mesh {
   static grid(a: number, b: number, c: number): Mesh;
@@ -51,6 +66,9 @@ export class Mesh {
   sheetHexes(id: number): Int32Array;
   chordHexes(id: number): Int32Array;
   dualSizes(): { sheets: number; chords: number };
+  sheetDiagram(id: number): SheetDiagram;
+  localSheetDiagram(id: number, hexes: number[], rings?: number): SheetDiagram;
+  apply(step: string): string | null;
   memoryBytes(): number;
   validate(): void;
   save(format: Format, options?: { binary?: boolean }): string;

@@ -86,6 +86,35 @@ export class Mesh {
   chordHexes(id) {
     return check(this.#live().chordHexes(id));
   }
+  /** The sheet diagram of a sheet: crossings, chords, boundary loops (docs/sheet-diagrams.md). */
+  sheetDiagram(id) {
+    const text = this.#live().sheetDiagramJson(id);
+    if (!text) check(null);
+    return JSON.parse(text);
+  }
+  /** A local sheet diagram: the sheet within `rings` rings of the given hexes, in a dotted circle. */
+  localSheetDiagram(id, hexes, rings = 2) {
+    const M = module();
+    const v = new M.IntVector();
+    try {
+      for (const h of hexes) v.push_back(h);
+      const text = this.#live().localSheetDiagramJson(id, v, rings);
+      if (!text) check(null);
+      return JSON.parse(text);
+    } finally {
+      v.delete();
+    }
+  }
+  /**
+   * Applies one operation-log step, e.g. 'pillow h13f5'; returns the inverse step
+   * (or null when the operation has none). Throws, leaving the mesh unchanged, on a bad step.
+   */
+  apply(step) {
+    const inv = this.#live().applyStep(step);
+    if (!inv) check(null);
+    this.#info = null;
+    return inv === '-' ? null : inv;
+  }
   /** Number of sheets and chords, without building the JSON description (cheap after the first call). */
   dualSizes() {
     const raw = this.#live();

@@ -4,19 +4,36 @@ import wasmUrl from '../wasm/dist/hexdual.wasm?url';
 import { createState } from './state.js';
 import { createPanel } from './panel.js';
 import { createView3d } from './view3d.js';
+import { createSheetDiagram } from './sheetDiagram.js';
 import { parseHash, formatHash } from './urlState.js';
 
 const MAX_HEXES = 200000;
 
 await init({ locateFile: (p) => (p.endsWith('.wasm') ? wasmUrl : p) });
 
-const store = createState({ mesh: null, meshSpec: null, meshKey: '', shrink: 0.15, selection: null, error: '' });
+const store = createState({
+  mesh: null, meshSpec: null, meshKey: '', shrink: 0.15, selection: null, diagramSheet: null, ops: [], error: '',
+});
 let meshSerial = 0;
 
-function replaceMesh(mesh, spec, selection = null, error = '') {
+function replaceMesh(mesh, spec, selection = null, error = '', ops = []) {
   const old = store.get().mesh;
-  store.set({ mesh, meshSpec: spec, meshKey: `${++meshSerial}`, selection, error });
+  const diagramSheet = selection && selection.kind === 'sheet' ? selection.id : null;
+  store.set({ mesh, meshSpec: spec, meshKey: `${++meshSerial}`, selection, diagramSheet, ops, error });
   if (old) old.delete();
+}
+
+// Applies steps in order; returns the applied ones (with their inverses) and the first error.
+function applySteps(mesh, steps) {
+  const applied = [];
+  for (const step of steps) {
+    try {
+      applied.push({ step, inverse: mesh.apply(step) });
+    } catch (e) {
+      return { applied, error: `step ${applied.length + 1} (${step}): ${e.message}` };
+    }
+  }
+  return { applied, error: '' };
 }
 
 function buildFromSpec(spec) {
@@ -52,19 +69,37 @@ const actions = {
   shrink(value) {
     store.set({ shrink: value });
   },
-  select(selection) {
+  select(selection, { keepDiagram = false } = {}) {
     const cur = store.get().selection;
     const same = cur && cur.kind === selection.kind && cur.id === selection.id;
-    store.set({ selection: same ? null : selection });
+    const next = same ? null : selection;
+    const diagramSheet = keepDiagram ? store.get().diagramSheet : next && next.kind === 'sheet' ? next.id : null;
+    store.set({ selection: next, diagramSheet });
+  },
+  apply(step) {
+    const s = store.get();
+    if (!step) return store.set({ error: 'type an operation step, e.g. pillow h13f5' });
+    const { applied, error } = applySteps(s.mesh, [step]);
+    store.set({ ops: [...s.ops, ...applied], error, selection: null, diagramSheet: null, meshKey: s.meshKey });
+  },
+  undo() {
+    const s = store.get();
+    const last = s.ops[s.ops.length - 1];
+    if (!last) return;
+    if (!last.inverse) return store.set({ error: `${last.step} has no inverse step` });
+    const { error } = applySteps(s.mesh, [last.inverse]);
+    store.set({ ops: error ? s.ops : s.ops.slice(0, -1), error, selection: null, diagramSheet: null });
   },
 };
 
 const panel = createPanel(document.getElementById('panel'), actions);
 const view = createView3d(document.getElementById('view'));
+const diagram = createSheetDiagram(document.getElementById('view'), actions);
 store.subscribe((s) => {
   panel.update(s);
   view.update(s);
-  const hash = formatHash({ mesh: s.meshSpec, selection: s.selection });
+  diagram.update(s);
+  const hash = formatHash({ mesh: s.meshSpec, selection: s.selection, ops: s.ops.map((o) => o.step) });
   if (s.meshSpec && s.meshSpec.kind !== 'file' && location.hash !== hash) history.replaceState(null, '', hash);
 });
 
@@ -73,7 +108,9 @@ function loadFromUrl() {
   let error = parsed.errors.join('; ');
   try {
     const mesh = buildFromSpec(parsed.mesh);
-    replaceMesh(mesh, parsed.mesh, validSelection(mesh, parsed.selection), error);
+    const { applied, error: opError } = applySteps(mesh, parsed.ops);
+    error = [error, opError].filter(Boolean).join('; ');
+    replaceMesh(mesh, parsed.mesh, validSelection(mesh, parsed.selection), error, applied);
   } catch (e) {
     error = [error, e.message].filter(Boolean).join('; ');
     const spec = { kind: 'grid', dims: [3, 3, 3] };
@@ -81,7 +118,8 @@ function loadFromUrl() {
   }
 }
 window.addEventListener('hashchange', () => {
-  if (location.hash !== formatHash({ mesh: store.get().meshSpec, selection: store.get().selection })) loadFromUrl();
+  const s = store.get();
+  if (location.hash !== formatHash({ mesh: s.meshSpec, selection: s.selection, ops: s.ops.map((o) => o.step) })) loadFromUrl();
 });
 loadFromUrl();
 

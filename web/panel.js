@@ -12,6 +12,11 @@ export function createPanel(root, actions) {
     if (file) actions.open(new Uint8Array(await file.arrayBuffer()), file.name);
   });
   $('#shrink').addEventListener('input', (e) => actions.shrink(Number(e.target.value)));
+  $('#op-apply').addEventListener('click', () => actions.apply($('#op-step').value.trim()));
+  $('#op-step').addEventListener('keydown', (e) => {
+    if (e.key === 'Enter') actions.apply($('#op-step').value.trim());
+  });
+  $('#op-undo').addEventListener('click', () => actions.undo());
 
   function fillPicker(list, items, kind, selection, describe) {
     list.replaceChildren(
@@ -42,6 +47,10 @@ export function createPanel(root, actions) {
       }
       $('#shrink').value = String(state.shrink);
       if (!state.mesh) return;
+      $('#ops-log').replaceChildren(
+        ...state.ops.map((o) => Object.assign(document.createElement('li'), { textContent: o.step })),
+      );
+      $('#op-undo').disabled = state.ops.length === 0;
       const info = state.mesh.info();
       for (const td of root.querySelectorAll('[data-count]')) td.textContent = String(info[td.dataset.count]);
       $('#sheet-count').textContent = `(${info.sheets.length})`;

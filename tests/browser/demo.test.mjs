@@ -89,3 +89,48 @@ test('a bad file upload shows the reader error and keeps the mesh', async () => 
   assert.equal((await shownCounts()).hexes, 8);
   assert.deepEqual(errors, []);
 });
+
+test('picking a sheet shows its diagram; clicking a chord there selects it in 3D', async () => {
+  await open('');
+  await page.locator('#sheets li[data-id="2"]').click();
+  await page.waitForSelector('#diagram svg[data-sheet="2"]');
+  assert.equal(await page.locator('#diagram svg circle[data-hex]').count(), 9);
+  assert.equal(await page.locator('#diagram svg .chord').count(), 6);
+  assert.match(await page.locator('#diagram .diagram-title').textContent(), /sheet 2 · disk/);
+  const chord = page.locator('#diagram svg .chord').first();
+  const id = await chord.getAttribute('data-chord');
+  await chord.dispatchEvent('click');
+  assert.equal(await page.locator('#selection-label').textContent(), `chord ${id}: 3 hexes`);
+  assert.equal(await page.locator('#diagram svg[data-sheet="2"]').count(), 1);  // the diagram stays
+  await page.waitForTimeout(300);
+  await page.screenshot({ path: join(screenshotDir, 'demo-diagram.png') });
+});
+
+test('operations: apply a step, see the counts change, share it in the URL, undo', async () => {
+  await open('');
+  await page.fill('#op-step', 'pillow h13f5');
+  await page.click('#op-apply');
+  assert.equal((await shownCounts()).hexes, 29);
+  assert.equal((await shownCounts()).vertices, 68);
+  assert.equal(await page.locator('#ops-log li').count(), 1);
+  assert.match(decodeURIComponent(page.url()), /ops=v1;pillow[+ ]h13f5/);
+  assert.match(await page.locator('#sheets').textContent(), /sphere/);
+  // A rejected step leaves the mesh as it was and says why.
+  await page.fill('#op-step', 'hexpush h0f0');
+  await page.click('#op-apply');
+  assert.match(await page.locator('#error').textContent(), /hexPush: quad h0f0 is on the boundary/);
+  assert.equal((await shownCounts()).hexes, 29);
+  // The shared URL rebuilds the same state.
+  const url = page.url();
+  await page.goto('about:blank');
+  await page.goto(url);
+  await page.waitForFunction(() => window.hexdual?.ready === true);
+  assert.equal((await shownCounts()).hexes, 29);
+  await page.click('#op-undo');
+  assert.equal((await shownCounts()).hexes, 27);
+  assert.equal(await page.locator('#ops-log li').count(), 0);
+  // A log that cannot apply is reported, and the steps before it are kept.
+  await open('#mesh=grid:3x3x3&ops=v1;pillow%20h13f5;hexpush%20h0f0');
+  assert.equal((await shownCounts()).hexes, 29);
+  assert.match(await page.locator('#error').textContent(), /step 2 \(hexpush h0f0\)/);
+});

@@ -103,3 +103,37 @@ test('meshes free their memory: 500 create/delete cycles do not grow the heap', 
   }
   assert.equal(heapBytes(), before);
 });
+
+test('sheet diagrams from wasm equal the native CLI JSON', () => {
+  const cli = new URL('../../build/native/hexdual', import.meta.url).pathname;
+  execFileSync(cli, ['grid', '3x3x3', '-o', '/tmp/hexdual_node_sd.hxd']);
+  execFileSync('mkdir', ['-p', '/tmp/hexdual_node_sd']);
+  execFileSync(cli, ['sheets', '/tmp/hexdual_node_sd.hxd', '--sheet', '2', '--json', '/tmp/hexdual_node_sd']);
+  const native = JSON.parse(execFileSync('cat', ['/tmp/hexdual_node_sd/sheet-2.json']).toString());
+  const m = Mesh.grid(3, 3, 3);
+  const d = m.sheetDiagram(2);
+  assert.equal(d.crossings.length, 9);
+  assert.equal(d.method, 'disk');
+  assert.deepEqual(d.crossings.map((c) => c.hex), native.crossings.map((c) => c.hex));
+  for (let i = 0; i < d.crossings.length; i++) {
+    assert.ok(Math.abs(d.crossings[i].x - native.crossings[i].x) < 1e-6);
+    assert.ok(Math.abs(d.crossings[i].y - native.crossings[i].y) < 1e-6);
+  }
+  const local = m.localSheetDiagram(2, [4], 1);  // hex 4 is the centre of the bottom layer
+  assert.equal(local.local, true);
+  assert.equal(local.crossings.length, 9);
+  assert.throws(() => m.sheetDiagram(99), { message: 'sheet diagram: sheet 99 does not exist' });
+  m.delete();
+});
+
+test('apply: operation steps from JS, with errors that leave the mesh unchanged', () => {
+  const m = Mesh.grid(3, 3, 3);
+  assert.equal(m.apply('pillow h13f5'), 'unpillow h27');
+  assert.equal(m.counts.hexes, 29);
+  assert.throws(() => m.apply('hexpush h0f0'), { message: 'hexPush: quad h0f0 is on the boundary; hex push needs an interior quad' });
+  assert.throws(() => m.apply('frobnicate h1'), { message: "oplog: position 0: unknown operation at 'frobnicate'" });
+  assert.equal(m.counts.hexes, 29);
+  assert.equal(m.apply('unpillow h27'), 'pillow h13f5');
+  assert.equal(m.counts.hexes, 27);
+  m.delete();
+});
