@@ -15,6 +15,7 @@
 #include "complex/builders.hpp"
 #include "dual/dual.hpp"
 #include "dual/dual_tracker.hpp"
+#include "layout/sheet_diagram.hpp"
 #include "ops/oplog.hpp"
 
 using namespace hexdual;
@@ -163,11 +164,30 @@ static int benchThroughput(int n, int steps) {
   return 0;
 }
 
+// Layout of one sheet of an N x N x 2 grid: a sheet of N*N hexes (the z-layer).
+static int benchLayout(int n, int reps) {
+  Complex cx = makeGrid(n, n, 2);
+  Dual d = extractDual(cx);
+  int sheet = d.sheetOf[0][2];
+  std::vector<double> t;
+  size_t crossings = 0;
+  for (int r = 0; r < reps; ++r) {
+    auto t0 = Clock::now();
+    SheetDiagram dg = layoutSheet(cx, d, sheet);
+    t.push_back(ms(Clock::now() - t0));
+    crossings = dg.crossings.size();
+  }
+  std::sort(t.begin(), t.end());
+  std::printf("{\"bench\":\"layout\",\"n\":%d,\"slots\":%zu,\"ms\":%.3f}\n", n, crossings, t[t.size() / 2]);
+  return 0;
+}
+
 int main(int argc, char** argv) {
+  if (argc >= 3 && !std::strcmp(argv[1], "layout")) return benchLayout(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "build")) return benchBuild(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "ops")) return benchOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 21);
   if (argc >= 3 && !std::strcmp(argv[1], "throughput"))
     return benchThroughput(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 20000);
-  std::fprintf(stderr, "usage: hexdual_bench build N [REPS] | ops N [REPS] | throughput N [STEPS]\n");
+  std::fprintf(stderr, "usage: hexdual_bench build N [REPS] | ops N [REPS] | throughput N [STEPS] | layout N [REPS]\n");
   return 2;
 }

@@ -3,9 +3,27 @@
 import { init, Mesh } from '../wasm/index.js';
 
 const [, , what, nArg, repsArg] = process.argv;
-if (what !== 'build' || !nArg) {
-  console.error('usage: node bench/bench_wasm.mjs build N [REPS]');
+if ((what !== 'build' && what !== 'layout') || !nArg) {
+  console.error('usage: node bench/bench_wasm.mjs build|layout N [REPS]');
   process.exit(2);
+}
+if (what === 'layout') {
+  // Layout of the z-layer sheet of an N x N x 2 grid, including the JSON that crosses into JS.
+  await init();
+  const n = Number(nArg), reps = Number(repsArg || 5);
+  const m = Mesh.grid(n, n, 2);
+  const sheet = m.sheets.find((s) => s.hexes === n * n).id;
+  const times = [];
+  let slots = 0;
+  for (let r = 0; r < reps; r++) {
+    const t0 = performance.now();
+    slots = m.sheetDiagram(sheet).crossings.length;
+    times.push(performance.now() - t0);
+  }
+  times.sort((a, b) => a - b);
+  console.log(JSON.stringify({ bench: 'layout-wasm', n, slots, ms: +times[Math.floor(times.length / 2)].toFixed(3) }));
+  m.delete();
+  process.exit(0);
 }
 const n = Number(nArg), reps = Number(repsArg || 5);
 await init();

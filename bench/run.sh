@@ -49,3 +49,14 @@ for n in 10; do
   t=$(build/native/hexdual_bench throughput "$n" 20000)
   node -e 'const t = JSON.parse(process.argv[1]); console.log(`| ${t.n}³ | ${t.attempted} | ${t.applied} | ${t.appliedPerSec} | ${t.hexesAfter} |`);' "$t"
 done
+
+echo
+echo "### Sheet diagram layout (the z-layer sheet of an n x n x 2 grid; median of 5)"
+echo
+echo "| sheet hexes | native ms (layout) | wasm ms (layout + JSON to JS) |"
+echo "| --- | --- | --- |"
+for n in 10 30 100; do
+  a=$(build/native/hexdual_bench layout "$n" 5)
+  b=$(node bench/bench_wasm.mjs layout "$n" 5)
+  node -e 'const a = JSON.parse(process.argv[1]), b = JSON.parse(process.argv[2]); console.log(`| ${a.slots} | ${a.ms.toFixed(1)} | ${b.ms.toFixed(1)} |`);' "$a" "$b"
+done

@@ -50,6 +50,7 @@ struct Surface {
   std::vector<std::pair<int, int>> midEnds;  // corners of each mid vertex
   std::vector<bool> midBoundary;             // on the boundary of the set (no neighbour inside)
   int nCorner = 0, nMid = 0;
+  bool degenerate = false;  // two quads on the same corners, or two mid-edges on the same ends
   int centre(int i) const { return nCorner + nMid + i; }
   int total() const { return nCorner + nMid + int(slots.size()); }
   // Neighbour face across face f of slot i's hex (or -1 when outside the set or on the boundary).
@@ -93,6 +94,16 @@ Surface buildSurface(const Complex& cx, std::vector<Slot> slots) {
       if (j >= 0) s.mid[size_t(j)][size_t(cx.gluing(slots[i].hex, f).face)] = s.nCorner + id;
     }
   s.nMid = int(s.midEnds.size());
+  {
+    std::set<std::array<int, 4>> quadSets;
+    for (auto q : s.quad) {
+      std::sort(q.begin(), q.end());
+      if (!quadSets.insert(q).second) s.degenerate = true;
+    }
+    std::set<std::pair<int, int>> ends;
+    for (auto [a, b] : s.midEnds)
+      if (!ends.insert({std::min(a, b), std::max(a, b)}).second) s.degenerate = true;
+  }
   // Orientation by propagation: neighbouring quads run over their shared edge in opposite directions.
   s.sign.assign(slots.size(), 0);
   for (size_t start = 0; start < slots.size(); ++start) {
@@ -178,20 +189,41 @@ struct Placement {
   std::string method;
 };
 
+// Mids and centres of a non-degenerate surface: averages of their corners.
+void averageRefinement(const Surface& s, Placement& pl) {
+  for (int m = 0; m < s.nMid; ++m)
+    if (!pl.fixed[size_t(s.nCorner + m)])
+      pl.pos[size_t(s.nCorner + m)] = mid2(pl.pos[size_t(s.midEnds[size_t(m)].first)], pl.pos[size_t(s.midEnds[size_t(m)].second)]);
+  for (size_t i = 0; i < s.quad.size(); ++i) {
+    Point2 c;
+    for (int v : s.quad[i]) c = {c.x + 0.25 * pl.pos[size_t(v)].x, c.y + 0.25 * pl.pos[size_t(v)].y};
+    pl.pos[size_t(s.centre(int(i)))] = c;
+  }
+}
+
 bool harmonic(const Surface& s, Placement& pl) {
-  const int n = s.total();
+  // Degenerate surfaces are solved on the refined mesh (corners, mids, centres) so that coincident
+  // quads come apart; others on the corners alone, 4x fewer unknowns.
+  const bool refined = s.degenerate;
+  const int n = refined ? s.total() : s.nCorner;
   std::vector<int> unk(size_t(n), -1);
   int m = 0;
   for (int v = 0; v < n; ++v)
     if (!pl.fixed[size_t(v)]) unk[size_t(v)] = m++;
-  if (m == 0) return true;
-  std::set<std::pair<int, int>> edges;  // corner - mid, mid - centre
-  for (int m = 0; m < s.nMid; ++m) {
+  if (m == 0) {
+    if (!refined) averageRefinement(s, pl);
+    return true;
+  }
+  std::set<std::pair<int, int>> edges;  // corner - mid, mid - centre (refined) or quad edges
+  if (!refined)
+    for (const auto& q : s.quad)
+      for (int k = 0; k < 4; ++k) edges.insert({std::min(q[size_t(k)], q[size_t((k + 1) & 3)]), std::max(q[size_t(k)], q[size_t((k + 1) & 3)])});
+  for (int m = 0; refined && m < s.nMid; ++m) {
     auto [a, b] = s.midEnds[size_t(m)];
     edges.insert({std::min(a, s.nCorner + m), std::max(a, s.nCorner + m)});
     edges.insert({std::min(b, s.nCorner + m), std::max(b, s.nCorner + m)});
   }
-  for (size_t i = 0; i < s.slots.size(); ++i)
+  for (size_t i = 0; refined && i < s.slots.size(); ++i)
     for (int f = 0; f < 6; ++f)
       if (s.mid[i][size_t(f)] >= 0) edges.insert({s.mid[i][size_t(f)], s.centre(int(i))});
   std::vector<Eigen::Triplet<double>> trip;
@@ -215,6 +247,7 @@ bool harmonic(const Surface& s, Placement& pl) {
   Eigen::VectorXd x = solver.solve(bx), y = solver.solve(by);
   for (int v = 0; v < n; ++v)
     if (unk[size_t(v)] >= 0) pl.pos[size_t(v)] = {x[unk[size_t(v)]], y[unk[size_t(v)]]};
+  if (!refined) averageRefinement(s, pl);
   return true;
 }
 
@@ -541,7 +574,7 @@ SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
   std::string why = "a " + sh.topology + " sheet is drawn whole only as a disk, annulus or sphere";
   if (place(cx, s, pl)) {
     SheetDiagram d = assemble(cx, dual, sheet, s, pl, false);
-    if (sh.slots.size() > 2000) return d;  // the planarity check is quadratic: trusted for big sheets
+    if (sh.slots.size() > 2000) return d;  // big sheets: the planarity check (near-linear but slow) is skipped
     try {
       checkDiagram(d, sh.slots.size());
       return d;
@@ -690,16 +723,46 @@ void checkDiagram(const SheetDiagram& d, size_t expectedSlots) {
   std::vector<Seg> segs;
   for (size_t k = 0; k < d.chords.size(); ++k)
     for (size_t i = 0; i + 1 < d.chords[k].points.size(); ++i) segs.push_back({d.chords[k].points[i], d.chords[k].points[i + 1], k, i});
-  for (size_t i = 0; i < segs.size(); ++i)
-    for (size_t j = i + 1; j < segs.size(); ++j) {
-      const Seg &s = segs[i], &t = segs[j];
+  std::map<std::pair<long long, long long>, size_t> crossingAt;  // crossing points by rounded coordinates
+  for (size_t k = 0; k < d.crossings.size(); ++k)
+    crossingAt[{std::llround(d.crossings[k].p.x * 1e6), std::llround(d.crossings[k].p.y * 1e6)}] = k;
+  // Candidate pairs from a uniform grid over the segments' bounding boxes (near-linear).
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const Seg& g : segs) {
+    x0 = std::min({x0, g.a.x, g.b.x});
+    y0 = std::min({y0, g.a.y, g.b.y});
+    x1 = std::max({x1, g.a.x, g.b.x});
+    y1 = std::max({y1, g.a.y, g.b.y});
+  }
+  const int G = std::max(1, int(std::sqrt(double(segs.size()))));
+  const double cw = std::max((x1 - x0) / G, 1e-12), ch = std::max((y1 - y0) / G, 1e-12);
+  auto cellOf = [&](double v, double lo, double w) { return std::clamp(int((v - lo) / w), 0, G - 1); };
+  std::unordered_map<int64_t, std::vector<size_t>> grid;
+  for (size_t i = 0; i < segs.size(); ++i) {
+    const Seg& g = segs[i];
+    int cx0 = cellOf(std::min(g.a.x, g.b.x) - 1e-9, x0, cw), cx1 = cellOf(std::max(g.a.x, g.b.x) + 1e-9, x0, cw);
+    int cy0 = cellOf(std::min(g.a.y, g.b.y) - 1e-9, y0, ch), cy1 = cellOf(std::max(g.a.y, g.b.y) + 1e-9, y0, ch);
+    for (int cxx = cx0; cxx <= cx1; ++cxx)
+      for (int cyy = cy0; cyy <= cy1; ++cyy) grid[int64_t(cxx) * G + cyy].push_back(i);
+  }
+  std::set<std::pair<size_t, size_t>> tested;
+  for (auto& [cell, list] : grid)
+    for (size_t p = 0; p < list.size(); ++p)
+      for (size_t q = p + 1; q < list.size(); ++q) {
+        size_t i = std::min(list[p], list[q]), j = std::max(list[p], list[q]);
+        if (!tested.insert({i, j}).second) continue;
+        const Seg &s = segs[i], &t = segs[j];
       bool consecutive = s.chord == t.chord && (s.index + 1 == t.index || t.index + 1 == s.index ||
                                                 (d.chords[s.chord].closed && (s.index == 0 || t.index == 0)));
       Point2 at;
       if (!segmentsMeet(s.a, s.b, t.a, t.b, &at)) continue;
       if (consecutive && (near(at, s.a) || near(at, s.b))) continue;
       bool atCrossing = false;
-      for (const auto& c : d.crossings) atCrossing = atCrossing || near(at, c.p);
+      for (int ox = -1; ox <= 1 && !atCrossing; ++ox)
+        for (int oy = -1; oy <= 1 && !atCrossing; ++oy) {
+          auto it = crossingAt.find({std::llround(at.x * 1e6) + ox, std::llround(at.y * 1e6) + oy});
+          if (it != crossingAt.end()) atCrossing = near(at, d.crossings[it->second].p);
+        }
       if (!atCrossing) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "chords %d and %d meet at (%.4f, %.4f), which is not a hex crossing", d.chords[s.chord].chord,
