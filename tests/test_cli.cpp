@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <cstdio>
 #include <string>
 
@@ -91,4 +92,25 @@ TEST_CASE("cli: candidates lists only steps that apply") {
   CHECK(run("apply /tmp/hexdual_cli_c.hxd --ops 'v1;pillow h13f5' -o /tmp/hexdual_cli_c2.hxd").status == 0);
   CHECK(run("candidates /tmp/hexdual_cli_c2.hxd unpillow").out == "unpillow h27\nunpillow h28\n");
   CHECK(run("candidates /tmp/hexdual_cli_c.hxd frob").out == "hexdual: candidates: unknown operation 'frob'\n");
+}
+
+TEST_CASE("cli: sheets writes SVG and JSON diagrams; bad arguments are one-line errors") {
+  CHECK(run("grid 3x3x3 -o /tmp/hexdual_cli_s.hxd").status == 0);
+  CHECK(std::system("rm -rf /tmp/hexdual_cli_sd && mkdir -p /tmp/hexdual_cli_sd") == 0);
+  Run all = run("sheets /tmp/hexdual_cli_s.hxd --all --svg /tmp/hexdual_cli_sd --json /tmp/hexdual_cli_sd");
+  CHECK(all.status == 0);
+  CHECK(std::count(all.out.begin(), all.out.end(), '\n') == 18);  // 9 sheets x (json + svg)
+  Run local = run("sheets /tmp/hexdual_cli_s.hxd --sheet 2 --local 4 --rings 1 --json /tmp/hexdual_cli_sd");
+  CHECK(local.out == "/tmp/hexdual_cli_sd/sheet-2-local.json\n");
+  FILE* f = std::fopen("/tmp/hexdual_cli_sd/sheet-2-local.json", "r");
+  REQUIRE(f);
+  std::string text(4096, '\0');
+  text.resize(std::fread(text.data(), 1, text.size(), f));
+  std::fclose(f);
+  CHECK(contains(text, "{\"sheet\":2,\"topology\":\"disk\",\"method\":\"local\",\"local\":true"));
+  CHECK(run("sheets /tmp/hexdual_cli_s.hxd --sheet 2").out == "hexdual: sheets needs --json OUTDIR or --svg OUTDIR\n");
+  CHECK(run("sheets /tmp/hexdual_cli_s.hxd --sheet 99 --svg /tmp/hexdual_cli_sd").out ==
+        "hexdual: sheet diagram: sheet 99 does not exist\n");
+  CHECK(run("sheets /tmp/hexdual_cli_s.hxd --sheet 1 --svg /nonexistent/dir").out ==
+        "hexdual: /nonexistent/dir/sheet-1.svg: cannot open file for writing (does the directory exist?)\n");
 }
