@@ -117,6 +117,13 @@ constexpr std::array<int, 3> edgesOfCorner(int c) {
   return r;
 }
 
+// The corner across the hex from c along one axis.
+constexpr int flipAxis(int c, int axis) {
+  int b[3] = {cornerBit(c, 0), cornerBit(c, 1), cornerBit(c, 2)};
+  b[axis] ^= 1;
+  return cornerAt(b[0], b[1], b[2]);
+}
+
 constexpr int mapPosition(int p, int orient) {
   int shift = orient & 3;
   return (orient & 4) ? (shift - p) & 3 : (p + shift) & 3;

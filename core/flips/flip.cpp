@@ -12,11 +12,6 @@ using namespace ops;
 
 namespace {
 
-int flipAxis(int c, int axis) {
-  int b[3] = {cornerBit(c, 0), cornerBit(c, 1), cornerBit(c, 2)};
-  b[axis] ^= 1;
-  return cornerAt(b[0], b[1], b[2]);
-}
 
 // A map of the region onto the pattern: hex -> pattern hex, and per hex local corner -> pattern corner.
 struct Match {

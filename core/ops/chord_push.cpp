@@ -5,36 +5,11 @@ namespace hexdual {
 using namespace tables;
 using namespace ops;
 
-namespace {
-// The vertex of face f of hex h that follows corner c away from corner `away` along the cycle.
-VertexId neighbourInFace(const Complex& cx, HexId h, int f, int c, int away) {
-  int p = positionInFace(f, c);
-  int n1 = kFaceCorners[size_t(f)][size_t((p + 1) & 3)], n3 = kFaceCorners[size_t(f)][size_t((p + 3) & 3)];
-  return cx.vertex(h, n1 == away ? n3 : n1);
-}
-}  // namespace
-
 OpResult chordPush(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
   const std::string op = "chordPush";
-  EdgeStar st = closedEdgeStar(cx, e, op);
-  const int n = int(st.inc.size());
-  int i = quadIndexInStar(cx, st, f), j = quadIndexInStar(cx, st, g);
-  if (i < 0) reject(op, "quad " + sideName(f) + " is not in the cycle around edge " + edgeName(e));
-  if (j < 0) reject(op, "quad " + sideName(g) + " is not in the cycle around edge " + edgeName(e));
-  if (i == j) reject(op, "f and g are the same quad; chord push needs two distinct quads");
-  // Quad k lies between incidence k (exit face) and k+1 (entry face). Arc L runs i+1..j, R runs j+1..i.
-  const EdgeRef li = st.inc[size_t((i + 1) % n)], lj = st.inc[size_t(j)];
-  const QuadSide fL{li.hex, st.entryFace[size_t((i + 1) % n)]}, fR{st.inc[size_t(i)].hex, st.exitFace[size_t(i)]};
-  const QuadSide gL{lj.hex, st.exitFace[size_t(j)]}, gR{st.inc[size_t((j + 1) % n)].hex, st.entryFace[size_t((j + 1) % n)]};
-  const int ca = kEdgeCorners[size_t(li.edge)][0], cb = kEdgeCorners[size_t(li.edge)][1];
-  const VertexId a = cx.vertex(li.hex, ca), b = cx.vertex(li.hex, cb);
-  const VertexId fa = neighbourInFace(cx, li.hex, fL.face, ca, cb), fb = neighbourInFace(cx, li.hex, fL.face, cb, ca);
-  // In arc L's last hex the edge may be numbered the other way round.
-  int da = kEdgeCorners[size_t(lj.edge)][0], db = kEdgeCorners[size_t(lj.edge)][1];
-  if (cx.vertex(lj.hex, da) != a) std::swap(da, db);
-  const VertexId ga = neighbourInFace(cx, lj.hex, gL.face, da, db), gb = neighbourInFace(cx, lj.hex, gL.face, db, da);
-  if (fa == ga || fa == gb || fb == ga || fb == gb)
-    reject(op, "quads " + sideName(f) + " and " + sideName(g) + " share more than edge " + edgeName(e));
+  const ArcSplit sp = arcSplit(cx, e, f, g, op, "chord push");
+  const QuadSide fL = sp.fL, fR = sp.fR, gL = sp.gL, gR = sp.gR;
+  const VertexId a = sp.a, b = sp.b, fa = sp.fa, fb = sp.fb, ga = sp.ga, gb = sp.gb;
 
   Transaction tx(cx);
   auto place = [&](VertexId base, VertexId u, VertexId w) {

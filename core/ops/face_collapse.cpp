@@ -6,43 +6,19 @@ using namespace tables;
 using namespace ops;
 
 namespace {
-VertexId neighbourInFace(const Complex& cx, HexId h, int f, int c, int away) {
-  int p = positionInFace(f, c);
-  int n1 = kFaceCorners[size_t(f)][size_t((p + 1) & 3)], n3 = kFaceCorners[size_t(f)][size_t((p + 3) & 3)];
-  return cx.vertex(h, n1 == away ? n3 : n1);
-}
 int cornerWithVertex(const Complex& cx, HexId h, VertexId v) {
   for (int c = 0; c < 8; ++c)
     if (cx.vertex(h, c) == v) return c;
   return -1;
 }
-bool onBoundary(const Complex& cx, HexId h, int c) {
-  for (auto [hh, cc] : cx.cornersOfVertex(h, c))
-    for (int f : facesOfCorner(cc))
-      if (cx.gluing(hh, f).boundary()) return true;
-  return false;
-}
 }  // namespace
 
 OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
   const std::string op = "faceCollapse";
-  EdgeStar st = closedEdgeStar(cx, e, op);
-  const int n = int(st.inc.size());
-  int i = quadIndexInStar(cx, st, f), j = quadIndexInStar(cx, st, g);
-  if (i < 0) reject(op, "quad " + sideName(f) + " is not in the cycle around edge " + edgeName(e));
-  if (j < 0) reject(op, "quad " + sideName(g) + " is not in the cycle around edge " + edgeName(e));
-  if (i == j) reject(op, "f and g are the same quad; face collapse needs two distinct quads");
-  const EdgeRef li = st.inc[size_t((i + 1) % n)], lj = st.inc[size_t(j)];
-  const QuadSide fL{li.hex, st.entryFace[size_t((i + 1) % n)]}, fR{st.inc[size_t(i)].hex, st.exitFace[size_t(i)]};
-  const QuadSide gL{lj.hex, st.exitFace[size_t(j)]}, gR{st.inc[size_t((j + 1) % n)].hex, st.entryFace[size_t((j + 1) % n)]};
-  const int ca = kEdgeCorners[size_t(li.edge)][0], cb = kEdgeCorners[size_t(li.edge)][1];
-  const VertexId a = cx.vertex(li.hex, ca);
-  const VertexId c = neighbourInFace(cx, li.hex, fL.face, ca, cb), d = neighbourInFace(cx, li.hex, fL.face, cb, ca);
-  int da = kEdgeCorners[size_t(lj.edge)][0], db = kEdgeCorners[size_t(lj.edge)][1];
-  if (cx.vertex(lj.hex, da) != a) std::swap(da, db);
-  const VertexId c2 = neighbourInFace(cx, lj.hex, gL.face, da, db), d2 = neighbourInFace(cx, lj.hex, gL.face, db, da);
-  if (c == c2 || c == d2 || d == c2 || d == d2)
-    reject(op, "quads " + sideName(f) + " and " + sideName(g) + " share more than edge " + edgeName(e));
+  const ArcSplit sp = arcSplit(cx, e, f, g, op, "face collapse");
+  const QuadSide fL = sp.fL, fR = sp.fR, gL = sp.gL, gR = sp.gR;
+  const EdgeRef li = sp.li, lj = sp.lj;
+  const VertexId c = sp.fa, d = sp.fb, c2 = sp.ga, d2 = sp.gb;
   // c merges with c2 and d with d2 (each pair keeps its smaller id); none may be on the boundary.
   std::vector<std::pair<HexId, int>> cornersC2, cornersD2, cornersC, cornersD;
   cornersC = cx.cornersOfVertex(li.hex, cornerWithVertex(cx, li.hex, c));
@@ -50,7 +26,7 @@ OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
   cornersC2 = cx.cornersOfVertex(lj.hex, cornerWithVertex(cx, lj.hex, c2));
   cornersD2 = cx.cornersOfVertex(lj.hex, cornerWithVertex(cx, lj.hex, d2));
   for (auto [h, vtx] : {std::pair{li.hex, c}, std::pair{li.hex, d}, std::pair{lj.hex, c2}, std::pair{lj.hex, d2}})
-    if (onBoundary(cx, h, cornerWithVertex(cx, h, vtx)))
+    if (vertexOnBoundary(cx, h, cornerWithVertex(cx, h, vtx)))
       reject(op, "vertex " + std::to_string(vtx) + " would merge but it is on the boundary");
   const VertexId keepC = std::min(c, c2), keepD = std::min(d, d2);
   std::vector<HexId> touched;
@@ -122,7 +98,7 @@ OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
   for (int corner : {cC, cD}) {
     auto keep = cornersOnSide(cx, {sL.hex, corner}, walls);
     auto all = cx.cornersOfVertex(sL.hex, corner);
-    if (onBoundary(cx, sL.hex, corner)) reject(op, "vertex " + std::to_string(cx.vertex(sL.hex, corner)) + " is on the boundary");
+    if (vertexOnBoundary(cx, sL.hex, corner)) reject(op, "vertex " + std::to_string(cx.vertex(sL.hex, corner)) + " is on the boundary");
     Split s{cx.vertex(sL.hex, corner), {}};
     for (auto k : all)
       if (std::find(keep.begin(), keep.end(), k) == keep.end()) s.gSide.push_back(k);

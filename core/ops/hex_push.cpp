@@ -6,11 +6,6 @@ using namespace tables;
 using namespace ops;
 
 namespace {
-int flipAxis(int c, int axis) {
-  int b[3] = {cornerBit(c, 0), cornerBit(c, 1), cornerBit(c, 2)};
-  b[axis] ^= 1;
-  return cornerAt(b[0], b[1], b[2]);
-}
 int sharedQuads(const Complex& cx, HexId a, HexId b) {
   int n = 0;
   for (int f = 0; f < 6; ++f) n += !cx.gluing(a, f).boundary() && cx.gluing(a, f).hex == b;

@@ -24,12 +24,6 @@ int carryEdge(const Complex& cx, HexId h, int exitFace, int edge, int axis) {
   return edgesOfCorner(cx.mappedCorner(h, exitFace, c))[size_t(axis)];
 }
 
-bool onBoundary(const Complex& cx, HexId h, int c) {
-  for (auto [hh, cc] : cx.cornersOfVertex(h, c))
-    for (int f : facesOfCorner(cc))
-      if (cx.gluing(hh, f).boundary()) return true;
-  return false;
-}
 
 // Walks the chord through e's hex along e's axis, carrying e's diagonal round the ring.
 std::vector<RingHex> walkRing(const Complex& cx, EdgeRef e, const std::string& op) {
@@ -97,7 +91,7 @@ OpResult ringCollapse(Complex& cx, EdgeRef e) {
     }
   }
   for (auto [h, c] : mergedCorners)
-    if (onBoundary(cx, h, c))
+    if (vertexOnBoundary(cx, h, c))
       reject(op, "vertex " + std::to_string(cx.vertex(h, c)) + " would merge but it is on the boundary");
 
   // Chase side gluings through collapse pairs: outside side -> ring side -> partner -> ... -> outside side.
@@ -264,7 +258,7 @@ OpResult ringSplit(Complex& cx, const std::vector<std::pair<QuadSide, QuadSide>>
       if (std::find(A.begin(), A.end(), c) == A.end()) B.push_back(c);
     if (cornersOnSide(cx, B[0], walls).size() != B.size())
       reject(op, "the quads cut vertex " + std::to_string(M[kk]) + " into more than two sides");
-    if (onBoundary(cx, seed.first, seed.second)) reject(op, "vertex " + std::to_string(M[kk]) + " is on the boundary");
+    if (vertexOnBoundary(cx, seed.first, seed.second)) reject(op, "vertex " + std::to_string(M[kk]) + " is on the boundary");
     sideB[kk] = B;
     auto inA = [&](QuadSide s) { return std::find(A.begin(), A.end(), cornerOf(s, M[kk])) != A.end(); };
     fA[kk] = inA(F[kk]) ? F[kk] : partnerOf(F[kk]);

@@ -71,6 +71,53 @@ int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side) {
   return -1;
 }
 
+bool vertexOnBoundary(const Complex& cx, HexId h, int c) {
+  for (auto [hh, cc] : cx.cornersOfVertex(h, c))
+    for (int f : facesOfCorner(cc))
+      if (cx.gluing(hh, f).boundary()) return true;
+  return false;
+}
+
+namespace {
+// The vertex of face f of hex h next to corner c, on the side away from corner `away`.
+VertexId neighbourInFace(const Complex& cx, HexId h, int f, int c, int away) {
+  int p = positionInFace(f, c);
+  int n1 = kFaceCorners[size_t(f)][size_t((p + 1) & 3)], n3 = kFaceCorners[size_t(f)][size_t((p + 3) & 3)];
+  return cx.vertex(h, n1 == away ? n3 : n1);
+}
+}  // namespace
+
+ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const std::string& op, const char* what) {
+  ArcSplit s;
+  s.star = closedEdgeStar(cx, e, op);
+  const int n = int(s.star.inc.size());
+  int i = quadIndexInStar(cx, s.star, f), j = quadIndexInStar(cx, s.star, g);
+  if (i < 0) reject(op, "quad " + sideName(f) + " is not in the cycle around edge " + edgeName(e));
+  if (j < 0) reject(op, "quad " + sideName(g) + " is not in the cycle around edge " + edgeName(e));
+  if (i == j) reject(op, std::string("f and g are the same quad; ") + what + " needs two distinct quads");
+  // Quad k lies between incidence k (exit face) and k+1 (entry face).
+  const auto& st = s.star;
+  s.li = st.inc[size_t((i + 1) % n)];
+  s.lj = st.inc[size_t(j)];
+  s.fL = {s.li.hex, st.entryFace[size_t((i + 1) % n)]};
+  s.fR = {st.inc[size_t(i)].hex, st.exitFace[size_t(i)]};
+  s.gL = {s.lj.hex, st.exitFace[size_t(j)]};
+  s.gR = {st.inc[size_t((j + 1) % n)].hex, st.entryFace[size_t((j + 1) % n)]};
+  const int ca = kEdgeCorners[size_t(s.li.edge)][0], cb = kEdgeCorners[size_t(s.li.edge)][1];
+  s.a = cx.vertex(s.li.hex, ca);
+  s.b = cx.vertex(s.li.hex, cb);
+  s.fa = neighbourInFace(cx, s.li.hex, s.fL.face, ca, cb);
+  s.fb = neighbourInFace(cx, s.li.hex, s.fL.face, cb, ca);
+  // In arc L's last hex the edge may be numbered the other way round.
+  int da = kEdgeCorners[size_t(s.lj.edge)][0], db = kEdgeCorners[size_t(s.lj.edge)][1];
+  if (cx.vertex(s.lj.hex, da) != s.a) std::swap(da, db);
+  s.ga = neighbourInFace(cx, s.lj.hex, s.gL.face, da, db);
+  s.gb = neighbourInFace(cx, s.lj.hex, s.gL.face, db, da);
+  if (s.fa == s.ga || s.fa == s.gb || s.fb == s.ga || s.fb == s.gb)
+    reject(op, "quads " + sideName(f) + " and " + sideName(g) + " share more than edge " + edgeName(e));
+  return s;
+}
+
 void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) {
 #ifdef HEXDUAL_CHECK_INVARIANTS
   (void)touched;

@@ -33,6 +33,20 @@ EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op);
 // Index k of quad k of the star that has `side` as one of its sides, or -1.
 int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side);
 
+// Whether the vertex at corner c of hex h lies on the boundary (walks its corners).
+bool vertexOnBoundary(const Complex& cx, HexId h, int c);
+
+// The arc split of OPERATIONS.md: edge e = ab with a closed cycle, two distinct quads f and g of
+// it; arc L runs from after f up to g, arc R the rest. Sides: fL/gL face arc L, fR/gR arc R.
+// fa, fb (ga, gb) are f's (g's) vertices next to a and b. Rejects (as op) with the shared rules.
+struct ArcSplit {
+  EdgeStar star;
+  EdgeRef li, lj;  // the incidences of e in L's first and last hex
+  QuadSide fL, fR, gL, gR;
+  VertexId a, b, fa, fb, ga, gb;
+};
+ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const std::string& op, const char* what);
+
 // Opens a transaction; rolls back unless commit() is reached. Also fills the result's counts.
 class Transaction {
  public:
