@@ -141,3 +141,23 @@ TEST_CASE("sheet diagrams after random operation sequences (fixed seeds)") {
                                                           << " diagrams checked");
   CHECK(diagrams > 400);
 }
+
+TEST_CASE("a self-intersecting sheet (a quarter-twisted ring): a hex on it twice appears as two crossings") {
+  Complex t = makeTwistedRing(8);
+  t.validate();
+  Dual d = extractDual(t);
+  REQUIRE(d.sheets[0].selfIntersecting);
+  CHECK(d.sheets[0].slots.size() == 16);  // 8 hexes, each twice
+  CHECK(d.sheets[0].topology == "other");  // a Moebius band: Euler characteristic 0, one boundary loop
+  CHECK_FALSE(d.sheets[0].orientable);
+  SheetDiagram dg = layoutSheet(t, d, 0);
+  CHECK(dg.local);
+  CHECK(contains(dg.note, "this sheet is other and self-intersecting"));
+  checkDiagram(dg, dg.crossings.size());
+  std::map<HexId, int> times;
+  for (const auto& c : dg.crossings) ++times[c.hex];
+  int twice = 0;
+  for (auto [h, n] : times) twice += n == 2;
+  CHECK(twice >= 7);  // the drawn piece holds 15 of the 16 slots: seven hexes twice
+  checkAllSheets(t);
+}

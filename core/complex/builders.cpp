@@ -59,6 +59,35 @@ Complex makeRing(int around, int radial, int axial) {
   return fromConnectivity(pts, hexes);
 }
 
+Complex makeTwistedRing(int around) {
+  if (around < 3) throw Error("twisted ring: needs at least 3 hexes around");
+  const double pi = std::acos(-1.0), r0 = 2.0 + 0.3 * around / pi;
+  std::vector<Vec3> pts;
+  // Cross-section corner (s, k) of layer t, turned by a quarter turn over the whole ring.
+  for (int t = 0; t < around; ++t)
+    for (int k = 0; k < 2; ++k)
+      for (int s = 0; s < 2; ++s) {
+        double turn = 0.5 * pi * t / around, u = s - 0.5, v = k - 0.5;
+        double ru = u * std::cos(turn) - v * std::sin(turn), rv = u * std::sin(turn) + v * std::cos(turn);
+        double ang = 2 * pi * t / around, r = r0 + ru;
+        pts.push_back({r * std::cos(ang), r * std::sin(ang), rv});
+      }
+  auto vid = [&](int t, int s, int k) {
+    if (t == around) {  // the seam: (s, k) meets the first layer's corner a quarter turn on
+      int s2 = k, k2 = 1 - s;
+      return VertexId(4 * 0 + s2 + 2 * k2);
+    }
+    return VertexId(4 * t + s + 2 * k);
+  };
+  std::vector<std::array<VertexId, 8>> hexes;
+  for (int t = 0; t < around; ++t) {
+    std::array<VertexId, 8> v;
+    for (int q = 0; q < 8; ++q) v[size_t(q)] = vid(t + cornerBit(q, 1), cornerBit(q, 0), cornerBit(q, 2));
+    hexes.push_back(v);
+  }
+  return fromConnectivity(pts, hexes);
+}
+
 namespace {
 struct FaceKey {
   std::array<VertexId, 4> key;

@@ -14,6 +14,10 @@ Complex makeGrid(int a, int b, int c);
 // Local axes of every hex: x radial, y around, z axial.
 Complex makeRing(int around, int radial, int axial);
 
+// A ring of `around` hexes (1x1 cross-section) whose cross-section turns a quarter turn before the
+// ring closes: the radial and axial layers become one self-intersecting sheet through every hex.
+Complex makeTwistedRing(int around);
+
 // Glues hexes given as 8 vertex ids each (VTK order) wherever two hexes share a quad's 4 vertices
 // in the same cycle. Throws Error when a quad would be shared by three or more hexes, when two
 // hexes share 4 vertices in different cyclic orders, or when a hex repeats a vertex.

@@ -531,25 +531,14 @@ std::vector<Slot> neighbourhood(const Complex& cx, const Dual& dual, int sheet, 
 
 }  // namespace
 
-SheetDiagram layoutLocal(const Complex& cx, const Dual& dual, int sheet, const std::vector<HexId>& hexes, int rings) {
-  if (sheet < 0 || size_t(sheet) >= dual.sheets.size() || !dual.sheets[size_t(sheet)].alive)
-    throw Error("sheet diagram: sheet " + std::to_string(sheet) + " does not exist");
-  std::vector<Slot> seeds;
-  for (HexId h : hexes) {
-    if (!cx.isHex(h)) throw Error("sheet diagram: hex " + std::to_string(h) + " does not exist");
-    for (int a = 0; a < 3; ++a)
-      if (dual.sheetOf[size_t(h)][size_t(a)] == sheet) seeds.push_back({h, a});
-  }
-  if (seeds.empty()) throw Error("sheet diagram: none of the given hexes lies on sheet " + std::to_string(sheet));
+namespace {
+// The largest neighbourhood (at most `rings` rings) of the seed slots that draws as a planar disk;
+// with no ring count working for several seeds, the first seed alone.
+SheetDiagram layoutAround(const Complex& cx, const Dual& dual, int sheet, const std::vector<Slot>& seeds, int rings) {
   for (int k = std::max(rings, 0); k >= 0; --k) {
-    // Connected: grow from the first seed, then add the other seeds' pieces only when they join.
-    std::vector<Slot> piece = neighbourhood(cx, dual, sheet, seeds, k);
-    Surface s = buildSurface(cx, piece);
+    Surface s = buildSurface(cx, neighbourhood(cx, dual, sheet, seeds, k));
     Placement pl;
-    if (!place(cx, s, pl)) {
-      if (k == 0 && seeds.size() > 1) return layoutLocal(cx, dual, sheet, {hexes[0]}, 0);
-      continue;
-    }
+    if (!place(cx, s, pl)) continue;
     SheetDiagram d = assemble(cx, dual, sheet, s, pl, true);
     if (k > 0) {  // a degenerate neighbourhood may not draw planar: take fewer rings
       try {
@@ -562,7 +551,23 @@ SheetDiagram layoutLocal(const Complex& cx, const Dual& dual, int sheet, const s
              (k < rings ? " (more rings do not draw as a planar disk)" : "") + (d.openedHex >= 0 ? "; " + d.note : "");
     return d;
   }
-  throw Error("sheet diagram: no disk-shaped neighbourhood of the chosen hexes on sheet " + std::to_string(sheet));
+  if (seeds.size() > 1) return layoutAround(cx, dual, sheet, {seeds[0]}, rings);
+  throw Error("sheet diagram: no neighbourhood of hex " + std::to_string(seeds[0].hex) + " on sheet " + std::to_string(sheet) +
+              " draws as a planar disk");
+}
+}  // namespace
+
+SheetDiagram layoutLocal(const Complex& cx, const Dual& dual, int sheet, const std::vector<HexId>& hexes, int rings) {
+  if (sheet < 0 || size_t(sheet) >= dual.sheets.size() || !dual.sheets[size_t(sheet)].alive)
+    throw Error("sheet diagram: sheet " + std::to_string(sheet) + " does not exist");
+  std::vector<Slot> seeds;
+  for (HexId h : hexes) {
+    if (!cx.isHex(h)) throw Error("sheet diagram: hex " + std::to_string(h) + " does not exist");
+    for (int a = 0; a < 3; ++a)
+      if (dual.sheetOf[size_t(h)][size_t(a)] == sheet) seeds.push_back({h, a});
+  }
+  if (seeds.empty()) throw Error("sheet diagram: none of the given hexes lies on sheet " + std::to_string(sheet));
+  return layoutAround(cx, dual, sheet, seeds, rings);
 }
 
 SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
@@ -571,7 +576,7 @@ SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
   const Sheet& sh = dual.sheets[size_t(sheet)];
   Surface s = buildSurface(cx, sh.slots);
   Placement pl;
-  std::string why = "a " + sh.topology + " sheet is drawn whole only as a disk, annulus or sphere";
+  std::string why = "this sheet is " + sh.topology + (sh.selfIntersecting ? " and self-intersecting" : "") + "; whole sheets are drawn as a disk, annulus or sphere";
   if (place(cx, s, pl)) {
     SheetDiagram d = assemble(cx, dual, sheet, s, pl, false);
     if (sh.slots.size() > 2000) return d;  // big sheets: the planarity check (near-linear but slow) is skipped
