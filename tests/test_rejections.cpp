@@ -1,0 +1,75 @@
+// Every rejection rule of every operation: the exact message, and the complex unchanged.
+#include <doctest/doctest.h>
+
+#include "complex/builders.hpp"
+#include "flips/flip.hpp"
+#include "helpers.hpp"
+#include "ops/oplog.hpp"
+
+using namespace hexdual;
+using namespace hexdual::test;
+
+namespace {
+struct Case {
+  const char* setup;  // an op log applied to a 3x3x3 grid first ("" for none)
+  const char* step;
+  const char* message;
+};
+}  // namespace
+
+TEST_CASE("every rejection rule names the rule and leaves the complex exactly as it was") {
+  const Case cases[] = {
+      {"", "pillow h13f9", "pillow: local face 9 is not 0..5"},
+      {"", "pillow h99f1", "pillow: hex 99 does not exist"},
+      {"", "pillow h0f0", "pillow: quad h0f0 is on the boundary; a pillow needs an interior quad"},
+      {"", "unpillow h5", "unpillow: hex 5 is not half of a pillow (no hex shares exactly 5 quads with it)"},
+      {"", "unpillow h77", "unpillow: hex 77 does not exist"},
+      {"v1;pillow h1f3", "unpillow h2", "unpillow: hex 2 is not half of a pillow (no hex shares exactly 5 quads with it)"},
+      {"", "chordpush h0e0 h0f1 h0f3", "chordPush: edge h0e0 is on the boundary; it needs a closed cycle of hexes"},
+      {"", "chordpush h13e11 h0f1 h13f1", "chordPush: quad h0f1 is not in the cycle around edge h13e11"},
+      {"", "chordpush h13e11 h13f1 h0f1", "chordPush: quad h0f1 is not in the cycle around edge h13e11"},
+      {"", "chordpush h13e11 h13f1 h14f0", "chordPush: f and g are the same quad; chord push needs two distinct quads"},
+      {"", "chordpush h13e12 h13f1 h14f0", "chordPush: local edge 12 is not 0..11"},
+      {"", "chordpull h13", "chordPull: hex 13 is not half of a blind chord (no hex shares exactly 4 quads with it)"},
+      {"", "hexpush h13f7", "hexPush: local face 7 is not 0..5"},
+      {"", "hexpush h0f2", "hexPush: quad h0f2 is on the boundary; hex push needs an interior quad"},
+      {"v1;pillow h13f5", "hexpush h27f5", "hexPush: hexes 27 and 28 share 5 quads; hex push needs exactly one"},
+      {"v1;chordpush h13e11 h13f1 h16f1", "hexpush h27f0", "hexPush: hexes 27 and 28 share 4 quads; hex push needs exactly one"},
+      {"", "hexpull h13f5", "hexPull: ring hex 12 must share one quad with each of hex 13 and hex 22"},
+      {"", "hexpull h0f1", "hexPull: the 4 side quads of hex 0 must be glued to 4 distinct ring hexes"},
+      {"", "hexpull h0f0", "hexPull: quad h0f0 is on the boundary; hex pull needs an interior quad"},
+      {"", "ringcollapse h13e0", "ringCollapse: the chord through h13e0 reaches the boundary; ring collapse needs a closed chord"},
+      {"", "ringcollapse h13e13", "ringCollapse: local edge 13 is not 0..11"},
+      {"", "ringsplit h13f1/h13f3", "ringSplit: needs at least 2 quad pairs around a loop"},
+      {"", "ringsplit h13f1/h13f3 h0f0/h0f2", "ringSplit: quad h0f0 is on the boundary"},
+      {"", "ringsplit h13f1/h13f0 h13f2/h13f3", "ringSplit: quads h13f1 and h13f0 must share exactly one edge"},
+      {"", "facecollapse h13e11 h13f1 h16f1", "faceCollapse: vertex 30 would merge but it is on the boundary"},
+      {"", "facecollapse h13e11 h13f1 h14f0", "faceCollapse: f and g are the same quad; face collapse needs two distinct quads"},
+      {"", "facesplit h13f1 h13f1", "faceSplit: the two sides belong to the same quad"},
+      {"", "facesplit h13f1 h0f0", "faceSplit: quad h0f0 is on the boundary"},
+      {"", "facesplit h13f1 h13f3", "faceSplit: quads h13f1 and h13f3 are not on the same 4 vertices"},
+      {"v1;pillow h13f5", "facesplit h13f5 h28f5", "faceSplit: quads h13f5 and h28f5 are not a collapsed face pair"},
+  };
+  for (const Case& c : cases) {
+    std::string step = c.step;
+    CAPTURE(step);
+    Complex cx = makeGrid(3, 3, 3);
+    if (*c.setup) REQUIRE(applyLog(cx, c.setup).failedStep == 0);
+    std::string before = stateDump(cx);
+    CHECK(errorOf([&] { applyStep(cx, c.step); }) == c.message);
+    CHECK(stateDump(cx) == before);
+  }
+}
+
+TEST_CASE("composite and flip rejections leave the complex unchanged") {
+  Complex cx = makeGrid(3, 3, 3);
+  std::string before = stateDump(cx);
+  CHECK(errorOf([&] { pillowRegion(cx, {}); }) == "pillowRegion: needs at least one hex");
+  CHECK(errorOf([&] { pillowRegion(cx, {0}); }) == "pillowRegion: quad h0f0 of the set is on the mesh boundary");
+  CHECK(errorOf([&] { tripleChordPush(cx, 13, 9, {13, 0}, {13, 2}, {13, 4}); }) == "tripleChordPush: corner 9 is not 0..7");
+  CHECK(errorOf([&] { tripleChordPush(cx, 13, 0, {13, 0}, {13, 0}, {13, 4}); }) == "tripleChordPush: the three quads must be distinct");
+  CHECK(errorOf([&] { tripleChordPush(cx, 13, 0, {13, 1}, {13, 2}, {13, 4}); }) == "tripleChordPush: quad h13f1 does not contain vertex 21");
+  CHECK(errorOf([&] { flip(cx, "2-6", {13, 99}); }) == "flip 2-6: hex 99 does not exist");
+  CHECK(errorOf([&] { traditionalPillow(cx, 0, 0); }) == "pillow: quad h0f0 is on the boundary; a pillow needs an interior quad");
+  CHECK(stateDump(cx) == before);
+}
