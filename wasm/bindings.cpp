@@ -11,6 +11,8 @@
 #include "dual/dual.hpp"
 #include "io/io.hpp"
 #include "io/json.hpp"
+#include "flips/decompositions.hpp"
+#include "flips/fourcube.hpp"
 #include "layout/render_buffers.hpp"
 #include "layout/sheet_diagram.hpp"
 #include "ops/oplog.hpp"
@@ -39,6 +41,10 @@ class WasmMesh {
 
   static WasmMesh* grid(int a, int b, int c) {
     return guarded([&] { return new WasmMesh(makeGrid(a, b, c)); }, nullptr);
+  }
+  // The closed boundary of the 4-cube: the complex the stored flip decompositions are written for.
+  static WasmMesh* fourCube() {
+    return guarded([&] { return new WasmMesh(makeFourCubeBoundary()); }, nullptr);
   }
   static WasmMesh* ring(int around, int radial, int axial) {
     return guarded([&] { return new WasmMesh(makeRing(around, radial, axial)); }, nullptr);
@@ -136,6 +142,35 @@ class WasmMesh {
 };
 
 std::string lastError() { return g_lastError; }
+
+// The flip classes and their stored decompositions, as JSON (the same facts as `hexdual flip list`).
+std::string flipsJson() {
+  return guarded(
+      [] {
+        io::JsonWriter w;
+        w.beginArray();
+        for (const FlipClass& fc : enumerateFlipClasses()) {
+          w.beginObject().key("name").value(fc.name).key("inverse").value(fc.inverse).key("geometric").value(fc.geometric);
+          w.key("description").value(fc.description).key("before").beginArray();
+          for (HexId h : facetsOf(fc.before)) w.value(int64_t(h));
+          w.endArray().key("steps");
+          const StoredDecomposition* found = nullptr;
+          for (const auto& d : storedDecompositions())
+            if (d.problem == fc.name && d.found) found = &d;
+          if (found) {
+            w.beginArray();
+            for (const auto& s : found->steps) w.value(s);
+            w.endArray();
+          } else {
+            w.raw("null");
+          }
+          w.endObject();
+        }
+        w.endArray();
+        return w.str();
+      },
+      std::string());
+}
 // Bytes allocated by malloc right now: leak tests compare it before and after many calls.
 double heapUsed() { return double(mallinfo().uordblks); }
 
@@ -145,9 +180,11 @@ EMSCRIPTEN_BINDINGS(hexdual) {
   register_vector<int>("IntVector");
   function("lastError", &lastError);
   function("heapUsed", &heapUsed);
+  function("flipsJson", &flipsJson);
   class_<WasmMesh>("WasmMesh")
       .class_function("grid", &WasmMesh::grid, allow_raw_pointers())
       .class_function("ring", &WasmMesh::ring, allow_raw_pointers())
+      .class_function("fourCube", &WasmMesh::fourCube, allow_raw_pointers())
       .class_function("load", &WasmMesh::load, allow_raw_pointers())
       .function("infoJson", &WasmMesh::infoJson)
       .function("save", &WasmMesh::save)

@@ -5,6 +5,15 @@ export interface InitOptions {
 }
 export function init(options?: InitOptions): Promise<unknown>;
 export function heapBytes(): number;
+export interface FlipInfo {
+  name: string;
+  inverse: string;
+  geometric: boolean;
+  description: string;
+  before: number[];
+  steps: string[] | null;
+}
+export function flips(): FlipInfo[];
 
 export type SheetTopology = 'disk' | 'annulus' | 'sphere' | 'torus' | 'other';
 export interface SheetInfo {
@@ -58,6 +67,7 @@ export interface SheetDiagram {
 export class Mesh {
   static grid(a: number, b: number, c: number): Mesh;
   static ring(around: number, radial: number, axial: number): Mesh;
+  static fourCube(): Mesh;
   static load(bytes: Uint8Array | ArrayBuffer | string, name?: string): Mesh;
   info(): Info;
   readonly counts: Counts;

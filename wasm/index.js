@@ -48,6 +48,10 @@ export class Mesh {
   static ring(around, radial, axial) {
     return new Mesh(check(module().WasmMesh.ring(around, radial, axial)));
   }
+  /** The closed boundary of the 4-cube (8 cubes; hex id = facet 2*axis+side), where flips are built. */
+  static fourCube() {
+    return new Mesh(check(module().WasmMesh.fourCube()));
+  }
   /** Reads a .vtk (ASCII or binary), .mesh or .hxd file from its bytes; the format is detected. */
   static load(bytes, name = 'mesh') {
     const data = typeof bytes === 'string' ? new TextEncoder().encode(bytes) : new Uint8Array(bytes);
@@ -155,6 +159,16 @@ export class Mesh {
   [Symbol.dispose]() {
     this.delete();
   }
+}
+
+/**
+ * The cubical flips: name, inverse, whether geometric, the before side's facets in the 4-cube,
+ * and the stored atomic decomposition (op-log steps on Mesh.fourCube()) or null.
+ */
+export function flips() {
+  const text = module().flipsJson();
+  if (!text) check(null);
+  return JSON.parse(text);
 }
 
 /** Bytes currently allocated inside the wasm heap (for leak tests). */

@@ -1,5 +1,5 @@
 // hexdual demo: wires the wasm module, the app state, the panel, the 3D view and the URL.
-import { init, Mesh } from '../wasm/index.js';
+import { init, Mesh, flips } from '../wasm/index.js';
 import wasmUrl from '../wasm/dist/hexdual.wasm?url';
 import { createState } from './state.js';
 import { createPanel } from './panel.js';
@@ -13,13 +13,14 @@ await init({ locateFile: (p) => (p.endsWith('.wasm') ? wasmUrl : p) });
 
 const store = createState({
   mesh: null, meshSpec: null, meshKey: '', shrink: 0.15, selection: null, diagramSheet: null, ops: [], error: '',
+  flipQueue: null,
 });
 let meshSerial = 0;
 
 function replaceMesh(mesh, spec, selection = null, error = '', ops = []) {
   const old = store.get().mesh;
   const diagramSheet = selection && selection.kind === 'sheet' ? selection.id : null;
-  store.set({ mesh, meshSpec: spec, meshKey: `${++meshSerial}`, selection, diagramSheet, ops, error });
+  store.set({ mesh, meshSpec: spec, meshKey: `${++meshSerial}`, selection, diagramSheet, ops, error, flipQueue: null });
   if (old) old.delete();
 }
 
@@ -37,6 +38,7 @@ function applySteps(mesh, steps) {
 }
 
 function buildFromSpec(spec) {
+  if (spec.kind === 'fourcube') return Mesh.fourCube();
   const [a, b, c] = spec.dims;
   if (a * b * c > MAX_HEXES) throw new Error(`${a}x${b}x${c} is more than ${MAX_HEXES} hexes; try a smaller mesh`);
   return spec.kind === 'ring' ? Mesh.ring(a, b, c) : Mesh.grid(a, b, c);
@@ -49,7 +51,25 @@ function validSelection(mesh, sel) {
 }
 
 const actions = {
+  flips: flips(),
+  loadFlip(name) {
+    const f = actions.flips.find((x) => x.name === name);
+    if (!f || !f.steps) return store.set({ error: `no stored decomposition for ${name}` });
+    const spec = { kind: 'fourcube', dims: [] };
+    replaceMesh(buildFromSpec(spec), spec);
+    store.set({ flipQueue: { name, steps: f.steps, done: 0 } });
+  },
+  stepFlip() {
+    const s = store.get(), fq = s.flipQueue;
+    if (!fq || fq.done >= fq.steps.length) return;
+    actions.apply(fq.steps[fq.done]);
+    if (!store.get().error) store.set({ flipQueue: { ...fq, done: fq.done + 1 } });
+  },
   build(kind, dimsText) {
+    if (kind === 'fourcube') {
+      const spec = { kind, dims: [] };
+      return replaceMesh(buildFromSpec(spec), spec);
+    }
     const m = /^\s*(\d+)\s*x\s*(\d+)\s*x\s*(\d+)\s*$/.exec(dimsText);
     if (!m) return store.set({ error: `dimensions must look like 3x3x3, not '${dimsText}'` });
     const spec = { kind, dims: [Number(m[1]), Number(m[2]), Number(m[3])] };

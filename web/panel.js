@@ -17,6 +17,16 @@ export function createPanel(root, actions) {
     if (e.key === 'Enter') actions.apply($('#op-step').value.trim());
   });
   $('#op-undo').addEventListener('click', () => actions.undo());
+  $('#flip-load').addEventListener('click', () => actions.loadFlip($('#flip-name').value));
+  $('#flip-step').addEventListener('click', () => actions.stepFlip());
+  const flipSelect = $('#flip-name');
+  for (const f of actions.flips) {
+    const o = document.createElement('option');
+    o.value = f.name;
+    o.textContent = f.steps ? `${f.name} (${f.steps.length} steps)` : `${f.name} (none found)`;
+    o.disabled = !f.steps;
+    flipSelect.appendChild(o);
+  }
 
   function fillPicker(list, items, kind, selection, describe) {
     list.replaceChildren(
@@ -45,6 +55,11 @@ export function createPanel(root, actions) {
         $('#mesh-kind').value = state.meshSpec.kind;
         $('#mesh-dims').value = state.meshSpec.dims.join('x');
       }
+      const fq = state.flipQueue;
+      $('#flip-status').textContent = fq
+        ? `${fq.name}: ${fq.done} of ${fq.steps.length} steps applied` + (fq.done < fq.steps.length ? ` — next: ${fq.steps[fq.done]}` : ' — the after side')
+        : 'Load a flip to step through its atomic decomposition on the 4-cube boundary.';
+      $('#flip-step').disabled = !fq || fq.done >= fq.steps.length;
       $('#shrink').value = String(state.shrink);
       if (!state.mesh) return;
       $('#ops-log').replaceChildren(

@@ -5,10 +5,12 @@ export function parseHash(hash) {
   const out = { mesh: { kind: 'grid', dims: [3, 3, 3] }, selection: null, ops: [], errors: [] };
   const params = new URLSearchParams(hash.replace(/^#/, ''));
   const mesh = params.get('mesh');
-  if (mesh !== null) {
+  if (mesh === 'fourcube') {
+    out.mesh = { kind: 'fourcube', dims: [] };
+  } else if (mesh !== null) {
     const m = DIMS.exec(mesh);
     if (m) out.mesh = { kind: m[1], dims: [Number(m[2]), Number(m[3]), Number(m[4])] };
-    else out.errors.push(`ignored mesh=${mesh}: expected grid:AxBxC or ring:NxRxZ`);
+    else out.errors.push(`ignored mesh=${mesh}: expected grid:AxBxC, ring:NxRxZ or fourcube`);
   }
   const ops = params.get('ops');
   if (ops !== null) {
@@ -27,7 +29,8 @@ export function parseHash(hash) {
 
 export function formatHash({ mesh, selection, ops = [] }) {
   const params = new URLSearchParams();
-  if (mesh && mesh.kind !== 'file') params.set('mesh', `${mesh.kind}:${mesh.dims.join('x')}`);
+  if (mesh && mesh.kind === 'fourcube') params.set('mesh', 'fourcube');
+  else if (mesh && mesh.kind !== 'file') params.set('mesh', `${mesh.kind}:${mesh.dims.join('x')}`);
   if (ops.length) params.set('ops', ['v1', ...ops].join(';'));
   if (selection) params.set(selection.kind, String(selection.id));
   return '#' + params.toString();

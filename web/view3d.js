@@ -43,7 +43,7 @@ export function createView3d(container) {
     camera.updateProjectionMatrix();
   }
 
-  function rebuild(rb, highlight, color, meshKey) {
+  function rebuild(rb, highlight, color, meshKey, closed) {
     buffers = rb;
     for (const child of [...group.children]) {
       child.geometry.dispose();
@@ -58,7 +58,8 @@ export function createView3d(container) {
       const dest = highlight && highlight.has(rb.triangleHex[t]) ? on : off;
       dest.push(rb.indices[3 * t], rb.indices[3 * t + 1], rb.indices[3 * t + 2]);
     }
-    const faint = highlight && highlight.size > 0;
+    // Faint when something is highlighted, and for closed complexes (an outer cell hides the rest).
+    const faint = (highlight && highlight.size > 0) || closed;
     const rest = geometry.clone();
     rest.setIndex(off);
     group.add(
@@ -67,7 +68,7 @@ export function createView3d(container) {
         new THREE.MeshStandardMaterial({
           color: 0xb8c4d6,
           transparent: faint,
-          opacity: faint ? 0.18 : 1,
+          opacity: highlight && highlight.size > 0 ? 0.18 : faint ? 0.35 : 1,
           depthWrite: !faint,
           roughness: 0.8,
           side: THREE.DoubleSide,
@@ -101,7 +102,7 @@ export function createView3d(container) {
         highlight = new Set(kind === 'sheet' ? state.mesh.sheetHexes(id) : state.mesh.chordHexes(id));
         color = colorFor(kind === 'sheet' ? id : id + 1000);
       }
-      rebuild(rb, highlight, color, state.meshKey);
+      rebuild(rb, highlight, color, state.meshKey, state.mesh.counts.boundaryQuads === 0);
     },
     get triangleCount() {
       return buffers ? buffers.triangleHex.length : 0;

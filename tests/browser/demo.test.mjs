@@ -134,3 +134,22 @@ test('operations: apply a step, see the counts change, share it in the URL, undo
   assert.equal((await shownCounts()).hexes, 29);
   assert.match(await page.locator('#error').textContent(), /step 2 \(hexpush h0f0\)/);
 });
+
+test('flips: load the 4-cube and step through the 1-7 decomposition', async () => {
+  await open('');
+  await page.selectOption('#flip-name', '1-7');
+  await page.click('#flip-load');
+  assert.equal((await shownCounts()).hexes, 8);
+  assert.equal((await shownCounts()).boundaryQuads, 0);
+  assert.match(await page.locator('#flip-status').textContent(), /1-7: 0 of 2 steps applied — next: pillow h0f1/);
+  await page.click('#flip-step');
+  assert.equal((await shownCounts()).hexes, 10);
+  await page.click('#flip-step');
+  assert.equal((await shownCounts()).hexes, 14);  // 7 host cubes + the 7 that replace cube 0
+  assert.match(await page.locator('#flip-status').textContent(), /2 of 2 steps applied — the after side/);
+  assert.ok(await page.locator('#flip-step').isDisabled());
+  assert.match(decodeURIComponent(page.url()), /mesh=fourcube&ops=v1;pillow[+ ]h0f1;hexpush[+ ]h0f1/);
+  assert.ok(await page.locator('#flip-name option[value="4-4v"]').isDisabled());
+  await page.waitForTimeout(300);
+  await page.screenshot({ path: join(screenshotDir, 'demo-flip.png') });
+});

@@ -137,3 +137,20 @@ test('apply: operation steps from JS, with errors that leave the mesh unchanged'
   assert.equal(m.counts.hexes, 27);
   m.delete();
 });
+
+test('flips: the 4-cube and the stored decompositions replay in wasm', async () => {
+  const { flips } = await import('../../wasm/index.js');
+  const all = flips();
+  assert.deepEqual(all.map((f) => f.name), ['1-7', '2-6', '3-5c', '3-5e', '4-4m', '4-4v', '5-3c', '5-3e', '6-2', '7-1']);
+  assert.equal(all.find((f) => f.name === '4-4v').steps, null);
+  assert.deepEqual(all.find((f) => f.name === '1-7').steps, ['pillow h0f1', 'hexpush h0f1']);
+  for (const f of all.filter((x) => x.steps)) {
+    const m = Mesh.fourCube();
+    assert.equal(m.counts.hexes, 8);
+    for (const step of f.steps) m.apply(step);
+    m.validate();
+    // The after side replaces the before side: hex count changes by (after - before) facets.
+    assert.equal(m.counts.hexes, 8 - f.before.length + (8 - f.before.length), f.name);
+    m.delete();
+  }
+});
