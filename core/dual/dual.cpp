@@ -118,7 +118,6 @@ void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf) {
     cur = start;
     back = 2 * start.axis;
   }
-  Slot first = cur;
   int exitFace = oppositeFace(back);
   for (;;) {
     ch.slots.push_back(cur);
@@ -130,7 +129,6 @@ void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf) {
     if (chordOf[slotIndex(cur.hex, cur.axis)] == ch.id) break;
   }
   ch.closed = closed;
-  (void)first;
 }
 
 int mapAxisAcross(const Complex& cx, HexId h, int face, int axis) { return axisAcrossGluing(face, axis, cx.gluing(h, face)); }

@@ -156,8 +156,8 @@ OpResult flip(Complex& cx, const std::string& name, const std::vector<HexId>& he
     for (int c = 0; c < 8; ++c) v[size_t(c)] = toMesh.at(pattern.vertex(p, c));
     added.push_back(v);
   }
-  std::vector<VertexId> oldInterior;
-  for (auto [r, p] : m.vertex) (void)p, oldInterior.push_back(r);
+  std::vector<VertexId> oldInterior;  // the region's vertices: those no hex uses afterwards were removed
+  for (const auto& entry : m.vertex) oldInterior.push_back(entry.first);
   res.createdHexes = replaceHexes(cx, op, region, added);
   res.removedHexes = region;
   for (VertexId v : oldInterior)
@@ -344,7 +344,7 @@ OpResult tripleChordPush(Complex& cx, HexId hex, int corner, QuadSide q1, QuadSi
     glueByVertices(cx, X, face + 1, Y, face + 1);
   }
   std::vector<HexId> touched{X, Y};
-  for (QuadSide s : q) touched.push_back(s.hex), touched.push_back(cx.gluing(X, 0).hex);
+  for (int i = 0; i < 3; ++i) touched.insert(touched.end(), {inSide[size_t(i)].hex, outSide[size_t(i)].hex});
   for (auto [h, c] : all) touched.push_back(h);
   try {
     tx.commit(res, touched);

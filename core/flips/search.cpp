@@ -509,16 +509,11 @@ std::vector<std::string> replayInEmbedding(const SearchProblem& pb, const std::v
   Complex& ce = mesh;
   std::vector<std::string> applied;
   // Boundary (host) vertices keep shared names: problem ids on both sides; others get fresh ids.
-  std::map<VertexId, VertexId> idP, idE, toProblemHost;
+  std::map<VertexId, VertexId> idP, toProblemHost;
   for (HexId h : hostP)
     for (VertexId v : pb.start.hexVertices(h)) idP[v] = v;
-  for (HexId h : hostE)
-    for (VertexId v : where.mesh.hexVertices(h)) idE[v] = v;
   for (HexId h : where.before)  // the before side's vertices, on the mesh boundary or not
-    for (VertexId v : where.mesh.hexVertices(h)) {
-      idE[v] = v;
-      toProblemHost[v] = toProblem[v];
-    }
+    for (VertexId v : where.mesh.hexVertices(h)) toProblemHost[v] = toProblem[v];
   const VertexId fresh = std::max(pb.start.vertexCapacity(), where.mesh.vertexCapacity()) + 64;
   for (size_t k = 0; k < steps.size(); ++k) {
     CanonicalLabelling a = labelRegion(cp, hostP, idP, fresh);
@@ -581,7 +576,6 @@ std::vector<std::string> replayInEmbedding(const SearchProblem& pb, const std::v
     if (!why.empty()) throw Error(what + ": step " + std::to_string(k + 1) + " is not local: " + why);
     applied.push_back(t);
   }
-  (void)idE;
   return applied;
 }
 

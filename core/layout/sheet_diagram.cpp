@@ -416,8 +416,6 @@ SheetDiagram assemble(const Complex& cx, const Dual& dual, int sheet, const Surf
     std::vector<Point2> route;
     const int steps = 24;
     if (std::min(kin, kout) == 0) {  // inner arc a -> b, through the crossing
-      double tc = openAngle.count(0) ? 0 : 0;
-      (void)tc;
       double t1 = std::atan2(openedCrossing.y, openedCrossing.x);
       if (t1 < 0) t1 += 2 * kPi;
       for (int k = 0; k <= steps; ++k) {

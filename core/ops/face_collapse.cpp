@@ -89,6 +89,7 @@ OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
   if (owns != 1) reject(op, "quads " + sideName(sL) + " and " + sideName(sR) + " are not a collapsed face pair");
   const int cA = kFaceCorners[size_t(sL.face)][size_t(own)], cB = kFaceCorners[size_t(sL.face)][size_t((own + 1) & 3)];
   const int cD = kFaceCorners[size_t(sL.face)][size_t((own + 2) & 3)], cC = kFaceCorners[size_t(sL.face)][size_t((own + 3) & 3)];
+  // cC and cD are the vertices opposite the doubled edge (cA, cB): they split.
   std::vector<QuadSide> walls{sL, gL, sR, gR};
   struct Split {
     VertexId v;
@@ -129,7 +130,6 @@ OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
   cx.glue(gL.hex, gL.face, gR.hex, gR.face, o2);
   // The restored edge ab, named in sL's hex, and f = sL, g = gL's quad.
   r.inverse = "facecollapse " + edgeName({sL.hex, edgeBetween(cA, cB)}) + " " + sideName(sL) + " " + sideName(gL);
-  (void)cD;
   try {
     tx.commit(r, touched);
   } catch (const Error& err) {

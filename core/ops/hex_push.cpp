@@ -92,7 +92,7 @@ OpResult hexPull(Complex& cx, QuadSide r) {
   Gluing gB = cx.gluing(r);
   if (gB.boundary()) reject(op, "quad " + sideName(r) + " is on the boundary; hex pull needs an interior quad");
   const HexId A2 = r.hex, B2 = gB.hex;
-  const int fr = r.face, fb = gB.face;
+  const int fr = r.face;
   if (A2 == B2) reject(op, "quad " + sideName(r) + " joins " + hexName(A2) + " to itself");
   // The 4 hexes on A''s sides form the ring; each is glued to B' as well.
   std::vector<HexId> ring;
@@ -145,7 +145,6 @@ OpResult hexPull(Complex& cx, QuadSide r) {
     a[size_t(kFaceCorners[size_t(fr)][size_t(p)])] = Q[size_t(p)];
     b[size_t(cx.mappedCorner(A2, fr, kFaceCorners[size_t(fr)][size_t(p)]))] = Q[size_t(p)];
   }
-  (void)fb;
   Transaction tx(cx);
   std::vector<HexId> removed{A2, B2};
   removed.insert(removed.end(), ring.begin(), ring.end());
