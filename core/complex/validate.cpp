@@ -11,6 +11,16 @@ using namespace tables;
 namespace {
 std::string hf(HexId h, int f) { return "hex " + std::to_string(h) + " face " + std::to_string(f); }
 [[noreturn]] void fail(const std::string& msg) { throw Error("validate: " + msg); }
+// A connected vertex link with T triangles (hex corners), V vertices (edges at the vertex) and
+// `boundarySides` unglued sides must be a sphere (no boundary) or a disk.
+void checkLinkEuler(const std::string& name, int64_t linkV, int64_t linkT, int64_t boundarySides) {
+  int64_t linkE = (3 * linkT - boundarySides) / 2 + boundarySides;
+  int64_t chi = linkV - linkE + linkT;
+  if (boundarySides == 0 && chi != 2)
+    fail(name + " is interior but its link is not a sphere (Euler characteristic " + std::to_string(chi) + ")");
+  if (boundarySides > 0 && chi != 1)
+    fail(name + " is on the boundary but its link is not a disk (Euler characteristic " + std::to_string(chi) + ")");
+}
 }  // namespace
 
 void Complex::validate() const {
@@ -126,12 +136,7 @@ void Complex::validateLinks(const std::vector<int32_t>& edgeClass) const {
     std::sort(edges.begin(), edges.end());
     int64_t linkV = std::unique(edges.begin(), edges.end()) - edges.begin();
     int64_t linkT = int64_t(e - b);
-    int64_t linkE = (3 * linkT - boundarySides) / 2 + boundarySides;
-    int64_t chi = linkV - linkE + linkT;
-    if (boundarySides == 0 && chi != 2)
-      fail(name + " is interior but its link is not a sphere (Euler characteristic " + std::to_string(chi) + ")");
-    if (boundarySides > 0 && chi != 1)
-      fail(name + " is on the boundary but its link is not a disk (Euler characteristic " + std::to_string(chi) + ")");
+    checkLinkEuler(name, linkV, linkT, boundarySides);
   }
 }
 
@@ -191,12 +196,7 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
     std::sort(edges.begin(), edges.end());
     int64_t linkV = std::unique(edges.begin(), edges.end()) - edges.begin();
     int64_t linkT = int64_t(corners.size());
-    int64_t linkE = (3 * linkT - boundarySides) / 2 + boundarySides;
-    int64_t chi = linkV - linkE + linkT;
-    if (boundarySides == 0 && chi != 2)
-      fail(name + " is interior but its link is not a sphere (Euler characteristic " + std::to_string(chi) + ")");
-    if (boundarySides > 0 && chi != 1)
-      fail(name + " is on the boundary but its link is not a disk (Euler characteristic " + std::to_string(chi) + ")");
+    checkLinkEuler(name, linkV, linkT, boundarySides);
   }
 }
 

@@ -15,10 +15,7 @@ int sharedQuads(const Complex& cx, HexId a, HexId b) {
 
 OpResult hexPush(Complex& cx, QuadSide q) {
   const std::string op = "hexPush";
-  if (!cx.isHex(q.hex)) reject(op, hexName(q.hex) + " does not exist");
-  if (q.face < 0 || q.face > 5) reject(op, "local face " + std::to_string(q.face) + " is not 0..5");
-  Gluing gB = cx.gluing(q);
-  if (gB.boundary()) reject(op, "quad " + sideName(q) + " is on the boundary; hex push needs an interior quad");
+  Gluing gB = requireInteriorQuad(cx, q, op, "hex push needs an interior quad");
   const HexId A = q.hex, B = gB.hex;
   const int fA = q.face, fB = gB.face;
   if (A == B) reject(op, "quad " + sideName(q) + " joins " + hexName(A) + " to itself");
@@ -87,10 +84,7 @@ OpResult hexPush(Complex& cx, QuadSide q) {
 
 OpResult hexPull(Complex& cx, QuadSide r) {
   const std::string op = "hexPull";
-  if (!cx.isHex(r.hex)) reject(op, hexName(r.hex) + " does not exist");
-  if (r.face < 0 || r.face > 5) reject(op, "local face " + std::to_string(r.face) + " is not 0..5");
-  Gluing gB = cx.gluing(r);
-  if (gB.boundary()) reject(op, "quad " + sideName(r) + " is on the boundary; hex pull needs an interior quad");
+  Gluing gB = requireInteriorQuad(cx, r, op, "hex pull needs an interior quad");
   const HexId A2 = r.hex, B2 = gB.hex;
   const int fr = r.face;
   if (A2 == B2) reject(op, "quad " + sideName(r) + " joins " + hexName(A2) + " to itself");

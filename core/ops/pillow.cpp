@@ -7,10 +7,7 @@ using namespace ops;
 
 OpResult pillow(Complex& cx, QuadSide q) {
   const std::string op = "pillow";
-  if (!cx.isHex(q.hex)) reject(op, hexName(q.hex) + " does not exist");
-  if (q.face < 0 || q.face > 5) reject(op, "local face " + std::to_string(q.face) + " is not 0..5");
-  Gluing gB = cx.gluing(q);
-  if (gB.boundary()) reject(op, "quad " + sideName(q) + " is on the boundary; a pillow needs an interior quad");
+  Gluing gB = requireInteriorQuad(cx, q, op, "a pillow needs an interior quad");
   const HexId A = q.hex, B = gB.hex;
   const int fA = q.face, fB = gB.face;
 

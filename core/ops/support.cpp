@@ -26,6 +26,14 @@ int orientByVertices(const Complex& cx, HexId a, int fa, HexId b, int fb) {
   return o;
 }
 
+Gluing requireInteriorQuad(const Complex& cx, QuadSide q, const std::string& op, const std::string& needs) {
+  if (!cx.isHex(q.hex)) reject(op, hexName(q.hex) + " does not exist");
+  if (q.face < 0 || q.face > 5) reject(op, "local face " + std::to_string(q.face) + " is not 0..5");
+  Gluing g = cx.gluing(q);
+  if (g.boundary()) reject(op, "quad " + sideName(q) + " is on the boundary; " + needs);
+  return g;
+}
+
 void glueByVertices(Complex& cx, HexId a, int fa, HexId b, int fb) {
   int o = orientByVertices(cx, a, fa, b, fb);
   if (o < 0)

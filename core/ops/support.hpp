@@ -15,6 +15,10 @@ inline std::string hexName(HexId h) { return "hex " + std::to_string(h); }
 inline std::string sideName(QuadSide s) { return "h" + std::to_string(s.hex) + "f" + std::to_string(s.face); }
 inline std::string edgeName(EdgeRef e) { return "h" + std::to_string(e.hex) + "e" + std::to_string(e.edge); }
 
+// The quad's other side, after checking that the hex exists, the face is 0..5 and the quad is
+// interior; `needs` completes the boundary message ("a pillow needs an interior quad").
+Gluing requireInteriorQuad(const Complex& cx, QuadSide q, const std::string& op, const std::string& needs);
+
 // The orientation code that maps face fa of hex a onto face fb of hex b vertex for vertex, or -1.
 int orientByVertices(const Complex& cx, HexId a, int fa, HexId b, int fb);
 // Glues two boundary faces that carry the same 4 vertices in cyclic order (throws otherwise).
