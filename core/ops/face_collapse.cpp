@@ -1,4 +1,4 @@
-// Face open-collapse and its inverse (MOAB face_open_collapse; OPERATIONS.md 4b).
+// Face open-collapse and its inverse (TK03 §4.4; MOAB face_open_collapse).
 #include "ops/support.hpp"
 
 namespace hexdual {
