@@ -49,26 +49,13 @@ OpResult chordPull(Complex& cx, HexId x) {
   const OpKind kind = OpKind::ChordPull;
   const std::string op = opName(kind);
   if (!cx.isHex(x)) reject(op, hexName(x) + " does not exist");
-  HexId y = -1;
-  std::vector<int> freeX;
-  for (int f = 0; f < 6 && y < 0; ++f) {
-    Gluing g = cx.gluing(x, f);
-    if (g.boundary() || g.hex == x) continue;
-    std::vector<int> others;
-    for (int k = 0; k < 6; ++k)
-      if (cx.gluing(x, k).boundary() || cx.gluing(x, k).hex != g.hex) others.push_back(k);
-    if (others.size() == 2) {
-      y = g.hex;
-      freeX = others;
-    }
-  }
+  const HexId y = partnerSharing(cx, x, 4);
   if (y < 0) reject(op, hexName(x) + " is not half of a blind chord (no hex shares exactly 4 quads with it)");
+  const std::vector<int> freeX = facesNotGluedTo(cx, x, y);
   if (axisOfFace(freeX[0]) == axisOfFace(freeX[1]))
     reject(op, "the two quads of " + hexName(x) + " not shared with " + hexName(y) + " are opposite; they must share an edge");
   // y's free faces carry the same vertices as x's.
-  std::vector<int> freeY;
-  for (int k = 0; k < 6; ++k)
-    if (cx.gluing(y, k).boundary() || cx.gluing(y, k).hex != x) freeY.push_back(k);
+  std::vector<int> freeY = facesNotGluedTo(cx, y, x);
   if (freeY.size() != 2) reject(op, hexName(y) + " does not share exactly 4 quads with " + hexName(x));
   if (faceVertexSet(cx, y, freeY[0]) != faceVertexSet(cx, x, freeX[0])) std::swap(freeY[0], freeY[1]);
   for (int k = 0; k < 2; ++k) {

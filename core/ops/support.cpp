@@ -79,6 +79,21 @@ int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side) {
   return -1;
 }
 
+std::vector<int> facesNotGluedTo(const Complex& cx, HexId h, HexId other) {
+  std::vector<int> out;
+  for (int f = 0; f < 6; ++f)
+    if (cx.gluing(h, f).boundary() || cx.gluing(h, f).hex != other) out.push_back(f);
+  return out;
+}
+
+HexId partnerSharing(const Complex& cx, HexId x, int shared) {
+  for (int f = 0; f < 6; ++f) {
+    Gluing g = cx.gluing(x, f);
+    if (!g.boundary() && g.hex != x && int(facesNotGluedTo(cx, x, g.hex).size()) == 6 - shared) return g.hex;
+  }
+  return -1;
+}
+
 bool cornersOnBoundary(const Complex& cx, const std::vector<std::pair<HexId, int>>& corners) {
   for (auto [h, c] : corners)
     for (int f : facesOfCorner(c))

@@ -38,6 +38,12 @@ EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op);
 // Index k of quad k of the star that has `side` as one of its sides, or -1.
 int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side);
 
+// The faces of h not glued to `other`.
+std::vector<int> facesNotGluedTo(const Complex& cx, HexId h, HexId other);
+// The first hex (by x's faces) glued to x across exactly `shared` of x's faces, or -1: the other
+// half of a pillow (5) or of a blind chord (4).
+HexId partnerSharing(const Complex& cx, HexId x, int shared);
+
 // Whether any of these (hex, corner) incidences has a face on the boundary.
 bool cornersOnBoundary(const Complex& cx, const std::vector<std::pair<HexId, int>>& corners);
 // Whether the vertex at corner c of hex h lies on the boundary (walks its corners).
