@@ -22,7 +22,7 @@ bool segmentsMeet(Point2 a, Point2 b, Point2 c, Point2 d, Point2* at) {
   *at = {a.x + t * d1x, a.y + t * d1y};
   return true;
 }
-bool near(Point2 a, Point2 b) { return std::hypot(a.x - b.x, a.y - b.y) < 1e-7; }
+bool near(Point2 a, Point2 b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) < 1e-14; }  // closer than 1e-7
 bool insidePolygon(Point2 p, const std::vector<Point2>& poly) {
   bool in = false;
   for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
@@ -149,11 +149,15 @@ void checkDiagram(const SheetDiagram& d, size_t expectedSlots) {
   std::sort(seen.begin(), seen.end());
   if (std::adjacent_find(seen.begin(), seen.end()) != seen.end()) fail("a slot appears twice");
   if (seen.size() != expectedSlots) fail(std::to_string(seen.size()) + " crossings for " + std::to_string(expectedSlots) + " slots");
-  // Every crossing joins exactly two chord passes.
+  // Every crossing joins exactly two chord passes (failing at the third, so that a collapsed
+  // layout with thousands of points in one place fails fast).
   CrossingIndex index(d);
   std::vector<int> passes(d.crossings.size(), 0);
+  auto tooMany = [&](size_t k) { fail("crossing of hex " + std::to_string(d.crossings[k].hex) + " joins more than 2 chord passes"); };
   for (const auto& ch : d.chords)
-    for (Point2 p : ch.points) index.forEachNear(p, [&](size_t k) { ++passes[k]; });
+    for (Point2 p : ch.points) index.forEachNear(p, [&](size_t k) {
+        if (++passes[k] > 2) tooMany(k);
+      });
   for (size_t k = 0; k < d.crossings.size(); ++k)
     if (passes[k] != 2) fail("crossing of hex " + std::to_string(d.crossings[k].hex) + " joins " + std::to_string(passes[k]) + " chord passes, not 2");
   // Chords meet only at crossings (or where consecutive segments join).

@@ -7,6 +7,57 @@
 namespace hexdual {
 using namespace tables;
 
+namespace {
+
+// A sphere has no cut graph; it is opened along a tree of shortest paths through corners far from
+// each other (farthest-point samples), so that long arms of the sphere are slit along their
+// length: a harmonic map would squeeze an unslit tube exponentially. The polygon is the tree
+// walked round, each of its paths a seam a ... a⁻¹.
+void addSlitTree(const MidSurface& s, CutGraph& g) {
+  const int kSamples = 12;
+  std::vector<std::vector<std::pair<int, int>>> at(size_t(s.nCorner));  // corner -> (edge, other corner)
+  for (int m = 0; m < s.nMid; ++m) {
+    auto [a, b] = s.midEnds[size_t(m)];
+    if (a == b) continue;
+    at[size_t(a)].push_back({m, b});
+    at[size_t(b)].push_back({m, a});
+  }
+  std::vector<bool> onTree(size_t(s.nCorner), false);
+  std::vector<int> via(size_t(s.nCorner)), queue;
+  // Breadth first from the tree (or corner 0): returns the farthest corner, `via` its path back.
+  auto farthest = [&](bool fromTree) {
+    std::fill(via.begin(), via.end(), -2);
+    queue.clear();
+    for (int v = 0; v < s.nCorner; ++v)
+      if (fromTree ? bool(onTree[size_t(v)]) : v == 0) {
+        via[size_t(v)] = -1;
+        queue.push_back(v);
+      }
+    for (size_t q = 0; q < queue.size(); ++q)
+      for (auto [m, w] : at[size_t(queue[q])])
+        if (via[size_t(w)] == -2) {
+          via[size_t(w)] = m;
+          queue.push_back(w);
+        }
+    return queue.back();
+  };
+  onTree[size_t(farthest(false))] = true;
+  for (int k = 0; k < kSamples; ++k) {
+    int v = farthest(true);
+    if (via[size_t(v)] < 0) break;  // every corner is on the tree
+    while (via[size_t(v)] >= 0) {
+      int m = via[size_t(v)];
+      g.edge[size_t(m)] = true;
+      ++g.degree[size_t(s.midEnds[size_t(m)].first)];
+      ++g.degree[size_t(s.midEnds[size_t(m)].second)];
+      onTree[size_t(v)] = true;
+      v = s.midEnds[size_t(m)].first == v ? s.midEnds[size_t(m)].second : s.midEnds[size_t(m)].first;
+    }
+  }
+}
+
+}  // namespace
+
 CutGraph cutGraph(const MidSurface& s) {
   const size_t n = s.slots.size();
   CutGraph g;
@@ -59,6 +110,8 @@ CutGraph cutGraph(const MidSurface& s) {
       break;
     }
   }
+  bool empty = std::find(g.edge.begin(), g.edge.end(), true) == g.edge.end();
+  if (empty && s.nCorner > 1) addSlitTree(s, g);
   for (int m = 0; m < s.nMid; ++m) {
     if (!g.edge[size_t(m)] || s.midBoundary[size_t(m)]) continue;
     auto [i, f] = s.midSide[size_t(m)];

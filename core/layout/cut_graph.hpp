@@ -16,7 +16,8 @@ struct CutGraph {
   std::vector<int> degree;               // per corner: cut-graph edges at it (a loop counts twice)
 };
 
-// The cut graph of a connected surface. Empty (no edge) for a sphere; the boundary alone for a disk.
+// The cut graph of a connected surface: the boundary alone for a disk; for a sphere, a tree of
+// slits through corners far apart.
 CutGraph cutGraph(const MidSurface& s);
 
 // One side of the fundamental polygon: a run of the polygon's boundary edges between two branch

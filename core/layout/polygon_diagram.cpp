@@ -14,6 +14,7 @@ SheetDiagram layoutPolygon(const Dual& dual, int sheet, const MidSurface& s) {
   const int64_t euler = eulerCharacteristic(s);
   CutGraph g = cutGraph(s);
   MidSurface open = cutOpen(s, g.cut);
+  open.degenerate = true;  // solve on the refined mesh: doublets (two quads on three corners) come apart
   std::vector<BoundaryEdge> edges = boundaryEdges(open);
   std::vector<std::vector<int>> loops;
   if (!open.orientable || !chainLoops(edges, loops) || loops.size() != 1 || loops[0].size() < 3 || eulerCharacteristic(open) != 1)

@@ -24,9 +24,9 @@ SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
       why = std::string("the whole-sheet layout is not planar (") + e.what() + ")";
     }
   }
-  // Genus > 0, non-orientable, or an annulus whose two-circle layout is not planar: cut open into
+  // Genus > 0, non-orientable, or an annulus or sphere whose layout is not planar: cut open into
   // a fundamental polygon, whose boundary is one convex loop (Tutte's theorem).
-  if (sh.topology != "sphere" && sh.topology != "disk") {
+  if (sh.topology != "disk") {
     try {
       SheetDiagram d = layoutPolygon(dual, sheet, s);
       checkDiagram(d, sh.slots.size());
