@@ -29,4 +29,7 @@ fig chordpush-pushed "$T/chordpush.hxd" 12 --local 125,126 --rings 1   # Fig. 2:
 fig chordpush-blind "$T/chordpush.hxd" 8 --local 125,126 --rings 1     # Fig. 2: the blind chord on e's sheet
 fig hexpush-sheet "$T/hexpush.hxd" 12 --local 125,126,127,128 --rings 1  # Fig. 4: the new closed chord of 4
 fig flip17-sphere "$T/flip17.hxd" 15                           # Fig. 8: the traditional pillow's sphere
+fig torus-polygon docs/examples/torus-shell.hxd 0              # a torus sheet cut open: a b a^-1 b^-1
+fig klein-polygon docs/examples/klein-shell.hxd 0              # a Klein-bottle sheet: three seams, two twisted
+fig mobius-polygon docs/examples/twisted-ring.hxd 0            # a Moebius-band sheet: a boundary a boundary
 rm -rf "$T"
