@@ -42,4 +42,7 @@ fig op-ringcollapse-after "$T/ringcollapse.hxd" 3                  # the same an
 fig op-facecollapse-before-a "$T/g4.hxd" 6                         # two disks through f and g ...
 fig op-facecollapse-before-b "$T/g4.hxd" 7
 fig op-facecollapse-after "$T/facecollapse.hxd" 6                  # ... merge into one annulus
+fig torus-polygon docs/examples/torus-shell.hxd 0              # a torus sheet cut open: a b a^-1 b^-1
+fig klein-polygon docs/examples/klein-shell.hxd 0              # a Klein-bottle sheet: three seams, two twisted
+fig mobius-polygon docs/examples/twisted-ring.hxd 0            # a Moebius-band sheet: a boundary a boundary
 rm -rf "$T"
