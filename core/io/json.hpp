@@ -4,6 +4,7 @@
 
 #include "complex/complex.hpp"
 #include "dual/dual.hpp"
+#include "io/io.hpp"
 
 namespace hexdual::io {
 
@@ -57,8 +58,9 @@ class JsonWriter {
   bool first_ = true, afterKey_ = false;
 };
 
-// {"vertices":..,"edges":..,"quads":..,"hexes":..,"boundaryQuads":..,"sheets":[..],"chords":[..]}
-std::string infoJson(const Complex& cx, const Dual& dual);
+// {"vertices":..,"edges":..,"quads":..,"hexes":..,"boundaryQuads":..,"sheets":[..],"chords":[..]},
+// and "file": {...} last (what the reader found, see ReadReport) when a report is given.
+std::string infoJson(const Complex& cx, const Dual& dual, const ReadReport* file = nullptr);
 // The same facts as readable text.
 std::string infoText(const Complex& cx, const Dual& dual);
 

@@ -1,5 +1,7 @@
 #include "ops/support.hpp"
 
+#include "complex/manifold.hpp"
+
 namespace hexdual::ops {
 using namespace tables;
 
@@ -127,6 +129,7 @@ ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const st
 }
 
 void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) {
+  requireManifoldVertices(cx_, touched, r.op);
 #ifdef HEXDUAL_CHECK_INVARIANTS
   (void)touched;
   cx_.validate();
