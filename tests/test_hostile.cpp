@@ -108,3 +108,11 @@ TEST_CASE("hostile: writes go through a temporary file, so a failed write loses 
   CHECK(miss.status == 1);
   CHECK(oneLine(miss.out));
 }
+
+TEST_CASE("hostile: fuzzer findings stay fixed") {
+  // A VTK header line ending right after "Version" once threw std::out_of_range.
+  CHECK(contains(errorOf([] {
+                   io::readVtk("# vtk DataFile Version\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 0 double\n", "v.vtk");
+                 }),
+                 "v.vtk"));
+}

@@ -264,7 +264,7 @@ Complex VtkReader::read(const ReadOptions& opt, ReadReport* rep) {
   auto header = lx_.restOfLine();
   if (header.substr(0, 5) != "# vtk") lx_.fail("not a VTK legacy file (first line must start with '# vtk')");
   std::string version = "legacy";
-  if (auto p = header.find("Version"); p != std::string_view::npos) version = std::string(header.substr(p + 8, 6));
+  if (auto p = header.find("Version "); p != std::string_view::npos) version = std::string(header.substr(p + 8, 6));
   while (!version.empty() && (version.back() == ' ' || version.back() == '\r')) version.pop_back();
   lx_.restOfLine();  // title
   auto mode = lx_.token();
