@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 MIN_NODE_MAJOR=18
-APT_PACKAGES=(g++ make cmake emscripten doctest-dev libeigen3-dev chromium ca-certificates)
+APT_PACKAGES=(g++ make cmake emscripten doctest-dev libeigen3-dev chromium ca-certificates zlib1g-dev clang-14 libclang-rt-14-dev)
 
 missing=()
 for p in "${APT_PACKAGES[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done

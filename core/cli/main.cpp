@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "complex/builders.hpp"
+#include "complex/manifold.hpp"
 #include "dual/dual.hpp"
 #include "dual/dual_tracker.hpp"
 #include "flips/decompositions.hpp"
@@ -31,9 +32,9 @@ const char* kUsage =
     "usage:\n"
     "  hexdual grid AxBxC -o FILE [--binary]     write a structured grid\n"
     "  hexdual ring NxRxZ -o FILE [--binary]     write an O-grid: N around, R radial, Z axial\n"
-    "  hexdual info FILE [--json]                counts, sheets and chords\n"
-    "  hexdual validate FILE                     check every invariant\n"
-    "  hexdual convert IN OUT [--binary]         convert between .vtk, .mesh and .hxd\n"
+    "  hexdual info FILE [--json]                counts, sheets and chords, and what the file held\n"
+    "  hexdual validate FILE                     check every invariant; list non-manifold vertices\n"
+    "  hexdual convert IN OUT [--binary]         read any supported format, write .vtk, .mesh or .hxd\n"
     "  hexdual apply FILE --ops LOG -o OUT [--json]\n"
     "                                            apply an operation log (text, URL form, or @file)\n"
     "  hexdual candidates FILE OP                steps of operation OP that apply to FILE\n"
@@ -44,12 +45,14 @@ const char* kUsage =
     "                                            apply a flip to the named hexes\n"
     "  hexdual flip verify --all [--json]        check every stored decomposition in host meshes\n"
     "  hexdual flip search NAME --max-depth D [--max-seconds S] [--max-states N] [--ops a,b]\n"
-    "                                            search atomic sequences for a flip\n";
+    "                                            search atomic sequences for a flip\n"
+    "Reading (every command): .vtk (legacy 2.0-5.1), .vtu, .msh (2.2, 4.1), .mesh, .meshb, .hxd, any of\n"
+    "them gzipped; --hexes-only reads the hexahedra of a file that also has tets, prisms or pyramids.\n";
 
 struct Args {
   std::vector<std::string> positional;
   std::string output, ops, at, local, jsonDir, svgDir;
-  bool json = false, binary = false, viaAtomic = false, all = false;
+  bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false;
   int sheet = -1, rings = 2;
   int maxDepth = 4;
   double maxSeconds = 60;
@@ -100,6 +103,8 @@ Args parseArgs(int argc, char** argv, int from) {
       a.json = true;
     } else if (s == "--binary") {
       a.binary = true;
+    } else if (s == "--hexes-only") {
+      a.hexesOnly = true;
     } else if (s.size() > 1 && s[0] == '-') {
       throw Error("unknown option '" + s + "'");
     } else {
@@ -109,13 +114,28 @@ Args parseArgs(int argc, char** argv, int from) {
   return a;
 }
 
+// "AxBxC" with each part a decimal 1..2^26 (overflow-safe: digits are counted before converting).
 std::array<int, 3> parseDims(const std::string& s) {
   std::array<int, 3> d{};
-  int n = 0;
-  char tail = 0;
-  if (std::sscanf(s.c_str(), "%dx%dx%d%c%n", &d[0], &d[1], &d[2], &tail, &n) != 3)
-    throw Error("dimensions must look like 3x3x3, not '" + s + "'");
+  size_t pos = 0;
+  for (int k = 0; k < 3; ++k) {
+    size_t b = pos;
+    while (pos < s.size() && s[pos] >= '0' && s[pos] <= '9') ++pos;
+    bool sep = k < 2 ? pos < s.size() && s[pos] == 'x' : pos == s.size();
+    if (pos == b || !sep) throw Error("dimensions must look like 3x3x3, not '" + s.substr(0, 40) + "'");
+    std::string part = s.substr(b, pos - b);
+    if (part.size() > 9 || std::stol(part) > (1L << 26) || std::stol(part) < 1)
+      throw Error("dimension '" + part.substr(0, 40) + "' is out of range (1.." + std::to_string(1L << 26) + ")");
+    d[size_t(k)] = int(std::stol(part));
+    ++pos;
+  }
   return d;
+}
+
+Complex readInput(const Args& a, const std::string& path, io::ReadReport* rep = nullptr) {
+  io::ReadOptions opt;
+  opt.hexesOnly = a.hexesOnly;
+  return io::readFile(path, opt, rep);
 }
 
 void need(const Args& a, size_t n, const char* what) {
@@ -126,11 +146,7 @@ void need(const Args& a, size_t n, const char* what) {
 OpLog readLog(const std::string& arg) {
   std::string text = arg;
   if (!text.empty() && text[0] == '@') {
-    std::ifstream in(text.substr(1));
-    if (!in) throw Error(text.substr(1) + ": cannot open file");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    text = ss.str();
+    text = io::readBytes(text.substr(1), size_t(1) << 24);
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
   }
   if (!text.empty() && text[0] >= '0' && text[0] <= '9') return decodeOpLogUrl(text);
@@ -141,7 +157,7 @@ int runApply(const Args& a) {
   need(a, 1, "one input file");
   if (a.ops.empty()) throw Error("apply needs --ops LOG");
   if (a.output.empty()) throw Error("apply needs -o OUT");
-  Complex cx = io::readFile(a.positional[0]);
+  Complex cx = readInput(a, a.positional[0]);
   OpLog log = readLog(a.ops);
   DualTracker tracker(cx);
   std::vector<StepReport> reports;
@@ -258,7 +274,7 @@ int runFlip(const Args& a) {
   if (a.at.empty()) throw Error("flip needs --at H1,H2,...");
   if (a.output.empty()) throw Error("flip needs -o OUT");
   std::vector<HexId> hexes = parseHexList(a.at, "--at");
-  Complex cx = io::readFile(a.positional[1]);
+  Complex cx = readInput(a, a.positional[1]);
   const std::string name = a.positional[0];
   flipClass(name);
   if (a.viaAtomic) {
@@ -278,7 +294,7 @@ int runSheets(const Args& a) {
   need(a, 1, "one input file");
   if (a.jsonDir.empty() && a.svgDir.empty()) throw Error("sheets needs --json OUTDIR or --svg OUTDIR");
   if (a.sheet < 0 && !a.all) throw Error("sheets needs --sheet ID or --all");
-  Complex cx = io::readFile(a.positional[0]);
+  Complex cx = readInput(a, a.positional[0]);
   Dual dual = extractDual(cx);
   std::vector<HexId> around = parseHexList(a.local, "--local");
   std::vector<int> ids;
@@ -329,21 +345,30 @@ int run(int argc, char** argv) {
   }
   if (cmd == "info") {
     need(a, 1, "one input file");
-    Complex cx = io::readFile(a.positional[0]);
+    io::ReadReport rep;
+    Complex cx = readInput(a, a.positional[0], &rep);
     Dual dual = extractDual(cx);
-    std::cout << (a.json ? io::infoJson(cx, dual) + "\n" : io::infoText(cx, dual));
+    std::cout << (a.json ? io::infoJson(cx, dual, &rep) + "\n" : io::reportText(rep) + io::infoText(cx, dual));
     return 0;
   }
   if (cmd == "validate") {
     need(a, 1, "one input file");
-    Complex cx = io::readFile(a.positional[0]);  // readers validate
+    Complex cx = readInput(a, a.positional[0]);  // readers validate
     cx.validate();
+    auto issues = vertexLinkIssues(cx);
+    for (const LinkIssue& li : issues) std::cout << a.positional[0] << ": " << describeLinkIssue(cx, li) << "\n";
+    if (!issues.empty()) {
+      std::cout << a.positional[0] << ": " << issues.size()
+                << " non-manifold vertices; otherwise valid (" << cx.numHexes()
+                << " hexes); operations refuse to touch these vertices\n";
+      return 1;
+    }
     std::cout << a.positional[0] << ": valid (" << cx.numHexes() << " hexes)\n";
     return 0;
   }
   if (cmd == "convert") {
     need(a, 2, "an input and an output file");
-    Complex cx = io::readFile(a.positional[0]);
+    Complex cx = readInput(a, a.positional[0]);
     io::writeFile(cx, a.positional[1], a.binary);
     return 0;
   }
@@ -352,7 +377,7 @@ int run(int argc, char** argv) {
   if (cmd == "sheets") return runSheets(a);
   if (cmd == "candidates") {
     need(a, 2, "an input file and an operation name");
-    Complex cx = io::readFile(a.positional[0]);
+    Complex cx = readInput(a, a.positional[0]);
     for (const OpStep& step : candidates(cx, opNamed(a.positional[1], "candidates"))) std::cout << formatOpStep(step) << "\n";
     return 0;
   }

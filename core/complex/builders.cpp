@@ -1,5 +1,7 @@
 #include "complex/builders.hpp"
 
+#include "complex/manifold.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -39,6 +41,7 @@ Complex makeGrid(int a, int b, int c) {
 
 Complex makeRing(int around, int radial, int axial) {
   if (around < 3 || radial < 1 || axial < 1) throw Error("ring: needs at least 3 around and 1 radial and axial layer");
+  if (int64_t(around) * radial * axial > (int64_t(1) << 26)) throw Error("ring: more than 2^26 hexes");
   std::vector<Vec3> pts;
   auto vid = [&](int t, int s, int k) { return VertexId((t % around) + around * (s + (radial + 1) * k)); };
   const double pi = std::acos(-1.0), r0 = 1.0 + 0.25 * around / pi;
@@ -61,6 +64,7 @@ Complex makeRing(int around, int radial, int axial) {
 
 Complex makeTwistedRing(int around) {
   if (around < 3) throw Error("twisted ring: needs at least 3 hexes around");
+  if (around > (1 << 26)) throw Error("twisted ring: more than 2^26 hexes");
   const double pi = std::acos(-1.0), r0 = 2.0 + 0.3 * around / pi;
   std::vector<Vec3> pts;
   // Cross-section corner (s, k) of layer t, turned by a quarter turn over the whole ring.
@@ -127,7 +131,8 @@ std::string quadName(const std::array<VertexId, 4>& k) {
 }
 }  // namespace
 
-Complex fromConnectivity(const std::vector<Vec3>& points, const std::vector<std::array<VertexId, 8>>& hexes) {
+Complex fromConnectivity(const std::vector<Vec3>& points, const std::vector<std::array<VertexId, 8>>& hexes,
+                         bool allowNonManifoldVertices) {
   Complex cx;
   cx.reserve(hexes.size() + hexes.size() / 8 + 64, points.size() + points.size() / 8 + 64);
   for (Vec3 p : points) {
@@ -183,6 +188,11 @@ Complex fromConnectivity(const std::vector<Vec3>& points, const std::vector<std:
       cx.glue(A.hex, A.face, B.hex, B.face, orient);
     }
     i = j;
+  }
+  if (allowNonManifoldVertices) {
+    std::vector<VertexId> bad;
+    for (const LinkIssue& li : vertexLinkIssues(cx)) bad.push_back(li.vertex);
+    cx.setNonManifoldVertices(std::move(bad));
   }
   cx.validate();
   return cx;

@@ -26,7 +26,10 @@ Complex makeTorusShell(int around, int tube, int layers, bool klein = false);
 // Glues hexes given as 8 vertex ids each (VTK order) wherever two hexes share a quad's 4 vertices
 // in the same cycle. Throws Error when a quad would be shared by three or more hexes, when two
 // hexes share 4 vertices in different cyclic orders, or when a hex repeats a vertex.
-// The result is validated (manifold vertex links, Euler characteristic).
-Complex fromConnectivity(const std::vector<Vec3>& points, const std::vector<std::array<VertexId, 8>>& hexes);
+// The result is validated (manifold vertex links, Euler characteristic). With
+// allowNonManifoldVertices, vertices whose link is not a sphere or disk are accepted and recorded
+// (Complex::nonManifoldVertices) instead of refused.
+Complex fromConnectivity(const std::vector<Vec3>& points, const std::vector<std::array<VertexId, 8>>& hexes,
+                         bool allowNonManifoldVertices = false);
 
 }  // namespace hexdual

@@ -209,6 +209,10 @@ void Complex::compact() {
   alive_.assign(nh, 1);
   pos_ = std::move(pos);
   refs_ = std::move(refs);
+  std::vector<VertexId> nonManifold;
+  for (VertexId v : nonManifold_)
+    if (newVert[v] >= 0) nonManifold.push_back(newVert[v]);
+  nonManifold_ = std::move(nonManifold);
   ++revision_;
 }
 

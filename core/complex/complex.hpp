@@ -174,6 +174,10 @@ class Complex {
 
   // Checks every invariant; throws Error naming the first violation.
   void validate() const;
+  // Vertices whose link is neither a sphere nor a disk, accepted from an input file (ascending):
+  // validate() allows exactly these, and operations refuse to touch them.
+  const std::vector<VertexId>& nonManifoldVertices() const { return nonManifold_; }
+  void setNonManifoldVertices(std::vector<VertexId> v) { nonManifold_ = std::move(v); }
   // Checks the invariants that an edit of these hexes can break: their gluings, their 8 distinct
   // vertices, and the links of their vertices (found by walking, so this is local).
   void validateAround(const std::vector<HexId>& hexes) const;
@@ -213,6 +217,7 @@ class Complex {
   std::vector<uint8_t> alive_;
   std::vector<Vec3> pos_;
   std::vector<int32_t> refs_;  // number of (hex, corner) incidences per vertex
+  std::vector<VertexId> nonManifold_;
   using JournalEntry = Edit;
   void revert(const std::vector<Edit>& edits);
   void record(JournalEntry e) {

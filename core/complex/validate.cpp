@@ -1,8 +1,10 @@
 // Complex::validate(): every invariant of the complex (docs/model.md), with a message naming the first violation.
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "complex/complex.hpp"
+#include "complex/manifold.hpp"
 #include "complex/union_find.hpp"
 
 namespace hexdual {
@@ -11,16 +13,6 @@ using namespace tables;
 namespace {
 std::string hf(HexId h, int f) { return "hex " + std::to_string(h) + " face " + std::to_string(f); }
 [[noreturn]] void fail(const std::string& msg) { throw Error("validate: " + msg); }
-// A connected vertex link with T triangles (hex corners), V vertices (edges at the vertex) and
-// `boundarySides` unglued sides must be a sphere (no boundary) or a disk.
-void checkLinkEuler(const std::string& name, int64_t linkV, int64_t linkT, int64_t boundarySides) {
-  int64_t linkE = (3 * linkT - boundarySides) / 2 + boundarySides;
-  int64_t chi = linkV - linkE + linkT;
-  if (boundarySides == 0 && chi != 2)
-    fail(name + " is interior but its link is not a sphere (Euler characteristic " + std::to_string(chi) + ")");
-  if (boundarySides > 0 && chi != 1)
-    fail(name + " is on the boundary but its link is not a disk (Euler characteristic " + std::to_string(chi) + ")");
-}
 }  // namespace
 
 void Complex::validate() const {
@@ -90,25 +82,41 @@ void Complex::validate() const {
   Counts c = counts();
   int64_t chi = c.vertices - c.edges + c.quads - c.hexes;
   int64_t chiB = c.boundaryVertices - c.boundaryEdges + c.boundaryQuads;
-  if (2 * chi != chiB)
+  if (nonManifold_.empty() && 2 * chi != chiB)
     fail("Euler characteristic V-E+F-H = " + std::to_string(chi) + " but the boundary's is " + std::to_string(chiB) +
          " (expected twice)");
 }
 
-// Every vertex link is a 2-sphere (interior vertex) or a disk (boundary vertex).
-void Complex::validateLinks(const std::vector<int32_t>& edgeClass) const {
+namespace {
+// Why a connected vertex link with T triangles (hex corners), V vertices (edges at the vertex) and
+// `boundarySides` unglued sides is not a sphere (no boundary) or a disk; empty when it is.
+std::string linkEulerProblem(int64_t linkV, int64_t linkT, int64_t boundarySides) {
+  int64_t linkE = (3 * linkT - boundarySides) / 2 + boundarySides;
+  int64_t chi = linkV - linkE + linkT;
+  if (boundarySides == 0 && chi != 2)
+    return "is interior but its link is not a sphere (Euler characteristic " + std::to_string(chi) + ")";
+  if (boundarySides > 0 && chi != 1)
+    return "is on the boundary but its link is not a disk (Euler characteristic " + std::to_string(chi) + ")";
+  return {};
+}
+
+// Every vertex whose link is not a sphere or a disk; the link's triangles are the vertex's hex
+// corners, joined across glued faces.
+std::vector<LinkIssue> linkIssues(const Complex& cx, const std::vector<int32_t>& edgeClass) {
+  const size_t nv = size_t(cx.vertexCapacity());
   // Group (hex, corner) incidences by vertex (counting sort).
-  std::vector<int32_t> start(pos_.size() + 1, 0);
-  for (HexId h : hexes())
-    for (VertexId v : verts_[h]) ++start[size_t(v) + 1];
+  std::vector<int32_t> start(nv + 1, 0);
+  for (HexId h : cx.hexes())
+    for (VertexId v : cx.hexVertices(h)) ++start[size_t(v) + 1];
   for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
   std::vector<std::pair<HexId, int>> inc(size_t(start.back()));
   std::vector<int32_t> fill(start.begin(), start.end() - 1);
-  for (HexId h : hexes())
-    for (int c = 0; c < 8; ++c) inc[size_t(fill[size_t(verts_[h][c])]++)] = {h, c};
+  for (HexId h : cx.hexes())
+    for (int c = 0; c < 8; ++c) inc[size_t(fill[size_t(cx.vertex(h, c))]++)] = {h, c};
 
+  std::vector<LinkIssue> issues;
   std::vector<int32_t> edges;
-  for (size_t v = 0; v < pos_.size(); ++v) {
+  for (size_t v = 0; v < nv; ++v) {
     size_t b = size_t(start[v]), e = size_t(start[v + 1]);
     if (b == e) continue;
     auto first = inc.begin() + long(b), last = inc.begin() + long(e);  // sorted by (hex, corner)
@@ -118,12 +126,12 @@ void Complex::validateLinks(const std::vector<int32_t>& edgeClass) const {
     for (size_t i = b; i < e; ++i) {
       auto [h, c] = inc[i];
       for (int f : facesOfCorner(c)) {
-        Gluing g = gluing(h, f);
+        Gluing g = cx.gluing(h, f);
         if (g.boundary()) {
           ++boundarySides;
           continue;
         }
-        std::pair<HexId, int> n{g.hex, mappedCorner(h, f, c)};
+        std::pair<HexId, int> n{g.hex, cx.mappedCorner(h, f, c)};
         auto it = std::lower_bound(first, last, n);
         uf.unite(i - b, size_t(it - first));
       }
@@ -131,13 +139,60 @@ void Complex::validateLinks(const std::vector<int32_t>& edgeClass) const {
     }
     size_t components = 0;
     for (size_t i = 0; i < e - b; ++i) components += uf.find(i) == i;
-    std::string name = "vertex " + std::to_string(v);
-    if (components != 1) fail(name + " is non-manifold: its link has " + std::to_string(components) + " components");
+    if (components != 1) {
+      issues.push_back({VertexId(v), "is non-manifold: its link has " + std::to_string(components) + " components"});
+      continue;
+    }
     std::sort(edges.begin(), edges.end());
     int64_t linkV = std::unique(edges.begin(), edges.end()) - edges.begin();
-    int64_t linkT = int64_t(e - b);
-    checkLinkEuler(name, linkV, linkT, boundarySides);
+    std::string why = linkEulerProblem(linkV, int64_t(e - b), boundarySides);
+    if (!why.empty()) issues.push_back({VertexId(v), why});
   }
+  return issues;
+}
+
+bool tolerated(const std::vector<VertexId>& nonManifold, VertexId v) {
+  return std::binary_search(nonManifold.begin(), nonManifold.end(), v);
+}
+}  // namespace
+
+std::vector<LinkIssue> vertexLinkIssues(const Complex& cx) {
+  int32_t n = 0;
+  return linkIssues(cx, cx.edgeClasses(&n));
+}
+
+std::string describeLinkIssue(const Complex& cx, const LinkIssue& issue) {
+  VertexId v = issue.vertex;
+  Vec3 p = cx.position(v);
+  char buf[160];
+  std::snprintf(buf, sizeof buf, " at (%.9g, %.9g, %.9g)", p.x, p.y, p.z);
+  std::string hexes;
+  for (HexId h : cx.hexes())
+    for (VertexId w : cx.hexVertices(h))
+      if (w == v) hexes += (hexes.empty() ? "" : ", ") + std::to_string(h);
+  return "vertex " + std::to_string(v) + buf + " in hexes " + hexes + " " + issue.why;
+}
+
+void requireManifoldVertices(const Complex& cx, const std::vector<HexId>& hexes, const std::string& op) {
+  const auto& bad = cx.nonManifoldVertices();
+  if (bad.empty()) return;
+  for (HexId h : hexes)
+    if (cx.isHex(h))
+      for (VertexId v : cx.hexVertices(h))
+        if (tolerated(bad, v)) {
+          Vec3 p = cx.position(v);
+          char buf[160];
+          std::snprintf(buf, sizeof buf, " at (%.9g, %.9g, %.9g)", p.x, p.y, p.z);
+          throw Error((op.empty() ? std::string("operation") : op) + ": touches non-manifold vertex " + std::to_string(v) + buf +
+                      " (its link is not a sphere or a disk; see hexdual validate)");
+        }
+}
+
+// Every vertex link is a 2-sphere (interior vertex) or a disk (boundary vertex), except the
+// non-manifold vertices accepted from the input.
+void Complex::validateLinks(const std::vector<int32_t>& edgeClass) const {
+  for (const LinkIssue& li : linkIssues(*this, edgeClass))
+    if (!tolerated(nonManifold_, li.vertex)) fail("vertex " + std::to_string(li.vertex) + " " + li.why);
 }
 
 }  // namespace hexdual
@@ -174,6 +229,7 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
   verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
   // Vertex links, found by walking from one corner: connected, and a sphere or a disk.
   for (VertexId v : verts) {
+    if (tolerated(nonManifold_, v)) continue;
     HexId h0 = -1;
     int c0 = -1;
     for (HexId h : hexList)
@@ -195,8 +251,8 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
     }
     std::sort(edges.begin(), edges.end());
     int64_t linkV = std::unique(edges.begin(), edges.end()) - edges.begin();
-    int64_t linkT = int64_t(corners.size());
-    checkLinkEuler(name, linkV, linkT, boundarySides);
+    std::string why = linkEulerProblem(linkV, int64_t(corners.size()), boundarySides);
+    if (!why.empty()) fail(name + " " + why);
   }
 }
 

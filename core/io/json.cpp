@@ -32,7 +32,7 @@ std::string JsonWriter::quote(const std::string& s) {
   return r + "\"";
 }
 
-std::string infoJson(const Complex& cx, const Dual& dual) {
+std::string infoJson(const Complex& cx, const Dual& dual, const ReadReport* file) {
   Counts c = cx.counts();
   JsonWriter w;
   w.beginObject();
@@ -51,7 +51,9 @@ std::string infoJson(const Complex& cx, const Dual& dual) {
     w.beginObject().key("id").value(ch.id).key("hexes").value(int64_t(ch.slots.size()));
     w.key("closed").value(ch.closed).key("selfIntersecting").value(ch.selfIntersecting).endObject();
   }
-  w.endArray().endObject();
+  w.endArray();
+  if (file) w.key("file").raw(reportJson(*file));
+  w.endObject();
   return w.str();
 }
 

@@ -8,6 +8,7 @@
 #include "dual/dual.hpp"
 #include "flips/decompositions.hpp"
 #include "ops/report.hpp"
+#include "io/io.hpp"
 
 namespace hexdual::io {
 
@@ -64,8 +65,9 @@ class JsonWriter {
 // "[1,2,3]": ids as a JSON array (also the text reports' spelling).
 std::string idList(const std::vector<int32_t>& ids);
 
-// {"vertices":..,"edges":..,"quads":..,"hexes":..,"boundaryQuads":..,"sheets":[..],"chords":[..]}
-std::string infoJson(const Complex& cx, const Dual& dual);
+// {"vertices":..,"edges":..,"quads":..,"hexes":..,"boundaryQuads":..,"sheets":[..],"chords":[..]},
+// and "file": {...} last (what the reader found, see ReadReport) when a report is given.
+std::string infoJson(const Complex& cx, const Dual& dual, const ReadReport* file = nullptr);
 // The same facts as readable text.
 std::string infoText(const Complex& cx, const Dual& dual);
 

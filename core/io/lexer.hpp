@@ -15,6 +15,13 @@ class Lexer {
  public:
   Lexer(std::string_view data, std::string name) : data_(data), name_(std::move(name)) {}
 
+  // At most 40 bytes of a token, for error messages (a garbage token may be megabytes long).
+  static std::string excerpt(std::string_view t) {
+    std::string s(t.substr(0, 40));
+    for (char& c : s)
+      if ((unsigned char)c < 32 || (unsigned char)c > 126) c = '?';
+    return s + (t.size() > 40 ? "..." : "");
+  }
   [[noreturn]] void fail(const std::string& why) const {
     throw Error(name_ + ":" + std::to_string(line_) + ": " + why);
   }
@@ -39,7 +46,7 @@ class Lexer {
   }
   void expectKeyword(std::string_view kw) {
     auto t = token();
-    if (!equalsIgnoreCase(t, kw)) fail("expected '" + std::string(kw) + "' but found '" + std::string(t) + "'");
+    if (!equalsIgnoreCase(t, kw)) fail("expected '" + std::string(kw) + "' but found '" + excerpt(t) + "'");
   }
   int64_t integer(const char* what) {
     auto t = expectToken(what);
@@ -47,15 +54,15 @@ class Lexer {
     size_t i = 0;
     bool neg = false;
     if (i < t.size() && (t[i] == '-' || t[i] == '+')) neg = t[i++] == '-';
-    if (i == t.size()) fail(std::string("expected ") + what + " but found '" + std::string(t) + "'");
+    if (i == t.size()) fail(std::string("expected ") + what + " but found '" + excerpt(t) + "'");
     for (; i < t.size(); ++i) {
-      if (t[i] < '0' || t[i] > '9' || v > (int64_t(1) << 40))
-        fail(std::string("expected ") + what + " but found '" + std::string(t) + "'");
+      if (t[i] < '0' || t[i] > '9' || v > (int64_t(1) << 50))
+        fail(std::string("expected ") + what + " but found '" + excerpt(t) + "'");
       v = v * 10 + (t[i] - '0');
     }
     return neg ? -v : v;
   }
-  int64_t count(const char* what, int64_t max = int64_t(1) << 26) {
+  int64_t count(const char* what, int64_t max = int64_t(1) << 31) {
     int64_t v = integer(what);
     if (v < 0 || v > max) fail(std::string(what) + " " + std::to_string(v) + " is out of range");
     return v;
@@ -65,7 +72,7 @@ class Lexer {
     std::string s(t);
     char* end = nullptr;
     double v = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size()) fail(std::string("expected ") + what + " but found '" + s + "'");
+    if (end != s.c_str() + s.size()) fail(std::string("expected ") + what + " but found '" + excerpt(s) + "'");
     return v;
   }
   // The rest of the current line (without the newline), moving to the next line.

@@ -8,13 +8,15 @@
 #include <cmath>
 #include <cstdio>
 
+#include "complex/manifold.hpp"
 #include "io/dense.hpp"
+#include "io/cells.hpp"
 #include "io/io.hpp"
 #include "io/lexer.hpp"
 
 namespace hexdual::io {
 
-Complex readNative(std::string_view data, const std::string& name) {
+Complex readNative(std::string_view data, const std::string& name, ReadReport* rep) {
   Lexer lx(data, name);
   lx.expectKeyword("hexdual");
   int64_t version = lx.integer("a format version");
@@ -22,6 +24,8 @@ Complex readNative(std::string_view data, const std::string& name) {
   Complex cx;
   lx.expectKeyword("vertices");
   int64_t nv = lx.count("number of vertices");
+  checkCountFits(name, "vertices", nv, data.size() - lx.offset(), 6);
+  cx.reserve(0, size_t(nv));
   for (int64_t i = 0; i < nv; ++i) {
     Vec3 p{lx.real("a coordinate"), lx.real("a coordinate"), lx.real("a coordinate")};
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
@@ -30,6 +34,7 @@ Complex readNative(std::string_view data, const std::string& name) {
   }
   lx.expectKeyword("hexes");
   int64_t nh = lx.count("number of hexes");
+  checkCountFits(name, "hexes", nh, data.size() - lx.offset(), 16);
   for (int64_t h = 0; h < nh; ++h) {
     std::array<VertexId, 8> v;
     for (int c = 0; c < 8; ++c) {
@@ -56,9 +61,18 @@ Complex readNative(std::string_view data, const std::string& name) {
   }
   lx.expectKeyword("end");
   try {
+    std::vector<VertexId> bad;
+    for (const LinkIssue& li : vertexLinkIssues(cx)) bad.push_back(li.vertex);
+    cx.setNonManifoldVertices(std::move(bad));
     cx.validate();
   } catch (const Error& e) {
     throw Error(name + ": " + e.what());
+  }
+  if (rep) {
+    rep->format = "hexdual 1";
+    rep->points = nv;
+    rep->unusedVertices = nv - cx.numVertices();
+    rep->nonManifoldVertices = cx.nonManifoldVertices();
   }
   return cx;
 }
