@@ -9,6 +9,17 @@ namespace hexdual {
 
 namespace {
 
+std::string escapeXml(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else out += c;
+  }
+  return out;
+}
+
 struct Canvas {
   double S = 200, M = 1.2;  // scale; margin in diagram units
   double X(double x) const { return S * (x + M); }
@@ -67,6 +78,7 @@ std::string diagramSvg(const SheetDiagram& d) {
   std::snprintf(buf, sizeof buf, "<text x=\"8\" y=\"%.0f\" font-size=\"13\">sheet %d · %s · %s</text>\n", 2 * S * M + 16, d.sheet,
                 d.topology.c_str(), d.method.c_str());
   out += buf;
+  if (!d.note.empty()) out += "<title>" + escapeXml(d.note) + "</title>\n";  // why a fallback, which face was opened, the polygon's word
   if (d.local) {
     std::snprintf(buf, sizeof buf, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"none\" stroke=\"#555\" stroke-dasharray=\"6 5\"/>\n", cv.X(0),
                   cv.Y(0), S);
