@@ -1,9 +1,12 @@
 #include <doctest/doctest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <map>
 
 #include "complex/builders.hpp"
 #include "helpers.hpp"
+#include "io/io.hpp"
 #include "layout/mid_surface.hpp"
 #include "layout/polygon_diagram.hpp"
 #include "layout/sheet_diagram.hpp"
@@ -134,4 +137,16 @@ TEST_CASE("an annulus cut open: one seam drawn twice in opposite directions") {
   CHECK(c.twisted == 0);
   CHECK(c.boundarySides == 2);
   CHECK(dg.euler == 0);
+}
+
+TEST_CASE("the example meshes of docs/examples are the builders' output") {
+  const std::filesystem::path dir = std::filesystem::path(__FILE__).parent_path().parent_path() / "docs" / "examples";
+  auto file = [&](const char* name) {
+    std::ifstream in(dir / name, std::ios::binary);
+    REQUIRE(in);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  CHECK(file("torus-shell.hxd") == io::writeNative(makeTorusShell(6, 4, 2)));
+  CHECK(file("klein-shell.hxd") == io::writeNative(makeTorusShell(6, 4, 2, true)));
+  CHECK(file("twisted-ring.hxd") == io::writeNative(makeTwistedRing(8)));
 }
