@@ -22,8 +22,10 @@ PolygonCounts countSides(const SheetDiagram& dg) {
   PolygonCounts c;
   std::map<int, int> signs;
   for (const auto& a : dg.arcs) {
-    if (a.pair < 0) ++c.boundarySides;
-    else signs[a.pair] += a.sign;
+    if (a.pair < 0)
+      ++c.boundarySides;
+    else
+      signs[a.pair] += a.sign;
   }
   c.pairs = int(signs.size());
   for (auto [p, s] : signs) c.twisted += s == 2;  // both sides +1: glued with a twist
@@ -66,7 +68,8 @@ TEST_CASE("torus shell builder: a thickened torus, and its Klein-bottle twin") {
   int klein = 0;
   for (const Sheet& s : dk.sheets) klein += !s.orientable && s.euler == 0 && s.boundaryLoops == 0;
   CHECK(klein == 2);
-  CHECK(errorOf([] { makeTorusShell(2, 4, 1); }) == "torus shell: needs at least 3 around and 3 along the tube, 1 layer, at most 10^7 hexes");
+  CHECK(errorOf([] { makeTorusShell(2, 4, 1); }) ==
+        "torus shell: needs at least 3 around and 3 along the tube, 1 layer, at most 10^7 hexes");
 }
 
 TEST_CASE("a torus sheet is cut open into the square a b a^-1 b^-1") {
