@@ -39,7 +39,8 @@ Complex readDevMesh(const fs::path& file) {
 struct Expected {
   int64_t hexes;
   size_t sheets;
-  int polygons;  // sheets cut open into a fundamental polygon (genus > 0, or an annulus that is not planar on two circles)
+  int polygons;  // sheets cut open into a fundamental polygon (genus > 0, or an annulus that is not planar on two
+                 // circles)
 };
 
 }  // namespace
@@ -52,10 +53,10 @@ TEST_CASE("development-set meshes: every sheet laid out whole and checked") {
   }
   // Measured on the meshes that open today; a mesh not listed is still laid out and checked.
   const std::map<std::string, Expected> expected = {
-      {"G_cylinder_1.vtk.gz", {630, 26, 0}},    {"G_cylinder_2.vtk.gz", {980, 27, 0}},
-      {"MOAB_125hex.vtk.gz", {125, 15, 0}},     {"MOAB_hex_2048.vtk.gz", {2048, 40, 0}},
-      {"P_double-torus.vtk.gz", {632, 58, 4}},  {"P_joint.vtk.gz", {2010, 56, 17}},
-      {"P_kitten.mesh.gz", {1728, 39, 3}},      {"ECR_block_stresstest_in.mesh.gz", {2520, 75, 1}},
+      {"G_cylinder_1.vtk.gz", {630, 26, 0}},   {"G_cylinder_2.vtk.gz", {980, 27, 0}},
+      {"MOAB_125hex.vtk.gz", {125, 15, 0}},    {"MOAB_hex_2048.vtk.gz", {2048, 40, 0}},
+      {"P_double-torus.vtk.gz", {632, 58, 4}}, {"P_joint.vtk.gz", {2010, 56, 17}},
+      {"P_kitten.mesh.gz", {1728, 39, 3}},     {"ECR_block_stresstest_in.mesh.gz", {2520, 75, 1}},
       {"ECR_cap_in.mesh.gz", {4420, 55, 0}},
   };
   std::vector<fs::path> files;
@@ -97,7 +98,8 @@ TEST_CASE("development-set meshes: every sheet laid out whole and checked") {
     CHECK(d.sheets.size() == it->second.sheets);
     CHECK(polygons == it->second.polygons);
   }
-  MESSAGE("development set: " << opened << " of " << files.size() << " meshes open, " << diagrams << " sheets laid out and checked");
+  MESSAGE("development set: " << opened << " of " << files.size() << " meshes open, " << diagrams
+                              << " sheets laid out and checked");
   CHECK(opened >= int(expected.size()));
   CHECK(topologies["torus"] >= 1);  // P_kitten
   CHECK(topologies["other"] >= 1);  // ECR_block_stresstest: a closed genus-3 sheet

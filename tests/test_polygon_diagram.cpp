@@ -1,9 +1,12 @@
 #include <doctest/doctest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <map>
 
 #include "complex/builders.hpp"
 #include "helpers.hpp"
+#include "io/io.hpp"
 #include "layout/mid_surface.hpp"
 #include "layout/polygon_diagram.hpp"
 #include "layout/sheet_diagram.hpp"
@@ -19,8 +22,10 @@ PolygonCounts countSides(const SheetDiagram& dg) {
   PolygonCounts c;
   std::map<int, int> signs;
   for (const auto& a : dg.arcs) {
-    if (a.pair < 0) ++c.boundarySides;
-    else signs[a.pair] += a.sign;
+    if (a.pair < 0)
+      ++c.boundarySides;
+    else
+      signs[a.pair] += a.sign;
   }
   c.pairs = int(signs.size());
   for (auto [p, s] : signs) c.twisted += s == 2;  // both sides +1: glued with a twist
@@ -63,7 +68,8 @@ TEST_CASE("torus shell builder: a thickened torus, and its Klein-bottle twin") {
   int klein = 0;
   for (const Sheet& s : dk.sheets) klein += !s.orientable && s.euler == 0 && s.boundaryLoops == 0;
   CHECK(klein == 2);
-  CHECK(errorOf([] { makeTorusShell(2, 4, 1); }) == "torus shell: needs at least 3 around and 3 along the tube, 1 layer, at most 10^7 hexes");
+  CHECK(errorOf([] { makeTorusShell(2, 4, 1); }) ==
+        "torus shell: needs at least 3 around and 3 along the tube, 1 layer, at most 10^7 hexes");
 }
 
 TEST_CASE("a torus sheet is cut open into the square a b a^-1 b^-1") {
@@ -134,4 +140,16 @@ TEST_CASE("an annulus cut open: one seam drawn twice in opposite directions") {
   CHECK(c.twisted == 0);
   CHECK(c.boundarySides == 2);
   CHECK(dg.euler == 0);
+}
+
+TEST_CASE("the example meshes of docs/examples are the builders' output") {
+  const std::filesystem::path dir = std::filesystem::path(__FILE__).parent_path().parent_path() / "docs" / "examples";
+  auto file = [&](const char* name) {
+    std::ifstream in(dir / name, std::ios::binary);
+    REQUIRE(in);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  CHECK(file("torus-shell.hxd") == io::writeNative(makeTorusShell(6, 4, 2)));
+  CHECK(file("klein-shell.hxd") == io::writeNative(makeTorusShell(6, 4, 2, true)));
+  CHECK(file("twisted-ring.hxd") == io::writeNative(makeTwistedRing(8)));
 }

@@ -114,7 +114,8 @@ TEST_CASE("local diagrams: k rings of chosen hexes inside a dotted circle") {
   CHECK(two.crossings.size() == 25);
   checkDiagram(two, 25);
   CHECK(contains(diagramSvg(two), "stroke-dasharray"));
-  CHECK(errorOf([&] { layoutLocal(g, d, sheet, {0}, 1); }) == "sheet diagram: none of the given hexes lies on sheet " + std::to_string(sheet));
+  CHECK(errorOf([&] { layoutLocal(g, d, sheet, {0}, 1); }) ==
+        "sheet diagram: none of the given hexes lies on sheet " + std::to_string(sheet));
   CHECK(errorOf([&] { layoutSheet(g, d, 999); }) == "sheet diagram: sheet 999 does not exist");
 }
 
@@ -147,11 +148,12 @@ TEST_CASE("a self-intersecting sheet (a quarter-twisted ring): a hex on it twice
   t.validate();
   Dual d = extractDual(t);
   REQUIRE(d.sheets[0].selfIntersecting);
-  CHECK(d.sheets[0].slots.size() == 16);  // 8 hexes, each twice
+  CHECK(d.sheets[0].slots.size() == 16);   // 8 hexes, each twice
   CHECK(d.sheets[0].topology == "other");  // a Moebius band: Euler characteristic 0, one boundary loop
   CHECK_FALSE(d.sheets[0].orientable);
   SheetDiagram dg = layoutSheet(t, d, 0);
-  MESSAGE(dg.note << " euler " << dg.euler << " arcs " << dg.arcs.size() << " sheet euler " << d.sheets[0].euler << " loops " << d.sheets[0].boundaryLoops);
+  MESSAGE(dg.note << " euler " << dg.euler << " arcs " << dg.arcs.size() << " sheet euler " << d.sheets[0].euler
+                  << " loops " << d.sheets[0].boundaryLoops);
   CHECK(dg.method == "polygon");
   checkDiagram(dg, 16);
   std::map<HexId, int> times;

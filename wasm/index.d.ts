@@ -52,15 +52,18 @@ export type XY = [number, number];
 export interface SheetDiagram {
   sheet: number;
   topology: SheetTopology;
-  method: 'disk' | 'annulus' | 'sphere' | 'local';
+  method: 'disk' | 'annulus' | 'sphere' | 'polygon' | 'local';
   local: boolean;
   note: string;
   radius: number;
+  euler: number;
   openedHex: number | null;
   crossings: { hex: number; axis: number; x: number; y: number; chords: [number, number]; outside: boolean }[];
   boundary: { hex: number; face: number; x: number; y: number }[];
-  chords: { id: number; otherSheet: number; closed: boolean; hexes: number[]; points: XY[] }[];
+  chords: { id: number; otherSheet: number; closed: boolean; piece: number; hexes: number[]; points: XY[] }[];
   loops: XY[][];
+  /** method 'polygon': the sides of the fundamental polygon; seams have labels a, a⁻¹, ..., the boundary ∂ (pair -1). */
+  arcs: { label: string; pair: number; sign: 1 | -1; points: XY[] }[];
   cells: { edge: [number, number]; x: number; y: number }[];
 }
 

@@ -15,19 +15,53 @@ std::string diagramJson(const SheetDiagram& d) {
   w.beginObject().key("sheet").value(d.sheet).key("topology").value(d.topology).key("method").value(d.method);
   w.key("local").value(d.local).key("note").value(d.note).key("radius").value(d.radius).key("euler").value(d.euler);
   w.key("openedHex");
-  if (d.openedHex >= 0) w.value(int64_t(d.openedHex));
-  else w.raw("null");
+  if (d.openedHex >= 0)
+    w.value(int64_t(d.openedHex));
+  else
+    w.raw("null");
   w.key("crossings").beginArray();
   for (const auto& c : d.crossings) {
-    w.beginObject().key("hex").value(int64_t(c.hex)).key("axis").value(c.axis).key("x").value(c.p.x).key("y").value(c.p.y);
-    w.key("chords").beginArray().value(c.chords[0]).value(c.chords[1]).endArray().key("outside").value(c.outside).endObject();
+    w.beginObject()
+        .key("hex")
+        .value(int64_t(c.hex))
+        .key("axis")
+        .value(c.axis)
+        .key("x")
+        .value(c.p.x)
+        .key("y")
+        .value(c.p.y);
+    w.key("chords")
+        .beginArray()
+        .value(c.chords[0])
+        .value(c.chords[1])
+        .endArray()
+        .key("outside")
+        .value(c.outside)
+        .endObject();
   }
   w.endArray().key("boundary").beginArray();
   for (const auto& b : d.boundary)
-    w.beginObject().key("hex").value(int64_t(b.hex)).key("face").value(b.face).key("x").value(b.p.x).key("y").value(b.p.y).endObject();
+    w.beginObject()
+        .key("hex")
+        .value(int64_t(b.hex))
+        .key("face")
+        .value(b.face)
+        .key("x")
+        .value(b.p.x)
+        .key("y")
+        .value(b.p.y)
+        .endObject();
   w.endArray().key("chords").beginArray();
   for (const auto& c : d.chords) {
-    w.beginObject().key("id").value(c.chord).key("otherSheet").value(c.otherSheet).key("closed").value(c.closed).key("piece").value(c.piece);
+    w.beginObject()
+        .key("id")
+        .value(c.chord)
+        .key("otherSheet")
+        .value(c.otherSheet)
+        .key("closed")
+        .value(c.closed)
+        .key("piece")
+        .value(c.piece);
     w.key("hexes").beginArray();
     for (HexId h : c.hexes) w.value(int64_t(h));
     w.endArray().key("points");
@@ -44,7 +78,17 @@ std::string diagramJson(const SheetDiagram& d) {
   }
   w.endArray().key("cells").beginArray();
   for (const auto& c : d.cells)
-    w.beginObject().key("edge").beginArray().value(int64_t(c.edge.hex)).value(c.edge.edge).endArray().key("x").value(c.p.x).key("y").value(c.p.y).endObject();
+    w.beginObject()
+        .key("edge")
+        .beginArray()
+        .value(int64_t(c.edge.hex))
+        .value(c.edge.edge)
+        .endArray()
+        .key("x")
+        .value(c.p.x)
+        .key("y")
+        .value(c.p.y)
+        .endObject();
   w.endArray().endObject();
   return w.str();
 }

@@ -94,14 +94,18 @@ SheetDiagram assembleDiagram(const Dual& dual, int sheet, const MidSurface& s, c
     Slot os = s.slots[size_t(pl.opened)];
     d.openedHex = os.hex;
     d.openedAxis = os.axis;
-    d.note = "the face of hex " + std::to_string(os.hex) + " (axis " + std::to_string(os.axis) + ") is opened: it is the outside";
+    d.note = "the face of hex " + std::to_string(os.hex) + " (axis " + std::to_string(os.axis) +
+             ") is opened: it is the outside";
   }
   for (size_t i = 0; i < s.slots.size(); ++i) {
     Slot sl = s.slots[i];
     int b = (sl.axis + 1) % 3, c = (sl.axis + 2) % 3;
     bool out = int(i) == pl.opened;
-    d.crossings.push_back({sl.hex, sl.axis, out ? of.crossing : pl.pos[size_t(s.centre(int(i)))],
-                           {dual.chordOf[size_t(sl.hex)][size_t(b)], dual.chordOf[size_t(sl.hex)][size_t(c)]}, out});
+    d.crossings.push_back({sl.hex,
+                           sl.axis,
+                           out ? of.crossing : pl.pos[size_t(s.centre(int(i)))],
+                           {dual.chordOf[size_t(sl.hex)][size_t(b)], dual.chordOf[size_t(sl.hex)][size_t(c)]},
+                           out});
   }
   // Chords: walk each (slot, chord axis) pair once.
   std::vector<std::array<bool, 3>> done(s.slots.size(), {false, false, false});

@@ -22,7 +22,9 @@ bool segmentsMeet(Point2 a, Point2 b, Point2 c, Point2 d, Point2* at) {
   *at = {a.x + t * d1x, a.y + t * d1y};
   return true;
 }
-bool near(Point2 a, Point2 b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) < 1e-14; }  // closer than 1e-7
+bool near(Point2 a, Point2 b) {
+  return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) < 1e-14;
+}  // closer than 1e-7
 bool insidePolygon(Point2 p, const std::vector<Point2>& poly) {
   bool in = false;
   for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
@@ -67,10 +69,12 @@ struct Seg {
 // Pairs of chord segments that meet away from a crossing, found with a uniform grid over the
 // segments' bounding boxes; each pair is tested in the one cell holding the corner of the
 // intersection of their boxes.
-void checkChordsMeetAtCrossings(const SheetDiagram& d, const CrossingIndex& crossings, void (*fail)(const SheetDiagram&, const std::string&)) {
+void checkChordsMeetAtCrossings(const SheetDiagram& d, const CrossingIndex& crossings,
+                                void (*fail)(const SheetDiagram&, const std::string&)) {
   std::vector<Seg> segs;
   for (size_t k = 0; k < d.chords.size(); ++k)
-    for (size_t i = 0; i + 1 < d.chords[k].points.size(); ++i) segs.push_back({d.chords[k].points[i], d.chords[k].points[i + 1], k, i});
+    for (size_t i = 0; i + 1 < d.chords[k].points.size(); ++i)
+      segs.push_back({d.chords[k].points[i], d.chords[k].points[i + 1], k, i});
   if (segs.empty()) return;
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
   for (const Seg& g : segs) {
@@ -97,7 +101,8 @@ void checkChordsMeetAtCrossings(const SheetDiagram& d, const CrossingIndex& cros
     for (size_t p = 0; p < list.size(); ++p)
       for (size_t q = p + 1; q < list.size(); ++q) {
         const Seg &s = segs[list[p]], &t = segs[list[q]];
-        size_t home = size_t(cellOf(std::max(lox(s), lox(t)), x0, cw)) * size_t(G) + size_t(cellOf(std::max(loy(s), loy(t)), y0, ch));
+        size_t home = size_t(cellOf(std::max(lox(s), lox(t)), x0, cw)) * size_t(G) +
+                      size_t(cellOf(std::max(loy(s), loy(t)), y0, ch));
         if (home != cell) continue;  // tested in another cell
         bool consecutive = s.chord == t.chord && (s.index + 1 == t.index || t.index + 1 == s.index ||
                                                   (d.chords[s.chord].closed && (s.index == 0 || t.index == 0)));
@@ -108,8 +113,8 @@ void checkChordsMeetAtCrossings(const SheetDiagram& d, const CrossingIndex& cros
         crossings.forEachNear(at, [&](size_t) { atCrossing = true; });
         if (!atCrossing) {
           char buf[160];
-          std::snprintf(buf, sizeof buf, "chords %d and %d meet at (%.4f, %.4f), which is not a hex crossing", d.chords[s.chord].chord,
-                        d.chords[t.chord].chord, at.x, at.y);
+          std::snprintf(buf, sizeof buf, "chords %d and %d meet at (%.4f, %.4f), which is not a hex crossing",
+                        d.chords[s.chord].chord, d.chords[t.chord].chord, at.x, at.y);
           fail(d, buf);
         }
       }
@@ -122,22 +127,27 @@ void checkPolygonSides(const SheetDiagram& d, void (*fail)(const SheetDiagram&, 
   for (size_t k = 0; k < d.arcs.size(); ++k) {
     const auto& a = d.arcs[k];
     const auto& b = d.arcs[(k + 1) % d.arcs.size()];
-    if (a.points.size() < 2 || !near(a.points.back(), b.points.front())) fail(d, "polygon side " + a.label + " does not end where the next begins");
+    if (a.points.size() < 2 || !near(a.points.back(), b.points.front()))
+      fail(d, "polygon side " + a.label + " does not end where the next begins");
   }
   size_t points = 0;
   for (const auto& a : d.arcs) points += a.points.size() - 1;
-  if (d.loops.empty() || 2 * d.loops[0].size() != points) fail(d, "the polygon's sides do not run round its outer loop");
+  if (d.loops.empty() || 2 * d.loops[0].size() != points)
+    fail(d, "the polygon's sides do not run round its outer loop");
   std::unordered_map<int, std::vector<const SheetDiagram::Arc*>> byPair;
   for (const auto& a : d.arcs)
     if (a.pair >= 0) byPair[a.pair].push_back(&a);
   for (const auto& [pair, sides] : byPair) {
-    if (sides.size() != 2) fail(d, "seam " + seamLabel(pair, 1) + " is drawn on " + std::to_string(sides.size()) + " sides, not 2");
+    if (sides.size() != 2)
+      fail(d, "seam " + seamLabel(pair, 1) + " is drawn on " + std::to_string(sides.size()) + " sides, not 2");
     if (sides[0]->label != seamLabel(pair, sides[0]->sign) || sides[1]->label != seamLabel(pair, sides[1]->sign))
       fail(d, "seam " + seamLabel(pair, 1) + " has a wrong label");
   }
 }
 
-[[noreturn]] void failWith(const SheetDiagram& d, const std::string& m) { throw Error("sheet diagram " + std::to_string(d.sheet) + ": " + m); }
+[[noreturn]] void failWith(const SheetDiagram& d, const std::string& m) {
+  throw Error("sheet diagram " + std::to_string(d.sheet) + ": " + m);
+}
 
 }  // namespace
 
@@ -148,18 +158,24 @@ void checkDiagram(const SheetDiagram& d, size_t expectedSlots) {
   for (const auto& c : d.crossings) seen.push_back({c.hex, c.axis});
   std::sort(seen.begin(), seen.end());
   if (std::adjacent_find(seen.begin(), seen.end()) != seen.end()) fail("a slot appears twice");
-  if (seen.size() != expectedSlots) fail(std::to_string(seen.size()) + " crossings for " + std::to_string(expectedSlots) + " slots");
+  if (seen.size() != expectedSlots)
+    fail(std::to_string(seen.size()) + " crossings for " + std::to_string(expectedSlots) + " slots");
   // Every crossing joins exactly two chord passes (failing at the third, so that a collapsed
   // layout with thousands of points in one place fails fast).
   CrossingIndex index(d);
   std::vector<int> passes(d.crossings.size(), 0);
-  auto tooMany = [&](size_t k) { fail("crossing of hex " + std::to_string(d.crossings[k].hex) + " joins more than 2 chord passes"); };
+  auto tooMany = [&](size_t k) {
+    fail("crossing of hex " + std::to_string(d.crossings[k].hex) + " joins more than 2 chord passes");
+  };
   for (const auto& ch : d.chords)
-    for (Point2 p : ch.points) index.forEachNear(p, [&](size_t k) {
+    for (Point2 p : ch.points)
+      index.forEachNear(p, [&](size_t k) {
         if (++passes[k] > 2) tooMany(k);
       });
   for (size_t k = 0; k < d.crossings.size(); ++k)
-    if (passes[k] != 2) fail("crossing of hex " + std::to_string(d.crossings[k].hex) + " joins " + std::to_string(passes[k]) + " chord passes, not 2");
+    if (passes[k] != 2)
+      fail("crossing of hex " + std::to_string(d.crossings[k].hex) + " joins " + std::to_string(passes[k]) +
+           " chord passes, not 2");
   // Chords meet only at crossings (or where consecutive segments join).
   checkChordsMeetAtCrossings(d, index, failWith);
   checkPolygonSides(d, failWith);
@@ -167,8 +183,10 @@ void checkDiagram(const SheetDiagram& d, size_t expectedSlots) {
   if (d.loops.empty()) return;
   for (const auto& c : d.crossings) {
     if (c.outside) continue;
-    if (!insidePolygon(c.p, d.loops[0])) fail("crossing of hex " + std::to_string(c.hex) + " lies outside the outer loop");
-    if (d.loops.size() > 1 && insidePolygon(c.p, d.loops[1])) fail("crossing of hex " + std::to_string(c.hex) + " lies inside the inner loop");
+    if (!insidePolygon(c.p, d.loops[0]))
+      fail("crossing of hex " + std::to_string(c.hex) + " lies outside the outer loop");
+    if (d.loops.size() > 1 && insidePolygon(c.p, d.loops[1]))
+      fail("crossing of hex " + std::to_string(c.hex) + " lies inside the inner loop");
   }
 }
 

@@ -18,7 +18,8 @@ Point2 mid2(Point2 a, Point2 b) { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
 void averageRefinement(const MidSurface& s, Placement& pl) {
   for (int m = 0; m < s.nMid; ++m)
     if (!pl.fixed[size_t(s.nCorner + m)])
-      pl.pos[size_t(s.nCorner + m)] = mid2(pl.pos[size_t(s.midEnds[size_t(m)].first)], pl.pos[size_t(s.midEnds[size_t(m)].second)]);
+      pl.pos[size_t(s.nCorner + m)] =
+          mid2(pl.pos[size_t(s.midEnds[size_t(m)].first)], pl.pos[size_t(s.midEnds[size_t(m)].second)]);
   for (size_t i = 0; i < s.quad.size(); ++i) {
     Point2 c;
     for (int v : s.quad[i]) c = {c.x + 0.25 * pl.pos[size_t(v)].x, c.y + 0.25 * pl.pos[size_t(v)].y};
@@ -74,7 +75,8 @@ bool placeAnnulus(const MidSurface& s, std::vector<std::vector<int>> loops, Plac
   for (int v : loops[1]) rho.pos[size_t(v)] = {0, 0};
   for (int m = 0; m < s.nMid; ++m)
     if (rho.fixed[size_t(s.nCorner + m)])
-      rho.pos[size_t(s.nCorner + m)] = {0.5 * (rho.pos[size_t(s.midEnds[size_t(m)].first)].x + rho.pos[size_t(s.midEnds[size_t(m)].second)].x), 0};
+      rho.pos[size_t(s.nCorner + m)] = {
+          0.5 * (rho.pos[size_t(s.midEnds[size_t(m)].first)].x + rho.pos[size_t(s.midEnds[size_t(m)].second)].x), 0};
   if (!harmonicSolve(s, pl) || !harmonicSolve(s, rho)) return false;
   // Radius along each ray: between the inner and the outer loop polygons.
   auto polygonRadius = [&](const std::vector<int>& loop, double t) {
@@ -155,7 +157,8 @@ bool harmonicSolve(const MidSurface& s, Placement& pl) {
     for (auto [p, q] : {std::pair{a, b}, std::pair{b, a}}) {
       if (unk[size_t(p)] < 0) continue;
       diag[size_t(unk[size_t(p)])] += 1;
-      if (unk[size_t(q)] >= 0) trip.push_back({unk[size_t(p)], unk[size_t(q)], -1});
+      if (unk[size_t(q)] >= 0)
+        trip.push_back({unk[size_t(p)], unk[size_t(q)], -1});
       else {
         bx[unk[size_t(p)]] += pl.pos[size_t(q)].x;
         by[unk[size_t(p)]] += pl.pos[size_t(q)].y;

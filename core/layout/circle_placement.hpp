@@ -13,8 +13,8 @@ namespace hexdual {
 struct Placement {
   std::vector<Point2> pos;  // per vertex of the refined surface (corners, mids, centres)
   std::vector<bool> fixed;
-  int opened = -1;          // the opened slot (sphere)
-  std::string method;       // "disk", "annulus", "sphere"
+  int opened = -1;     // the opened slot (sphere)
+  std::string method;  // "disk", "annulus", "sphere"
 };
 
 // V - E + F of the surface with its cuts open.

@@ -156,7 +156,8 @@ FundamentalPolygon fundamentalPolygon(const MidSurface& s, const CutGraph& g, co
       continue;
     }
     int key = s.nMid;
-    for (int k : side.edges) key = std::min(key, s.mid[size_t(edges[size_t(k)].slot)][size_t(edges[size_t(k)].face)] - s.nCorner);
+    for (int k : side.edges)
+      key = std::min(key, s.mid[size_t(edges[size_t(k)].slot)][size_t(edges[size_t(k)].face)] - s.nCorner);
     auto [it, isFirst] = firstSide.try_emplace(key, i);
     if (isFirst) {
       side.pair = p.pairs++;

@@ -20,15 +20,15 @@ struct SheetDiagram {
   std::string note;      // why a fallback was used, which face was opened, ...
   HexId openedHex = -1;  // sphere: the slot whose face became the outside
   int openedAxis = -1;
-  bool local = false;    // a neighbourhood of chosen hexes inside a dotted circle
-  double radius = 1.0;   // the outer circle, centred at the origin
-  int64_t euler = 0;     // Euler characteristic of the drawn mid-surface
+  bool local = false;   // a neighbourhood of chosen hexes inside a dotted circle
+  double radius = 1.0;  // the outer circle, centred at the origin
+  int64_t euler = 0;    // Euler characteristic of the drawn mid-surface
 
   struct Crossing {
     HexId hex;
-    int axis;          // the slot (hex, axis) of the sheet
+    int axis;  // the slot (hex, axis) of the sheet
     Point2 p;
-    int chords[2];     // the chords crossing here
+    int chords[2];         // the chords crossing here
     bool outside = false;  // the opened face of a sphere, drawn outside the circle
   };
   struct BoundaryPoint {  // where a chord meets the boundary loop: a boundary quad

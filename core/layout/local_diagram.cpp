@@ -14,7 +14,8 @@ using namespace tables;
 namespace {
 
 // Slots of the sheet within `rings` rings of the seeds, with their ring number, breadth first.
-std::vector<std::pair<Slot, int>> ringsAround(const Complex& cx, const Dual& dual, int sheet, const std::vector<Slot>& seeds, int rings) {
+std::vector<std::pair<Slot, int>> ringsAround(const Complex& cx, const Dual& dual, int sheet,
+                                              const std::vector<Slot>& seeds, int rings) {
   std::vector<std::pair<Slot, int>> out;
   std::unordered_map<int64_t, bool> seen;
   auto key = [](Slot s) { return int64_t(s.hex) * 3 + s.axis; };
@@ -34,7 +35,8 @@ std::vector<std::pair<Slot, int>> ringsAround(const Complex& cx, const Dual& dua
 }
 
 // The layout of the slots within k rings, or false when it does not draw as a planar disk.
-bool tryRings(const Dual& dual, int sheet, const Complex& cx, const std::vector<std::pair<Slot, int>>& ring, int k, SheetDiagram& d) {
+bool tryRings(const Dual& dual, int sheet, const Complex& cx, const std::vector<std::pair<Slot, int>>& ring, int k,
+              SheetDiagram& d) {
   std::vector<Slot> slots;
   for (auto [s, depth] : ring)
     if (depth <= k) slots.push_back(s);
@@ -44,7 +46,7 @@ bool tryRings(const Dual& dual, int sheet, const Complex& cx, const std::vector<
   d = assembleDiagram(dual, sheet, s, pl, true);
   d.euler = eulerCharacteristic(s);
   if (k == 0) return true;  // one ring of quads around the seeds is drawn as it comes
-  try {  // a degenerate neighbourhood may not draw planar
+  try {                     // a degenerate neighbourhood may not draw planar
     checkDiagram(d, d.crossings.size());
   } catch (const Error&) {
     return false;
@@ -75,8 +77,8 @@ SheetDiagram layoutAround(const Complex& cx, const Dual& dual, int sheet, const 
     }
     if (lo < 0) {
       if (seeds.size() > 1) return layoutAround(cx, dual, sheet, {seeds[0]}, rings);
-      throw Error("sheet diagram: no neighbourhood of hex " + std::to_string(seeds[0].hex) + " on sheet " + std::to_string(sheet) +
-                  " draws as a planar disk");
+      throw Error("sheet diagram: no neighbourhood of hex " + std::to_string(seeds[0].hex) + " on sheet " +
+                  std::to_string(sheet) + " draws as a planar disk");
     }
     k = lo;
     d = std::move(best);

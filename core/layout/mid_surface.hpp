@@ -19,19 +19,19 @@ int cyclePos(int axis, int edge);
 std::array<int, 2> edgesOnFace(int face, int axis);
 
 struct MidSurface {
-  std::vector<Slot> slots;                  // sorted
-  std::vector<std::array<int, 6>> adj;      // per slot, per side (face parallel to its axis): neighbour slot or -1
+  std::vector<Slot> slots;                     // sorted
+  std::vector<std::array<int, 6>> adj;         // per slot, per side (face parallel to its axis): neighbour slot or -1
   std::vector<std::array<int8_t, 6>> adjFace;  // the neighbour's face
-  std::vector<std::array<bool, 6>> cut;     // sides cut open (empty: none)
-  std::vector<EdgeRef> verts;               // corners: canonical primal edges (repeated when cut open)
-  std::vector<int> origin;                  // per corner: the corner of the uncut surface it comes from
-  std::vector<std::array<int, 4>> quad;     // corner indices in mid-cycle order
-  std::vector<int8_t> sign;                 // orientation per quad (+1 keeps the cycle)
+  std::vector<std::array<bool, 6>> cut;        // sides cut open (empty: none)
+  std::vector<EdgeRef> verts;                  // corners: canonical primal edges (repeated when cut open)
+  std::vector<int> origin;                     // per corner: the corner of the uncut surface it comes from
+  std::vector<std::array<int, 4>> quad;        // corner indices in mid-cycle order
+  std::vector<int8_t> sign;                    // orientation per quad (+1 keeps the cycle)
   bool orientable = true;
-  std::vector<std::array<int, 6>> mid;      // per slot, per side: mid vertex (numbered after the corners)
-  std::vector<std::pair<int, int>> midEnds; // corners of each mid vertex
-  std::vector<std::array<int, 2>> midSide;  // one side (slot, face) of each mid vertex
-  std::vector<bool> midBoundary;            // on the boundary: no neighbour, or cut open
+  std::vector<std::array<int, 6>> mid;       // per slot, per side: mid vertex (numbered after the corners)
+  std::vector<std::pair<int, int>> midEnds;  // corners of each mid vertex
+  std::vector<std::array<int, 2>> midSide;   // one side (slot, face) of each mid vertex
+  std::vector<bool> midBoundary;             // on the boundary: no neighbour, or cut open
   int nCorner = 0, nMid = 0;
   bool degenerate = false;  // two quads on the same corners, or two mid-edges on the same ends
 

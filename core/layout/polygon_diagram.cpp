@@ -17,7 +17,8 @@ SheetDiagram layoutPolygon(const Dual& dual, int sheet, const MidSurface& s) {
   open.degenerate = true;  // solve on the refined mesh: doublets (two quads on three corners) come apart
   std::vector<BoundaryEdge> edges = boundaryEdges(open);
   std::vector<std::vector<int>> loops;
-  if (!open.orientable || !chainLoops(edges, loops) || loops.size() != 1 || loops[0].size() < 3 || eulerCharacteristic(open) != 1)
+  if (!open.orientable || !chainLoops(edges, loops) || loops.size() != 1 || loops[0].size() < 3 ||
+      eulerCharacteristic(open) != 1)
     fail("the surface cut open is not a disk");
   FundamentalPolygon poly = fundamentalPolygon(s, g, open, edges, loops[0]);
   // The polygon on the unit circle: each side gets half its share by count, half by length, so
@@ -41,7 +42,8 @@ SheetDiagram layoutPolygon(const Dual& dual, int sheet, const MidSurface& s) {
   if (!harmonicSolve(open, pl)) fail("the harmonic solve failed");
   SheetDiagram d = assembleDiagram(dual, sheet, open, pl, false);
   if (poly.euler != euler)
-    fail("the polygon's Euler characteristic " + std::to_string(poly.euler) + " is not the surface's " + std::to_string(euler));
+    fail("the polygon's Euler characteristic " + std::to_string(poly.euler) + " is not the surface's " +
+         std::to_string(euler));
   std::string word;
   for (const PolygonSide& side : poly.sides) {
     SheetDiagram::Arc arc;

@@ -37,7 +37,8 @@ SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
     }
   }
   if (why.empty())
-    why = "this sheet is " + sh.topology + (sh.selfIntersecting ? " and self-intersecting" : "") + " and does not lay out whole";
+    why = "this sheet is " + sh.topology + (sh.selfIntersecting ? " and self-intersecting" : "") +
+          " and does not lay out whole";
   // Otherwise: the largest neighbourhood of the sheet's first hex that draws as a planar disk.
   SheetDiagram d = layoutLocal(cx, dual, sheet, {sh.slots[0].hex}, int(sh.slots.size()));
   d.note = why + "; showing " + d.note;
