@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <memory>
 #include <new>
 #include <string>
@@ -23,7 +24,9 @@
 #include "layout/render_buffers.hpp"
 #include "layout/sheet_diagram.hpp"
 #include "ops/candidates.hpp"
+#include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
+#include "ops/report.hpp"
 
 using namespace emscripten;
 using namespace hexdual;
@@ -59,10 +62,11 @@ auto guarded(const char* code, F&& f, decltype(f()) onError) -> decltype(f()) {
   return onError;
 }
 
-std::string idList(const std::vector<int32_t>& v) {
-  std::string s = "[";
-  for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + std::to_string(v[i]);
-  return s + "]";
+// A JS object with these properties.
+val fields(std::initializer_list<std::pair<const char*, val>> props) {
+  val o = val::object();
+  for (const auto& [name, value] : props) o.set(name, value);
+  return o;
 }
 
 template <class T>
@@ -70,32 +74,18 @@ val copyOut(const char* type, const std::vector<T>& v) {
   return val::global(type).new_(val(typed_memory_view(v.size(), v.data())));
 }
 
-// What one applied step did: ids created and removed, the change of (V,E,F,H) and of the dual.
+// One entry of the undo list: the core's step report, or a flip applied directly (no log step).
 struct StepRecord {
-  std::string text;  // the step as applied, or "flip NAME [h1,h2,..]" for a direct flip
-  std::string op;    // the operation-log name ("chordpush"), or "flip"
-  bool loggable = true;
-  std::vector<int> flipHexes;  // a direct flip's hexes, for redo
-  OpResult result;
-  DualChange change;
+  StepReport report;
+  std::string flipName;  // non-empty for a direct flip
+  std::vector<int> flipHexes;
+  bool loggable() const { return flipName.empty(); }
 };
 
-std::string reportJson(const StepRecord& s) {
-  const OpResult& r = s.result;
-  const DualChange& ch = s.change;
-  io::JsonWriter w;
-  w.beginObject().key("step").value(s.text).key("op").value(s.op).key("inverse");
-  if (r.inverse.empty()) w.raw("null");
-  else w.value(r.inverse);
-  w.key("created").beginObject().key("hexes").raw(idList(r.createdHexes)).key("vertices").raw(idList(r.createdVertices)).endObject();
-  w.key("removed").beginObject().key("hexes").raw(idList(r.removedHexes)).key("vertices").raw(idList(r.removedVertices)).endObject();
-  w.key("delta").beginObject().key("V").value(r.dV).key("E").value(r.dE).key("F").value(r.dF).key("H").value(r.dH).endObject();
-  w.key("changedSheets").beginObject().key("created").raw(idList(ch.sheetsCreated)).key("removed").raw(idList(ch.sheetsRemoved));
-  w.key("changed").raw(idList(ch.sheetsChanged)).endObject();
-  w.key("changedChords").beginObject().key("created").raw(idList(ch.chordsCreated)).key("removed").raw(idList(ch.chordsRemoved));
-  w.key("changed").raw(idList(ch.chordsChanged)).endObject();
-  w.endObject();
-  return w.str();
+// {"flip": "NAME [h,..]" or null, "report": the core's step report (as `hexdual apply --json`)}.
+std::string recordJson(const StepRecord& s, size_t index) {
+  std::string flip = s.loggable() ? "null" : io::JsonWriter::quote(s.flipName + " " + io::idList(s.flipHexes));
+  return "{\"flip\":" + flip + ",\"report\":" + io::stepReportJson(s.report, index) + "}";
 }
 
 std::string hexString(uint64_t h) {
@@ -150,44 +140,18 @@ val diagramArrays(const SheetDiagram& d) {
   }
   for (const auto& q : d.quads) quads.insert(quads.end(), q.begin(), q.end());
 
-  val o = val::object();
-  o.set("sheet", d.sheet);
-  o.set("topology", d.topology);
-  o.set("method", d.method);
-  o.set("local", d.local);
-  o.set("note", d.note);
-  o.set("radius", d.radius);
-  o.set("openedHex", d.openedHex >= 0 ? val(d.openedHex) : val::null());
-  val crossings = val::object();
-  crossings.set("hex", copyOut("Int32Array", crossHex));
-  crossings.set("axis", copyOut("Int8Array", crossAxis));
-  crossings.set("xy", copyOut("Float64Array", crossXY));
-  crossings.set("chords", copyOut("Int32Array", crossChords));
-  crossings.set("outside", copyOut("Uint8Array", crossOutside));
-  o.set("crossings", crossings);
-  val boundary = val::object();
-  boundary.set("hex", copyOut("Int32Array", bHex));
-  boundary.set("face", copyOut("Int8Array", bFace));
-  boundary.set("xy", copyOut("Float64Array", bXY));
-  o.set("boundary", boundary);
-  val chords = val::object();
-  chords.set("id", copyOut("Int32Array", chId));
-  chords.set("otherSheet", copyOut("Int32Array", chOther));
-  chords.set("closed", copyOut("Uint8Array", chClosed));
-  chords.set("offsets", copyOut("Uint32Array", chOffsets));
-  chords.set("xy", copyOut("Float64Array", chXY));
-  chords.set("hexOffsets", copyOut("Uint32Array", chHexOffsets));
-  chords.set("hexes", copyOut("Int32Array", chHexes));
-  o.set("chords", chords);
-  val loops = val::object();
-  loops.set("offsets", copyOut("Uint32Array", loopOffsets));
-  loops.set("xy", copyOut("Float64Array", loopXY));
-  o.set("loops", loops);
-  val cells = val::object();
-  cells.set("hex", copyOut("Int32Array", cellHex));
-  cells.set("edge", copyOut("Int8Array", cellEdge));
-  cells.set("xy", copyOut("Float64Array", cellXY));
-  o.set("cells", cells);
+  val o = fields({{"sheet", val(d.sheet)}, {"topology", val(d.topology)}, {"method", val(d.method)}, {"local", val(d.local)},
+                  {"note", val(d.note)}, {"radius", val(d.radius)}, {"openedHex", d.openedHex >= 0 ? val(d.openedHex) : val::null()}});
+  o.set("crossings", fields({{"hex", copyOut("Int32Array", crossHex)}, {"axis", copyOut("Int8Array", crossAxis)},
+                             {"xy", copyOut("Float64Array", crossXY)}, {"chords", copyOut("Int32Array", crossChords)},
+                             {"outside", copyOut("Uint8Array", crossOutside)}}));
+  o.set("boundary", fields({{"hex", copyOut("Int32Array", bHex)}, {"face", copyOut("Int8Array", bFace)}, {"xy", copyOut("Float64Array", bXY)}}));
+  o.set("chords", fields({{"id", copyOut("Int32Array", chId)}, {"otherSheet", copyOut("Int32Array", chOther)},
+                          {"closed", copyOut("Uint8Array", chClosed)}, {"offsets", copyOut("Uint32Array", chOffsets)},
+                          {"xy", copyOut("Float64Array", chXY)}, {"hexOffsets", copyOut("Uint32Array", chHexOffsets)},
+                          {"hexes", copyOut("Int32Array", chHexes)}}));
+  o.set("loops", fields({{"offsets", copyOut("Uint32Array", loopOffsets)}, {"xy", copyOut("Float64Array", loopXY)}}));
+  o.set("cells", fields({{"hex", copyOut("Int32Array", cellHex)}, {"edge", copyOut("Int8Array", cellEdge)}, {"xy", copyOut("Float64Array", cellXY)}}));
   o.set("quads", copyOut("Int32Array", quads));
   return o;
 }
@@ -277,14 +241,14 @@ class WasmMesh {
   // Applies one operation-log step ("pillow h13f5"); returns its inverse step ("" on error).
   std::string applyStep(const std::string& step) {
     return guarded("PRECONDITION", [&] {
-      apply(step);
-      const StepRecord& r = history_.back();
-      return r.result.inverse.empty() ? std::string("-") : r.result.inverse;
+      apply(parseOpStep(step));
+      const OpResult& r = history_.back().report.result;
+      return r.inverse ? formatOpStep(*r.inverse) : std::string("-");
     }, std::string());
   }
   // Applies one step and returns its report as JSON ("" on error; the mesh is then unchanged).
   std::string applyReport(const std::string& step) {
-    return guarded("PRECONDITION", [&] { return apply(step); }, std::string());
+    return guarded("PRECONDITION", [&] { return apply(parseOpStep(step)); }, std::string());
   }
   // Applies the steps of a log (text or URL form), at most stopAt of them (-1: all); all or
   // nothing: on an error the steps already applied by this call are undone. JSON array of reports.
@@ -296,11 +260,10 @@ class WasmMesh {
       size_t n = stopAt < 0 ? log.steps.size() : std::min(log.steps.size(), size_t(stopAt));
       std::string json = "[";
       for (size_t k = 0; k < n; ++k) {
-        std::string text = formatOpStep(log.steps[k]);
         try {
-          json += (k ? "," : "") + apply(text);
+          json += (k ? "," : "") + apply(log.steps[k]);
         } catch (const Error& e) {
-          throw Error("step " + std::to_string(k + 1) + " (" + text + "): " + e.what());
+          throw Error("step " + std::to_string(k + 1) + " (" + formatOpStep(log.steps[k]) + "): " + e.what());
         }
       }
       return json + "]";
@@ -318,7 +281,8 @@ class WasmMesh {
   std::string undo() {
     return guarded("PRECONDITION", [&] {
       if (history_.empty()) throw Error("undo: nothing to undo");
-      std::string text = history_.back().text;
+      const StepRecord& last = history_.back();
+      std::string text = last.loggable() ? formatOpStep(last.report.step) : "flip " + last.flipName + " " + io::idList(last.flipHexes);
       undoOne();
       return text;
     }, std::string());
@@ -332,7 +296,7 @@ class WasmMesh {
       std::vector<StepRecord> rest = std::move(redo_);
       std::string report;
       try {
-        report = s.loggable ? apply(s.text) : applyFlip(s.result.op, s.flipHexes, false);
+        report = s.loggable() ? apply(s.report.step) : applyFlip(s.flipName, s.flipHexes, false);
       } catch (...) {
         rest.push_back(std::move(s));
         redo_ = std::move(rest);
@@ -349,10 +313,10 @@ class WasmMesh {
     return guarded("PRECONDITION", [&] {
       OpLog out;
       for (const StepRecord& s : history_) {
-        if (!s.loggable)
-          throw Error("log: the history holds a flip applied directly (" + s.text +
+        if (!s.loggable())
+          throw Error("log: the history holds a flip applied directly (flip " + s.flipName +
                       "), which the operation log cannot express; apply flips with { viaAtomic: true } to log them");
-        out.steps.push_back(parseOpStep(s.text));
+        out.steps.push_back(s.report.step);
       }
       return url ? encodeOpLogUrl(out) : formatOpLog(out);
     }, std::string());
@@ -361,16 +325,16 @@ class WasmMesh {
   // nearKind "hex", "quad" or "edge", only those whose arguments name that entity.
   std::string candidatesJson(const std::string& op, const std::string& nearKind, int hex, int local) {
     return guarded("PRECONDITION", [&] {
-      static const char* all[] = {"pillow", "unpillow", "chordpush", "chordpull", "hexpush", "hexpull", "ringcollapse", "facecollapse", "facesplit"};
-      std::vector<std::string> ops;
-      if (op.empty()) ops.assign(std::begin(all), std::end(all));
-      else ops.push_back(op);
+      std::vector<OpKind> ops;
+      for (const OpInfo& info : allOps())
+        if (info.candidates != CandidateSet::None && (op.empty() || op == info.name)) ops.push_back(info.kind);
+      if (ops.empty()) throw Error("candidates: unknown operation '" + op + "'");
       if (!nearKind.empty()) requireNear(nearKind, hex, local);
       io::JsonWriter w;
       w.beginArray();
-      for (const std::string& o : ops)
-        for (const std::string& s : candidates(cx_, o))
-          if (nearKind.empty() || mentions(parseOpStep(s), nearKind, hex, local)) w.value(s);
+      for (OpKind o : ops)
+        for (const OpStep& s : candidates(cx_, o))
+          if (nearKind.empty() || mentions(s, nearKind, hex, local)) w.value(formatOpStep(s));
       w.endArray();
       return w.str();
     }, std::string());
@@ -440,17 +404,13 @@ class WasmMesh {
   std::string record(StepRecord s) {
     history_.push_back(std::move(s));
     redo_.clear();
-    return reportJson(history_.back());
+    return recordJson(history_.back(), history_.size());
   }
-  // Applies one step text (throws; the complex is then unchanged) and records it.
-  std::string apply(const std::string& text) {
+  // Applies one step (throws; the complex is then unchanged) and records it.
+  std::string apply(const OpStep& step) {
     dual();  // the tracker must see the state before the step
     StepRecord s;
-    OpStep step = parseOpStep(text);
-    s.result = hexdual::applyStep(cx_, step);
-    s.text = formatOpStep(step);
-    s.op = step.op;
-    s.change = tracker_->update(cx_, s.result);
+    s.report = applyStepTracked(cx_, *tracker_, step);
     return record(std::move(s));
   }
   std::string applyFlip(const std::string& name, const std::vector<int>& hexes, bool viaAtomic) {
@@ -458,13 +418,10 @@ class WasmMesh {
     flipClass(name);  // throws for an unknown name
     if (!viaAtomic) {
       StepRecord s;
-      s.result = hexdual::flip(cx_, name, hexes);
-      s.result.op = name;
-      s.op = "flip";
-      s.text = "flip " + name + " " + idList(hexes);
-      s.loggable = false;
+      s.report.result = hexdual::flip(cx_, name, hexes);
+      s.flipName = name;
       s.flipHexes = hexes;
-      s.change = tracker_->update(cx_, touchedHexes(cx_, s.result.edits), false);
+      s.report.dual = tracker_->update(cx_, s.report.result.edits, false);
       return "[" + record(std::move(s)) + "]";
     }
     const StoredDecomposition* found = nullptr;
@@ -472,7 +429,7 @@ class WasmMesh {
       if (d.problem == name && d.found) found = &d;
     if (!found) throw Error("flip " + name + " has no stored atomic decomposition (see flips())");
     Complex trial = cx_;  // placed on a copy first: a step that cannot be placed changes nothing
-    std::vector<std::string> steps = replayInEmbedding(problemFor(name), found->steps, trial, hexes, "the mesh");
+    std::vector<OpStep> steps = replayInEmbedding(problemFor(name), found->steps, trial, hexes, "the mesh");
     size_t mark = history_.size();
     std::string json = "[";
     try {
@@ -486,8 +443,8 @@ class WasmMesh {
   void undoOne() {
     StepRecord s = std::move(history_.back());
     history_.pop_back();
-    cx_.undo(s.result.edits);
-    tracker_->update(cx_, touchedHexes(cx_, s.result.edits), s.loggable && DualTracker::keepsSheetTopology(s.result.op));
+    cx_.undo(s.report.result.edits);
+    tracker_->update(cx_, s.report.result.edits, keepsSheetTopology(s.report.result));
     tracker_->releaseRetiredTail();
     redo_.push_back(std::move(s));
   }
@@ -564,7 +521,7 @@ std::string flipsJson() {
             if (d.problem == fc.name && d.found) found = &d;
           if (found) {
             w.beginArray();
-            for (const auto& s : found->steps) w.value(s);
+            for (const auto& s : found->steps) w.value(formatOpStep(s));
             w.endArray();
           } else {
             w.raw("null");

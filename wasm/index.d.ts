@@ -83,6 +83,8 @@ export interface StepReport {
   op: OpName | 'flip';
   /** The step that undoes this one (up to ids), or null when there is none (use undo()). */
   inverse: string | null;
+  /** Why there is no inverse step (only when `inverse` is null). */
+  noInverse?: string;
   created: { hexes: number[]; vertices: number[] };
   removed: { hexes: number[]; vertices: number[] };
   delta: { V: number; E: number; F: number; H: number };
@@ -94,7 +96,8 @@ export type Near = { hex: number } | { hex: number; face: number } | { hex: numb
 
 /** The JSON form of a sheet diagram (`hexdual sheets --json`). */
 export type XY = [number, number];
-export interface SheetDiagramJSON {
+/** What a sheet diagram shows and how it was laid out. */
+export interface DiagramHeader {
   sheet: number;
   topology: SheetTopology;
   method: 'disk' | 'annulus' | 'sphere' | 'local';
@@ -102,6 +105,8 @@ export interface SheetDiagramJSON {
   note: string;
   radius: number;
   openedHex: number | null;
+}
+export interface SheetDiagramJSON extends DiagramHeader {
   crossings: { hex: number; axis: number; x: number; y: number; chords: [number, number]; outside: boolean }[];
   boundary: { hex: number; face: number; x: number; y: number }[];
   chords: { id: number; otherSheet: number; closed: boolean; hexes: number[]; points: XY[] }[];
@@ -114,14 +119,7 @@ export interface SheetDiagramJSON {
  * `radius` around the origin. Polylines (chords, loops) are runs of points: item k spans points
  * offsets[k] .. offsets[k+1]-1.
  */
-export interface SheetDiagram {
-  sheet: number;
-  topology: SheetTopology;
-  method: 'disk' | 'annulus' | 'sphere' | 'local';
-  local: boolean;
-  note: string;
-  radius: number;
-  openedHex: number | null;
+export interface SheetDiagram extends DiagramHeader {
   /** One per (hex, axis) slot of the sheet: where two chords cross; labelled by hex id. */
   crossings: { hex: Int32Array; axis: Int8Array; xy: Float64Array; chords: Int32Array; outside: Uint8Array };
   /** Where chords meet the boundary loop: a boundary quad (hex, local face). */
@@ -157,7 +155,7 @@ type DisposeKey = SymbolConstructor extends { readonly dispose: infer K extends 
 type MaybeDisposable = { [K in DisposeKey]: () => void };
 
 export interface LoadOptions {
-  /** Reserved: keep only the hexahedra of a mixed file (readers of mixed meshes). */
+  /** Keep only the hexahedra of a mixed file. Reserved: this build rejects `true` (PRECONDITION). */
   hexesOnly?: boolean;
 }
 

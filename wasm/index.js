@@ -131,6 +131,21 @@ function intVector(what, list) {
   }
   return v;
 }
+// The engine's step report (as `hexdual apply --json`) under the names of StepReport in index.d.ts.
+function toReport({ flip, report: r }) {
+  const report = {
+    step: flip ? `flip ${flip}` : r.text,
+    op: flip ? 'flip' : r.op,
+    inverse: r.inverse === '' ? null : r.inverse,
+    created: { hexes: r.createdHexes, vertices: r.createdVertices },
+    removed: { hexes: r.removedHexes, vertices: r.removedVertices },
+    delta: r.delta,
+    changedSheets: r.sheets,
+    changedChords: r.chords,
+  };
+  if (report.inverse === null) report.noInverse = flip ? 'a flip applied directly has no inverse step; use undo()' : r.noInverse;
+  return report;
+}
 const OPS = ['pillow', 'unpillow', 'chordpush', 'chordpull', 'hexpush', 'hexpull', 'ringcollapse', 'facecollapse', 'facesplit'];
 const FORMATS = ['vtk', 'mesh', 'hxd'];
 
@@ -160,7 +175,9 @@ export class Mesh {
   static load(bytes, name = 'mesh', options = {}) {
     const data = toBytes('load: bytes', bytes);
     if (typeof name !== 'string') throw new HexdualError('PRECONDITION', 'load: name must be a string');
-    void options;
+    if (options.hexesOnly) {
+      throw new HexdualError('PRECONDITION', 'load: hexesOnly needs the mixed-mesh readers, which this build does not have yet');
+    }
     return new Mesh(check(module().WasmMesh.load(data, name)));
   }
   /** Whether two meshes are the same complex up to renumbering, boundary kept. */
@@ -241,7 +258,7 @@ export class Mesh {
    */
   apply(step) {
     if (typeof step !== 'string') throw new HexdualError('PRECONDITION', 'apply: step must be a string such as "pillow h13f5"');
-    const report = JSON.parse(check(this.#live().applyReport(step)));
+    const report = toReport(JSON.parse(check(this.#live().applyReport(step))));
     this.#changed();
     return report;
   }
@@ -252,7 +269,7 @@ export class Mesh {
   applyLog(log, { stopAt } = {}) {
     if (typeof log !== 'string') throw new HexdualError('PRECONDITION', 'applyLog: log must be a string');
     const n = stopAt === undefined ? -1 : integer('applyLog: stopAt', stopAt, 0);
-    const reports = JSON.parse(check(this.#live().applyLog(log, n)));
+    const reports = JSON.parse(check(this.#live().applyLog(log, n))).map(toReport);
     this.#changed();
     return reports;
   }
@@ -264,7 +281,7 @@ export class Mesh {
   }
   /** Re-applies the last undone step; returns its report. */
   redo() {
-    const report = JSON.parse(check(this.#live().redo()));
+    const report = toReport(JSON.parse(check(this.#live().redo())));
     this.#changed();
     return report;
   }
@@ -309,7 +326,7 @@ export class Mesh {
     if (typeof name !== 'string') throw new HexdualError('PRECONDITION', 'flip: name must be a string such as "2-6"');
     const v = intVector('flip: hexes', hexes);
     try {
-      const reports = JSON.parse(check(this.#live().flip(name, v, !!viaAtomic)));
+      const reports = JSON.parse(check(this.#live().flip(name, v, !!viaAtomic))).map(toReport);
       this.#changed();
       return reports;
     } finally {

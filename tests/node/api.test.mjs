@@ -69,7 +69,7 @@ test('log in text and URL form; applyLog with stopAt, all or nothing', () => {
   const before = k.save('hxd');
   assert.throws(() => k.applyLog('v1;hexpush h13f5;hexpush h0f0'), (e) =>
     e instanceof HexdualError && e.code === 'PRECONDITION' &&
-    e.message === 'step 2 (hexpush h0f0): hexPush: quad h0f0 is on the boundary; hex push needs an interior quad');
+    e.message === 'step 2 (hexpush h0f0): hexpush: quad h0f0 is on the boundary; hex push needs an interior quad');
   assert.deepEqual(k.save('hxd'), before);  // step 1 was undone
   assert.equal(k.log, 'v1;pillow h13f5');
   assert.throws(() => k.applyLog('v2;pillow h1f1'), (e) => e.code === 'PARSE');

@@ -24,12 +24,14 @@ function build(spec) {
 
 // The CLI's per-step JSON in the package's StepReport shape.
 function fromCli(s) {
-  return {
+  const report = {
     step: s.text, op: s.op, inverse: s.inverse === '' ? null : s.inverse,
     created: { hexes: s.createdHexes, vertices: s.createdVertices },
     removed: { hexes: s.removedHexes, vertices: s.removedVertices },
     delta: s.delta, changedSheets: s.sheets, changedChords: s.chords,
   };
+  if (s.inverse === '') report.noInverse = s.noInverse;
+  return report;
 }
 
 test(`${lines.length} operation logs: CLI and package give the same ids, reports and canonical hash`, () => {

@@ -60,7 +60,7 @@ test('Node: examples/node runs from the installed tarball (ESM, no flags)', () =
   const out = run('node', ['main.mjs'], dir);
   assert.match(out, /^pillow: created hexes 27,28, delta \{"V":4,"E":8,"F":6,"H":2\}, inverse 'unpillow h27'$/m);
   assert.match(out, /^log v1;pillow h13f5;hexpush h13f5  url 1\.P13f5\.H13f5  hash [0-9a-f]{16}$/m);
-  assert.match(out, /^rejected \(PRECONDITION\): hexPush: quad h0f0 is on the boundary; hex push needs an interior quad$/m);
+  assert.match(out, /^rejected \(PRECONDITION\): hexpush: quad h0f0 is on the boundary; hex push needs an interior quad$/m);
   assert.match(out, /^after undo: 29 hexes, log v1;pillow h13f5$/m);
   assert.match(out, /^binary VTK: \d+ bytes; .hxd reloaded isomorphic: true$/m);
   assert.ok(readFileSync(join(dir, 'sheet.svg'), 'utf8').startsWith('<svg'));
