@@ -85,6 +85,11 @@ test('errors arrive as HexdualError with a code and the C++ message', () => {
   assert.throws(() => m.save('obj'), is('PRECONDITION', "unknown format 'obj' (vtk, mesh or hxd)"));
   assert.throws(() => m.apply('frobnicate h1'), is('PARSE', "oplog: position 0: unknown operation at 'frobnicate'"));
   assert.throws(() => m.undo(), is('PRECONDITION', 'undo: nothing to undo'));
+  const g = Mesh.grid(3, 3, 3);
+  assert.throws(() => g.apply('facecollapse h1e3 h4f5 h13f2'), is('INVALID_RESULT',
+    'facecollapse: the result would not be a valid complex (validate: hex 13 uses vertex 25 at corners 3 and 4)'));
+  assert.equal(g.counts.hexes, 27);
+  g.delete();
   assert.throws(() => m.redo(), is('PRECONDITION', 'redo: nothing to redo'));
   m.delete();
   assert.throws(() => m.counts, is('PRECONDITION', 'hexdual: this Mesh has been deleted'));
