@@ -1,6 +1,6 @@
 // Wasm benchmark in Node: `node bench/bench_wasm.mjs build N [REPS]` prints one JSON line with the
 // same fields as `hexdual_bench build N` (times are medians of the warm repetitions).
-import { init, Mesh } from '../wasm/index.js';
+import { init, Mesh } from 'hexdual';
 
 const [, , what, nArg, repsArg] = process.argv;
 if ((what !== 'build' && what !== 'layout') || !nArg) {
@@ -8,20 +8,26 @@ if ((what !== 'build' && what !== 'layout') || !nArg) {
   process.exit(2);
 }
 if (what === 'layout') {
-  // Layout of the z-layer sheet of an N x N x 2 grid, including the JSON that crosses into JS.
+  // Layout of the z-layer sheet of an N x N x 2 grid as typed arrays (what sheetDiagram returns),
+  // and, for comparison, as the JSON object (sheetDiagramJSON: JSON text built and parsed).
   await init();
   const n = Number(nArg), reps = Number(repsArg || 5);
   const m = Mesh.grid(n, n, 2);
   const sheet = m.sheets.find((s) => s.hexes === n * n).id;
-  const times = [];
-  let slots = 0;
-  for (let r = 0; r < reps; r++) {
-    const t0 = performance.now();
-    slots = m.sheetDiagram(sheet).crossings.length;
-    times.push(performance.now() - t0);
-  }
-  times.sort((a, b) => a - b);
-  console.log(JSON.stringify({ bench: 'layout-wasm', n, slots, ms: +times[Math.floor(times.length / 2)].toFixed(3) }));
+  const time = (f) => {
+    const times = [];
+    for (let r = 0; r < reps; r++) {
+      const t0 = performance.now();
+      f();
+      times.push(performance.now() - t0);
+    }
+    times.sort((a, b) => a - b);
+    return +times[Math.floor(times.length / 2)].toFixed(3);
+  };
+  const slots = m.sheetDiagram(sheet).crossings.hex.length;
+  const ms = time(() => m.sheetDiagram(sheet));
+  const jsonMs = time(() => m.sheetDiagramJSON(sheet));
+  console.log(JSON.stringify({ bench: 'layout-wasm', n, slots, ms, jsonMs }));
   m.delete();
   process.exit(0);
 }

@@ -53,10 +53,16 @@ done
 echo
 echo "### Sheet diagram layout (the z-layer sheet of an n x n x 2 grid; median of 5)"
 echo
-echo "| sheet hexes | native ms (layout) | wasm ms (layout + JSON to JS) |"
-echo "| --- | --- | --- |"
+echo "| sheet hexes | native ms (layout) | wasm ms (typed arrays to JS) | wasm/native | wasm ms (JSON object to JS) |"
+echo "| --- | --- | --- | --- | --- |"
 for n in 10 30 100; do
   a=$(build/native/hexdual_bench layout "$n" 5)
   b=$(node bench/bench_wasm.mjs layout "$n" 5)
-  node -e 'const a = JSON.parse(process.argv[1]), b = JSON.parse(process.argv[2]); console.log(`| ${a.slots} | ${a.ms.toFixed(1)} | ${b.ms.toFixed(1)} |`);' "$a" "$b"
+  node -e 'const a = JSON.parse(process.argv[1]), b = JSON.parse(process.argv[2]); console.log(`| ${a.slots} | ${a.ms.toFixed(1)} | ${b.ms.toFixed(1)} | ${(b.ms / a.ms).toFixed(2)} | ${b.jsonMs.toFixed(1)} |`);' "$a" "$b"
 done
+
+echo
+echo "### The npm package's size"
+echo
+wasm=wasm/dist/hexdual.wasm
+echo "hexdual.wasm $(stat -c %s $wasm) bytes, $(gzip -9c $wasm | wc -c) gzipped; loader hexdual.mjs $(stat -c %s wasm/dist/hexdual.mjs) bytes, $(gzip -9c wasm/dist/hexdual.mjs | wc -c) gzipped"

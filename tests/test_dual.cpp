@@ -1,8 +1,12 @@
 #include <doctest/doctest.h>
 
 #include "complex/builders.hpp"
+#include "dual/dual_tracker.hpp"
 #include "helpers.hpp"
 #include "io/io.hpp"
+#include "ops/op_table.hpp"
+#include "ops/oplog.hpp"
+#include "ops/report.hpp"
 
 using namespace hexdual;
 using namespace hexdual::test;
@@ -117,4 +121,23 @@ TEST_CASE("validateDual accepts extracted duals and names a tampered slot") {
     bad.sheetOf[1][0] = bad.sheetOf[1][1];
     CHECK(contains(errorOf([&] { validateDual(cx, bad); }), "validateDual: slot (hex 1, axis 0)"));
   }
+}
+
+TEST_CASE("dual tracker: after an exact undo, releaseRetiredTail gives the redone step the same ids") {
+  Complex cx = makeGrid(3, 3, 3);
+  DualTracker tracker(cx);
+  const Dual before = tracker.dual();
+  StepReport first = applyStepTracked(cx, tracker, parseOpStep("pillow h13f5"));
+  REQUIRE(first.dual.sheetsCreated == std::vector<int>{9});
+  REQUIRE(first.dual.chordsCreated == std::vector<int>{27, 28});
+  cx.undo(first.result.edits);
+  tracker.update(cx, first.result.edits, keepsSheetTopology(first.result));
+  CHECK(tracker.dual().sheets.size() == 10);  // sheet 9 retired, still holding its id
+  tracker.releaseRetiredTail();
+  CHECK(tracker.dual().sheets.size() == before.sheets.size());
+  CHECK(tracker.dual().chords.size() == before.chords.size());
+  StepReport again = applyStepTracked(cx, tracker, parseOpStep("pillow h13f5"));
+  CHECK(again.dual.sheetsCreated == first.dual.sheetsCreated);
+  CHECK(again.dual.chordsCreated == first.dual.chordsCreated);
+  CHECK(again.dual.chordsChanged == first.dual.chordsChanged);
 }

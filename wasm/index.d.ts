@@ -1,10 +1,27 @@
-// Hand-written types for hexdual's JS API (wasm/index.js).
+// Hand-written types for hexdual's JS API (wasm/index.js, and wasm/index.node.js in Node).
+// They need no particular `lib`: `Symbol.dispose` is used only where the lib declares it.
+
 export interface InitOptions {
+  /** The .wasm bytes, when the application loads them itself. */
   wasmBinary?: ArrayBuffer | Uint8Array;
+  /** Maps 'hexdual.wasm' to the URL it is served from (e.g. a bundler's asset URL). */
   locateFile?: (path: string, prefix: string) => string;
 }
+/** Loads the WebAssembly module once; later calls return the same module. */
 export function init(options?: InitOptions): Promise<unknown>;
+/** Bytes currently allocated inside the wasm heap (for leak tests). */
 export function heapBytes(): number;
+
+/** PARSE: unreadable file or operation log. PRECONDITION: an argument or state the call needs is
+ *  missing. INVALID_RESULT: the result (or the mesh) breaks an invariant. LIMIT: a size, memory or
+ *  runtime limit. IO: the module or its .wasm could not be loaded. */
+export type ErrorCode = 'PARSE' | 'PRECONDITION' | 'INVALID_RESULT' | 'LIMIT' | 'IO';
+export class HexdualError extends Error {
+  constructor(code: ErrorCode, message: string);
+  readonly name: 'HexdualError';
+  readonly code: ErrorCode;
+}
+
 export interface FlipInfo {
   name: string;
   inverse: string;
@@ -48,8 +65,39 @@ export interface RenderBuffers {
   triangleHex: Int32Array;
 }
 export type Format = 'vtk' | 'mesh' | 'hxd';
+export type OpName =
+  | 'pillow' | 'unpillow' | 'chordpush' | 'chordpull' | 'hexpush' | 'hexpull' | 'ringcollapse' | 'facecollapse' | 'facesplit';
+export type FlipName = '1-7' | '2-6' | '3-5c' | '3-5e' | '4-4m' | '4-4v' | '5-3c' | '5-3e' | '6-2' | '7-1';
+
+export interface IdChanges {
+  created: number[];
+  removed: number[];
+  /** Same id, different hexes. */
+  changed: number[];
+}
+/** What one step did (the same facts as `hexdual apply --json`). */
+export interface StepReport {
+  /** The step as applied, normalised ('pillow h13f5'); a direct flip reads 'flip 2-6 [13,22]'. */
+  step: string;
+  /** The operation-log name: 'pillow', 'chordpush', ..., or 'flip' for a direct flip. */
+  op: OpName | 'flip';
+  /** The step that undoes this one (up to ids), or null when there is none (use undo()). */
+  inverse: string | null;
+  /** Why there is no inverse step (only when `inverse` is null). */
+  noInverse?: string;
+  created: { hexes: number[]; vertices: number[] };
+  removed: { hexes: number[]; vertices: number[] };
+  delta: { V: number; E: number; F: number; H: number };
+  changedSheets: IdChanges;
+  changedChords: IdChanges;
+}
+/** Where candidates() looks: a hex, a quad (hex + local face) or an edge (hex + local edge). */
+export type Near = { hex: number } | { hex: number; face: number } | { hex: number; edge: number };
+
+/** The JSON form of a sheet diagram (`hexdual sheets --json`). */
 export type XY = [number, number];
-export interface SheetDiagram {
+/** What a sheet diagram shows and how it was laid out. */
+export interface DiagramHeader {
   sheet: number;
   topology: SheetTopology;
   method: 'disk' | 'annulus' | 'sphere' | 'polygon' | 'local';
@@ -58,6 +106,8 @@ export interface SheetDiagram {
   radius: number;
   euler: number;
   openedHex: number | null;
+}
+export interface SheetDiagramJSON extends DiagramHeader {
   crossings: { hex: number; axis: number; x: number; y: number; chords: [number, number]; outside: boolean }[];
   boundary: { hex: number; face: number; x: number; y: number }[];
   chords: { id: number; otherSheet: number; closed: boolean; piece: number; hexes: number[]; points: XY[] }[];
@@ -67,25 +117,84 @@ export interface SheetDiagram {
   cells: { edge: [number, number]; x: number; y: number }[];
 }
 
+/**
+ * A sheet diagram as typed arrays. Points are (x, y) pairs in `xy` arrays, inside the circle of
+ * `radius` around the origin. Polylines (chords, loops) are runs of points: item k spans points
+ * offsets[k] .. offsets[k+1]-1.
+ */
+export interface SheetDiagram extends DiagramHeader {
+  /** One per (hex, axis) slot of the sheet: where two chords cross; labelled by hex id. */
+  crossings: { hex: Int32Array; axis: Int8Array; xy: Float64Array; chords: Int32Array; outside: Uint8Array };
+  /** Where chords meet the boundary loop: a boundary quad (hex, local face). */
+  boundary: { hex: Int32Array; face: Int8Array; xy: Float64Array };
+  chords: {
+    id: Int32Array;
+    otherSheet: Int32Array;
+    closed: Uint8Array;
+    offsets: Uint32Array;
+    xy: Float64Array;
+    hexOffsets: Uint32Array;
+    hexes: Int32Array;
+  };
+  /** Boundary loops (outer first), or the dotted circle of a local diagram. */
+  loops: { offsets: Uint32Array; xy: Float64Array };
+  /** Mid-surface vertices: one per primal edge (hex, local edge) crossing the sheet. */
+  cells: { hex: Int32Array; edge: Int8Array; xy: Float64Array };
+  /** Mid-surface quads, 4 cell indices per crossing. */
+  quads: Int32Array;
+}
+export interface DiagramOptions {
+  /** Hex ids: draw only the part of the sheet around them, in a dotted circle. */
+  local?: Iterable<number>;
+  /** How many rings of hexes around `local` (default 2). */
+  rings?: number;
+}
+/** The diagram drawn as an SVG document (as `hexdual sheets --svg`). */
+export function diagramToSVG(d: SheetDiagram): string;
+
+// `[Symbol.dispose]` appears on Mesh only where the lib declares Symbol.dispose (esnext, es2025
+// or esnext.disposable), so `using m = Mesh.grid(...)` works there and plain es2022 still compiles.
+type DisposeKey = SymbolConstructor extends { readonly dispose: infer K extends symbol } ? K : never;
+type MaybeDisposable = { [K in DisposeKey]: () => void };
+
+export interface LoadOptions {
+  /** Keep only the hexahedra of a mixed file. Reserved: this build rejects `true` (PRECONDITION). */
+  hexesOnly?: boolean;
+}
+
+export interface Mesh extends MaybeDisposable {}
 export class Mesh {
+  private constructor(raw: never);
   static grid(a: number, b: number, c: number): Mesh;
   static ring(around: number, radial: number, axial: number): Mesh;
   static fourCube(): Mesh;
-  static load(bytes: Uint8Array | ArrayBuffer | string, name?: string): Mesh;
+  static load(bytes: Uint8Array | ArrayBuffer | ArrayBufferView | string, name?: string, options?: LoadOptions): Mesh;
+  static isomorphic(a: Mesh, b: Mesh): boolean;
   info(): Info;
   readonly counts: Counts;
   readonly sheets: SheetInfo[];
   readonly chords: ChordInfo[];
   sheetHexes(id: number): Int32Array;
   chordHexes(id: number): Int32Array;
+  hexCenters(): Float64Array;
   dualSizes(): { sheets: number; chords: number };
-  sheetDiagram(id: number): SheetDiagram;
-  localSheetDiagram(id: number, hexes: number[], rings?: number): SheetDiagram;
-  apply(step: string): string | null;
+  sheetDiagram(id: number, options?: DiagramOptions): SheetDiagram;
+  sheetDiagramJSON(id: number, options?: DiagramOptions): SheetDiagramJSON;
+  localSheetDiagram(id: number, hexes: Iterable<number>, rings?: number): SheetDiagramJSON;
+  apply(step: string): StepReport;
+  applyLog(log: string, options?: { stopAt?: number }): StepReport[];
+  undo(): string;
+  redo(): StepReport;
+  readonly canUndo: boolean;
+  readonly canRedo: boolean;
+  readonly log: string;
+  readonly logUrl: string;
+  candidates(op?: OpName, options?: { near?: Near }): string[];
+  flip(name: FlipName, hexes: Iterable<number>, options?: { viaAtomic?: boolean }): StepReport[];
+  canonicalHash(): string;
   memoryBytes(): number;
   validate(): void;
-  save(format: Format, options?: { binary?: boolean }): string;
+  save(format: Format, options?: { binary?: boolean }): Uint8Array;
   renderBuffers(options?: { shrink?: number }): RenderBuffers;
   delete(): void;
-  [Symbol.dispose](): void;
 }

@@ -1,75 +1,201 @@
 // hexdual: idiomatic JS over the Embind module. `await init()` once, then use Mesh.
+// This is the browser (and default) entry; Node resolves `hexdual` to index.node.js, which only
+// changes how init() reads the .wasm. Nothing here imports a Node module.
 import createHexdual from './dist/hexdual.mjs';
 
 let modulePromise = null;
 let M = null;
 
+/** Every error hexdual throws: `code` says what kind, `message` is the engine's. */
+export class HexdualError extends Error {
+  constructor(code, message) {
+    super(message);
+    this.name = 'HexdualError';
+    this.code = code;
+  }
+}
+
+// A minimal module holding one `try` block: valid only where WebAssembly exception handling is.
+const EH_PROBE = new Uint8Array([0, 97, 115, 109, 1, 0, 0, 0, 1, 4, 1, 96, 0, 0, 3, 2, 1, 0, 10, 7, 1, 5, 0, 6, 64, 11, 11]);
+
+function requireWasmExceptions() {
+  if (typeof WebAssembly !== 'object') throw new HexdualError('LIMIT', 'hexdual: this JavaScript runtime has no WebAssembly');
+  if (!WebAssembly.validate(EH_PROBE)) {
+    throw new HexdualError(
+      'LIMIT',
+      'hexdual: this runtime lacks WebAssembly exception handling, which hexdual needs ' +
+        '(Node >= 17, Chromium/Chrome/Edge >= 95, Firefox >= 100, Safari >= 15.2)',
+    );
+  }
+}
+
+function isWasm(bytes) {
+  return bytes.length >= 4 && bytes[0] === 0 && bytes[1] === 0x61 && bytes[2] === 0x73 && bytes[3] === 0x6d;
+}
+
+async function fetchWasm(url) {
+  let response;
+  try {
+    response = await fetch(url);
+  } catch (e) {
+    throw new HexdualError('IO', `hexdual: cannot fetch ${url}: ${e.message}`);
+  }
+  const bytes = response.ok ? new Uint8Array(await response.arrayBuffer()) : new Uint8Array(0);
+  return isWasm(bytes) ? bytes : null;
+}
+
+// Where the .wasm lies relative to this file; bundlers see the literal and emit the file.
+const wasmUrl = () => new URL('./dist/hexdual.wasm', import.meta.url);
+// A dev server that pre-bundles dependencies (Vite) moves this file to node_modules/.vite/deps/
+// but not the .wasm: look for it where the package is installed. (Not a literal on purpose.)
+const PREBUNDLED_FALLBACK = '../../hexdual/wasm/dist/hexdual.wasm';
+
+/** The .wasm bytes next to this module (the default when init() gets no location). */
+export async function defaultWasmBinary() {
+  const url = wasmUrl();
+  if (url.protocol === 'file:') {
+    throw new HexdualError('IO', "hexdual: in Node import 'hexdual' (its node entry reads the .wasm from disk) or pass init({ wasmBinary })");
+  }
+  const bytes = (await fetchWasm(url)) ?? (/\/\.vite\/deps\//.test(import.meta.url) ? await fetchWasm(new URL(PREBUNDLED_FALLBACK, import.meta.url)) : null);
+  if (!bytes) {
+    throw new HexdualError('IO', `hexdual: ${url} is not the WebAssembly module (is it served?); pass init({ locateFile }) or init({ wasmBinary })`);
+  }
+  return bytes;
+}
+
 /**
- * Loads the WebAssembly module. In Node the .wasm is read from disk; in a browser pass
- * `locateFile` (or `wasmBinary`) when the bundler moves the file.
+ * Loads the WebAssembly module once (later calls return the same promise). With no options the
+ * .wasm is fetched from beside this file; `locateFile` or `wasmBinary` override that.
  */
-export async function init(options = {}) {
+export async function init(options = {}, loadDefault = defaultWasmBinary) {
   if (!modulePromise) {
-    const opts = { ...options };
-    if (!opts.wasmBinary && !opts.locateFile && typeof process !== 'undefined' && process.versions?.node) {
-      const { readFile } = await import('node:fs/promises');
-      opts.wasmBinary = await readFile(new URL('./dist/hexdual.wasm', import.meta.url));
-    }
-    modulePromise = createHexdual(opts);
+    modulePromise = (async () => {
+      requireWasmExceptions();
+      const opts = { ...options };
+      if (!opts.wasmBinary && !opts.locateFile) opts.wasmBinary = await loadDefault();
+      try {
+        return await createHexdual(opts);
+      } catch (e) {
+        throw e instanceof HexdualError ? e : new HexdualError('IO', `hexdual: the WebAssembly module did not load: ${e?.message ?? e}`);
+      }
+    })();
+    modulePromise.catch(() => {
+      modulePromise = null;  // a failed init may be retried with other options
+    });
   }
   M = await modulePromise;
   return M;
 }
 
 function module() {
-  if (!M) throw new Error('hexdual: call `await init()` first');
+  if (!M) throw new HexdualError('PRECONDITION', 'hexdual: call `await init()` first');
   return M;
 }
 
+// Turns the engine's stored error into a HexdualError when a call failed.
 function check(result) {
-  if (result === null || result === undefined || result === false) {
-    throw new Error(module().lastError() || 'hexdual: unknown error');
+  if (result === null || result === undefined || result === false || result === '' || result === -1) {
+    const Mod = module();
+    throw new HexdualError(Mod.lastErrorCode() || 'PRECONDITION', Mod.lastError() || 'hexdual: unknown error');
   }
   return result;
 }
+
+function integer(what, x, min = -2147483648) {
+  if (typeof x !== 'number' || !Number.isInteger(x) || x < min || x > 2147483647) {
+    throw new HexdualError('PRECONDITION', `${what} must be an integer${min > -2147483648 ? ` >= ${min}` : ''}, not ${describe(x)}`);
+  }
+  return x;
+}
+function finite(what, x) {
+  if (typeof x !== 'number' || !Number.isFinite(x)) throw new HexdualError('PRECONDITION', `${what} must be a finite number, not ${describe(x)}`);
+  return x;
+}
+function describe(x) {
+  return typeof x === 'string' ? `'${x}'` : String(x);
+}
+function toBytes(what, data) {
+  if (typeof data === 'string') return new TextEncoder().encode(data);
+  if (data instanceof Uint8Array) return data;
+  if (data instanceof ArrayBuffer || ArrayBuffer.isView(data)) return new Uint8Array(data.buffer ?? data, data.byteOffset ?? 0, data.byteLength);
+  throw new HexdualError('PRECONDITION', `${what} must be a Uint8Array, ArrayBuffer or string`);
+}
+function intVector(what, list) {
+  if (!list || typeof list[Symbol.iterator] !== 'function') throw new HexdualError('PRECONDITION', `${what} must be a list of hex ids`);
+  const v = new (module().IntVector)();
+  try {
+    for (const h of list) v.push_back(integer(`${what}: hex id`, h));
+  } catch (e) {
+    v.delete();
+    throw e;
+  }
+  return v;
+}
+// The engine's step report (as `hexdual apply --json`) under the names of StepReport in index.d.ts.
+function toReport({ flip, report: r }) {
+  const report = {
+    step: flip ? `flip ${flip}` : r.text,
+    op: flip ? 'flip' : r.op,
+    inverse: r.inverse === '' ? null : r.inverse,
+    created: { hexes: r.createdHexes, vertices: r.createdVertices },
+    removed: { hexes: r.removedHexes, vertices: r.removedVertices },
+    delta: r.delta,
+    changedSheets: r.sheets,
+    changedChords: r.chords,
+  };
+  if (report.inverse === null) report.noInverse = flip ? 'a flip applied directly has no inverse step; use undo()' : r.noInverse;
+  return report;
+}
+const OPS = ['pillow', 'unpillow', 'chordpush', 'chordpull', 'hexpush', 'hexpull', 'ringcollapse', 'facecollapse', 'facesplit'];
+const FORMATS = ['vtk', 'mesh', 'hxd'];
 
 export class Mesh {
   #raw;
   #info = null;
   constructor(raw) {
+    if (!raw || typeof raw.infoJson !== 'function') {
+      throw new HexdualError('PRECONDITION', 'hexdual: make meshes with Mesh.grid, Mesh.ring, Mesh.fourCube or Mesh.load');
+    }
     this.#raw = raw;
   }
 
   /** An a x b x c grid of unit hexes. */
   static grid(a, b, c) {
-    return new Mesh(check(module().WasmMesh.grid(a, b, c)));
+    return new Mesh(check(module().WasmMesh.grid(integer('grid: a', a), integer('grid: b', b), integer('grid: c', c))));
   }
   /** An O-grid ring mesh: `around` hexes around, `radial` layers outward, `axial` along the axis. */
   static ring(around, radial, axial) {
-    return new Mesh(check(module().WasmMesh.ring(around, radial, axial)));
+    return new Mesh(check(module().WasmMesh.ring(integer('ring: around', around), integer('ring: radial', radial), integer('ring: axial', axial))));
   }
   /** The closed boundary of the 4-cube (8 cubes; hex id = facet 2*axis+side), where flips are built. */
   static fourCube() {
     return new Mesh(check(module().WasmMesh.fourCube()));
   }
   /** Reads a .vtk (ASCII or binary), .mesh or .hxd file from its bytes; the format is detected. */
-  static load(bytes, name = 'mesh') {
-    const data = typeof bytes === 'string' ? new TextEncoder().encode(bytes) : new Uint8Array(bytes);
+  static load(bytes, name = 'mesh', options = {}) {
+    const data = toBytes('load: bytes', bytes);
+    if (typeof name !== 'string') throw new HexdualError('PRECONDITION', 'load: name must be a string');
+    if (options.hexesOnly) {
+      throw new HexdualError('PRECONDITION', 'load: hexesOnly needs the mixed-mesh readers, which this build does not have yet');
+    }
     return new Mesh(check(module().WasmMesh.load(data, name)));
+  }
+  /** Whether two meshes are the same complex up to renumbering, boundary kept. */
+  static isomorphic(a, b) {
+    return check(module().isomorphic(a.#live(), b.#live())) === 1;
   }
 
   #live() {
-    if (!this.#raw) throw new Error('hexdual: this Mesh has been deleted');
+    if (!this.#raw) throw new HexdualError('PRECONDITION', 'hexdual: this Mesh has been deleted');
     return this.#raw;
+  }
+  #changed() {
+    this.#info = null;
   }
 
   /** Counts, sheets and chords (the same object as `hexdual info --json`). */
   info() {
-    if (!this.#info) {
-      const text = this.#live().infoJson();
-      if (!text) check(null);
-      this.#info = JSON.parse(text);
-    }
+    if (!this.#info) this.#info = JSON.parse(check(this.#live().infoJson()));
     return this.#info;
   }
   get counts() {
@@ -84,40 +210,132 @@ export class Mesh {
   }
   /** Hex ids on a sheet, one per slot. */
   sheetHexes(id) {
-    return check(this.#live().sheetHexes(id));
+    return check(this.#live().sheetHexes(integer('sheetHexes: id', id)));
   }
   /** Hex ids along a chord, in order. */
   chordHexes(id) {
-    return check(this.#live().chordHexes(id));
+    return check(this.#live().chordHexes(integer('chordHexes: id', id)));
   }
-  /** The sheet diagram of a sheet: crossings, chords, boundary loops (docs/sheet-diagrams.md). */
-  sheetDiagram(id) {
-    const text = this.#live().sheetDiagramJson(id);
-    if (!text) check(null);
-    return JSON.parse(text);
+  /** Centroid of every hex: x, y, z per hex id (NaN for ids an operation removed). */
+  hexCenters() {
+    return this.#live().hexCenters();
   }
-  /** A local sheet diagram: the sheet within `rings` rings of the given hexes, in a dotted circle. */
-  localSheetDiagram(id, hexes, rings = 2) {
-    const M = module();
-    const v = new M.IntVector();
+  /**
+   * The sheet diagram of a sheet as typed arrays (docs/api.md); with `local`, only the part of the
+   * sheet within `rings` rings of the hexes in `local`, in a dotted circle.
+   */
+  sheetDiagram(id, { local, rings = 2 } = {}) {
+    integer('sheetDiagram: id', id);
+    integer('sheetDiagram: rings', rings, 0);
+    const v = intVector('sheetDiagram: local', local ?? []);
     try {
-      for (const h of hexes) v.push_back(h);
-      const text = this.#live().localSheetDiagramJson(id, v, rings);
-      if (!text) check(null);
-      return JSON.parse(text);
+      return check(this.#live().sheetDiagram(id, local !== undefined, v, rings));
+    } finally {
+      v.delete();
+    }
+  }
+  /** The sheet diagram as the JSON object of `hexdual sheets --json` (crossings, chords, loops, ...). */
+  sheetDiagramJSON(id, { local, rings = 2 } = {}) {
+    integer('sheetDiagram: id', id);
+    if (local === undefined) return JSON.parse(check(this.#live().sheetDiagramJson(id)));
+    return this.localSheetDiagram(id, local, rings);
+  }
+  /** A local sheet diagram as a JSON object: the sheet within `rings` rings of the given hexes. */
+  localSheetDiagram(id, hexes, rings = 2) {
+    integer('localSheetDiagram: id', id);
+    integer('localSheetDiagram: rings', rings, 0);
+    const v = intVector('localSheetDiagram: hexes', hexes);
+    try {
+      return JSON.parse(check(this.#live().localSheetDiagramJson(id, v, rings)));
     } finally {
       v.delete();
     }
   }
   /**
-   * Applies one operation-log step, e.g. 'pillow h13f5'; returns the inverse step
-   * (or null when the operation has none). Throws, leaving the mesh unchanged, on a bad step.
+   * Applies one operation-log step, e.g. 'pillow h13f5'; returns its report (ids created and
+   * removed, the change of counts and of the dual, the inverse step). Throws HexdualError, leaving
+   * the mesh unchanged, on a bad step.
    */
   apply(step) {
-    const inv = this.#live().applyStep(step);
-    if (!inv) check(null);
-    this.#info = null;
-    return inv === '-' ? null : inv;
+    if (typeof step !== 'string') throw new HexdualError('PRECONDITION', 'apply: step must be a string such as "pillow h13f5"');
+    const report = toReport(JSON.parse(check(this.#live().applyReport(step))));
+    this.#changed();
+    return report;
+  }
+  /**
+   * Applies an operation log (text 'v1;pillow h13f5;...' or its URL form '1.P13f5...'), at most
+   * `stopAt` steps. All or nothing: on an error no step of the log stays applied.
+   */
+  applyLog(log, { stopAt } = {}) {
+    if (typeof log !== 'string') throw new HexdualError('PRECONDITION', 'applyLog: log must be a string');
+    const n = stopAt === undefined ? -1 : integer('applyLog: stopAt', stopAt, 0);
+    const reports = JSON.parse(check(this.#live().applyLog(log, n))).map(toReport);
+    this.#changed();
+    return reports;
+  }
+  /** Undoes the last applied step exactly (ids included); returns that step's text. */
+  undo() {
+    const step = check(this.#live().undo());
+    this.#changed();
+    return step;
+  }
+  /** Re-applies the last undone step; returns its report. */
+  redo() {
+    const report = toReport(JSON.parse(check(this.#live().redo())));
+    this.#changed();
+    return report;
+  }
+  get canUndo() {
+    return this.#live().undoDepth() > 0;
+  }
+  get canRedo() {
+    return this.#live().redoDepth() > 0;
+  }
+  /** The applied steps as an operation log, 'v1;pillow h13f5;...'. */
+  get log() {
+    return check(this.#live().log(false));
+  }
+  /** The applied steps in the URL-safe form, '1.P13f5...'. */
+  get logUrl() {
+    return check(this.#live().log(true));
+  }
+  /**
+   * Steps that apply, as operation-log text: of one operation or of all; with `near` only those
+   * naming a hex ({ hex: 13 }), a quad ({ hex: 13, face: 5 }) or an edge ({ hex: 13, edge: 2 }).
+   */
+  candidates(op, { near } = {}) {
+    if (op !== undefined && !OPS.includes(op)) {
+      throw new HexdualError('PRECONDITION', `candidates: unknown operation ${describe(op)} (${OPS.join(', ')})`);
+    }
+    let kind = '', hex = -1, local = -1;
+    if (near !== undefined) {
+      hex = integer('candidates: near.hex', near?.hex);
+      if (near.face !== undefined && near.edge !== undefined) throw new HexdualError('PRECONDITION', 'candidates: near names a face or an edge, not both');
+      kind = near.face !== undefined ? 'quad' : near.edge !== undefined ? 'edge' : 'hex';
+      if (kind === 'quad') local = integer('candidates: near.face', near.face);
+      if (kind === 'edge') local = integer('candidates: near.edge', near.edge);
+    }
+    return JSON.parse(check(this.#live().candidates(op ?? '', kind, hex, local)));
+  }
+  /**
+   * Applies cubical flip `name` to the hexes forming its before side (like `hexdual flip NAME
+   * --at ...`); with viaAtomic, as its stored atomic steps (which then appear in `log`). Returns
+   * one report per step.
+   */
+  flip(name, hexes, { viaAtomic = false } = {}) {
+    if (typeof name !== 'string') throw new HexdualError('PRECONDITION', 'flip: name must be a string such as "2-6"');
+    const v = intVector('flip: hexes', hexes);
+    try {
+      const reports = JSON.parse(check(this.#live().flip(name, v, !!viaAtomic))).map(toReport);
+      this.#changed();
+      return reports;
+    } finally {
+      v.delete();
+    }
+  }
+  /** 64-bit hash (16 hex digits) of the canonical form, boundary kept: equal for isomorphic meshes. */
+  canonicalHash() {
+    return check(this.#live().canonicalHash());
   }
   /** Number of sheets and chords, without building the JSON description (cheap after the first call). */
   dualSizes() {
@@ -128,18 +346,19 @@ export class Mesh {
   memoryBytes() {
     return this.#live().memoryBytes();
   }
-  /** Throws an Error naming the first broken invariant. */
+  /** Throws a HexdualError naming the first broken invariant. */
   validate() {
     check(this.#live().validate());
   }
-  /** Writes the mesh as 'vtk', 'mesh' or 'hxd'; returns a string (binary VTK as a byte string). */
+  /** The mesh as a file: 'vtk' (ASCII, or binary with { binary: true }), 'mesh' or 'hxd'. */
   save(format, { binary = false } = {}) {
-    const text = this.#live().save(format, binary);
-    if (!text) check(null);
-    return text;
+    if (!FORMATS.includes(format)) throw new HexdualError('PRECONDITION', `unknown format ${describe(format)} (vtk, mesh or hxd)`);
+    return check(this.#live().saveBytes(format, !!binary));
   }
   /** Triangles of every hex shrunk toward its centre; copied out of the wasm heap. */
   renderBuffers({ shrink = 0.15 } = {}) {
+    finite('renderBuffers: shrink', shrink);
+    if (shrink < 0 || shrink >= 1) throw new HexdualError('PRECONDITION', `renderBuffers: shrink must be in [0, 1), not ${shrink}`);
     const raw = this.#live();
     check(raw.buildRender(shrink));
     return {
@@ -156,9 +375,18 @@ export class Mesh {
       this.#raw = null;
     }
   }
-  [Symbol.dispose]() {
+}
+// `using m = Mesh.grid(...)` where the runtime has explicit resource management.
+if (typeof Symbol.dispose === 'symbol') {
+  Mesh.prototype[Symbol.dispose] = function dispose() {
     this.delete();
-  }
+  };
+}
+
+/** A sheet diagram (from mesh.sheetDiagram) drawn as an SVG document. */
+export function diagramToSVG(d) {
+  if (!d || typeof d !== 'object' || !d.crossings) throw new HexdualError('PRECONDITION', 'diagramToSVG: pass a diagram from mesh.sheetDiagram()');
+  return check(module().diagramToSvg(d));
 }
 
 /**
@@ -166,9 +394,7 @@ export class Mesh {
  * and the stored atomic decomposition (op-log steps on Mesh.fourCube()) or null.
  */
 export function flips() {
-  const text = module().flipsJson();
-  if (!text) check(null);
-  return JSON.parse(text);
+  return JSON.parse(check(module().flipsJson()));
 }
 
 /** Bytes currently allocated inside the wasm heap (for leak tests). */

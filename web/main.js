@@ -29,7 +29,7 @@ function applySteps(mesh, steps) {
   const applied = [];
   for (const step of steps) {
     try {
-      applied.push({ step, inverse: mesh.apply(step) });
+      applied.push({ step, inverse: mesh.apply(step).inverse });
     } catch (e) {
       return { applied, error: `step ${applied.length + 1} (${step}): ${e.message}` };
     }

@@ -69,7 +69,7 @@ export function createSheetDiagram(container, actions) {
       }
       box.hidden = false;
       try {
-        draw(state.mesh.sheetDiagram(state.diagramSheet), state.selection);
+        draw(state.mesh.sheetDiagramJSON(state.diagramSheet), state.selection);
       } catch (e) {
         box.replaceChildren(Object.assign(document.createElement('div'), { className: 'diagram-note', textContent: e.message }));
       }

@@ -45,6 +45,14 @@ DualTracker::DualTracker(const Complex& cx) : dual_(extractDual(cx)) {
   }
 }
 
+void DualTracker::releaseRetiredTail() {
+  while (!dual_.sheets.empty() && !dual_.sheets.back().alive) {
+    dual_.sheets.pop_back();
+    selfHexes_.pop_back();
+  }
+  while (!dual_.chords.empty() && !dual_.chords.back().alive) dual_.chords.pop_back();
+}
+
 DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology) {
   return update(cx, touchedHexes(cx, edits), sheetsKeepTopology);
 }

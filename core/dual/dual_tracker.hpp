@@ -29,6 +29,10 @@ class DualTracker {
   // is local. A merge of two sheets, if one is ever found, falls back to re-flooding the sheets involved.
   DualChange update(const Complex& cx, std::vector<HexId> touched, bool sheetsKeepTopology = false);
 
+  // Drops retired ids at the end of the id ranges, so that after an exact undo (LIFO) the ids the
+  // undone step created are handed out again when it is redone.
+  void releaseRetiredTail();
+
  private:
   bool updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);

@@ -118,7 +118,7 @@ test('operations: apply a step, see the counts change, share it in the URL, undo
   // A rejected step leaves the mesh as it was and says why.
   await page.fill('#op-step', 'hexpush h0f0');
   await page.click('#op-apply');
-  assert.match(await page.locator('#error').textContent(), /hexPush: quad h0f0 is on the boundary/);
+  assert.match(await page.locator('#error').textContent(), /hexpush: quad h0f0 is on the boundary/);
   assert.equal((await shownCounts()).hexes, 29);
   // The shared URL rebuilds the same state.
   const url = page.url();

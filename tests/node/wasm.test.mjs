@@ -2,7 +2,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { init, Mesh, heapBytes } from '../../wasm/index.js';
+import { init, Mesh, HexdualError, heapBytes, diagramToSVG, flips } from 'hexdual';
 
 await init();
 
@@ -38,18 +38,23 @@ test('wasm info equals the native CLI info --json byte for byte', () => {
   }
 });
 
-test('load from bytes in all three formats, and save round trips', () => {
+test('load from bytes in all three formats, and save round trips (bytes out, binary VTK included)', () => {
   const m = Mesh.grid(2, 2, 2);
   for (const fmt of ['vtk', 'mesh', 'hxd']) {
-    const text = m.save(fmt);
-    const back = Mesh.load(text, `x.${fmt}`);
+    const bytes = m.save(fmt);
+    assert.ok(bytes instanceof Uint8Array);
+    const back = Mesh.load(bytes, `x.${fmt}`);
     assert.deepEqual(back.counts, m.counts);
+    assert.ok(Mesh.isomorphic(back, m));
     back.delete();
   }
+  const text = new TextDecoder().decode(m.save('vtk'));
+  assert.match(text, /^# vtk DataFile Version/);
   const bin = m.save('vtk', { binary: true });
-  const bytes = Uint8Array.from(bin, (ch) => ch.charCodeAt(0));
-  const back = Mesh.load(bytes, 'b.vtk');
+  assert.equal(new TextDecoder().decode(bin.slice(0, 200)).split('\n')[2], 'BINARY');
+  const back = Mesh.load(bin.buffer, 'b.vtk');  // an ArrayBuffer works too
   assert.deepEqual(back.counts, m.counts);
+  assert.equal(back.canonicalHash(), m.canonicalHash());
   back.delete();
   m.delete();
 });
@@ -68,28 +73,66 @@ test('render buffers: 6 faces x 4 vertices per hex, a hex id per triangle', () =
   m.delete();
 });
 
-test('errors arrive as Error with the C++ message', () => {
-  assert.throws(() => Mesh.grid(0, 1, 1), { message: 'grid: every dimension must be at least 1' });
-  assert.throws(() => Mesh.load('# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\n', 'p.vtk'), {
-    message: "p.vtk:4: dataset type 'POLYDATA' is not supported; only UNSTRUCTURED_GRID holds hexahedra",
-  });
-  assert.throws(() => Mesh.load('', 'empty.vtk'), { message: 'empty.vtk: the file is empty' });
+test('errors arrive as HexdualError with a code and the C++ message', () => {
+  const is = (code, message) => (e) => e instanceof HexdualError && e.name === 'HexdualError' && e.code === code && e.message === message;
+  assert.throws(() => Mesh.grid(0, 1, 1), is('PRECONDITION', 'grid: every dimension must be at least 1'));
+  assert.throws(() => Mesh.grid(10000, 10000, 10000), is('LIMIT', 'grid: more than 2^26 hexes'));
+  assert.throws(() => Mesh.load('# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\n', 'p.vtk'),
+    is('PARSE', "p.vtk:4: dataset type 'POLYDATA' is not supported; only UNSTRUCTURED_GRID holds hexahedra"));
+  assert.throws(() => Mesh.load('', 'empty.vtk'), is('PARSE', 'empty.vtk: the file is empty'));
   const m = Mesh.grid(1, 1, 1);
-  assert.throws(() => m.sheetHexes(99), { message: 'sheet 99 does not exist' });
-  assert.throws(() => m.save('obj'), { message: "unknown format 'obj' (vtk, mesh or hxd)" });
+  assert.throws(() => m.sheetHexes(99), is('PRECONDITION', 'sheet 99 does not exist'));
+  assert.throws(() => m.save('obj'), is('PRECONDITION', "unknown format 'obj' (vtk, mesh or hxd)"));
+  assert.throws(() => m.apply('frobnicate h1'), is('PARSE', "oplog: position 0: unknown operation at 'frobnicate'"));
+  assert.throws(() => m.undo(), is('PRECONDITION', 'undo: nothing to undo'));
+  const g = Mesh.grid(3, 3, 3);
+  assert.throws(() => g.apply('facecollapse h1e3 h4f5 h13f2'), is('INVALID_RESULT',
+    'facecollapse: the result would not be a valid complex (validate: hex 13 uses vertex 25 at corners 3 and 4)'));
+  assert.equal(g.counts.hexes, 27);
+  g.delete();
+  assert.throws(() => m.redo(), is('PRECONDITION', 'redo: nothing to redo'));
   m.delete();
-  assert.throws(() => m.counts, { message: 'hexdual: this Mesh has been deleted' });
+  assert.throws(() => m.counts, is('PRECONDITION', 'hexdual: this Mesh has been deleted'));
 });
 
-test('2,000 failing calls do not grow the heap', () => {
+test('NaN, infinities and non-integers are rejected, not rounded', () => {
+  const is = (message) => (e) => e instanceof HexdualError && e.code === 'PRECONDITION' && e.message === message;
+  const m = Mesh.grid(2, 2, 2);
+  assert.throws(() => m.chordHexes(NaN), is('chordHexes: id must be an integer, not NaN'));
+  assert.throws(() => m.sheetHexes(1.5), is('sheetHexes: id must be an integer, not 1.5'));
+  assert.throws(() => m.sheetHexes('0'), is("sheetHexes: id must be an integer, not '0'"));
+  assert.throws(() => m.renderBuffers({ shrink: NaN }), is('renderBuffers: shrink must be a finite number, not NaN'));
+  assert.throws(() => m.renderBuffers({ shrink: 1 }), is('renderBuffers: shrink must be in [0, 1), not 1'));
+  assert.throws(() => Mesh.grid(Infinity, 1, 1), is('grid: a must be an integer, not Infinity'));
+  assert.throws(() => m.sheetDiagram(0, { rings: -1 }), is('sheetDiagram: rings must be an integer >= 0, not -1'));
+  assert.throws(() => m.flip('2-6', [0, NaN]), is('flip: hexes: hex id must be an integer, not NaN'));
+  assert.throws(() => m.applyLog('v1', { stopAt: 0.5 }), is('applyLog: stopAt must be an integer >= 0, not 0.5'));
+  m.delete();
+});
+
+test('10,000 failing calls do not grow the heap', () => {
   const bad = '# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 float\n0 0 0\n';
-  for (let i = 0; i < 200; i++) assert.throws(() => Mesh.load(bad, 'bad.vtk'));
-  const before = heapBytes();
-  for (let i = 0; i < 2000; i++) {
+  const m = Mesh.grid(3, 3, 3);
+  const failures = () => {
     assert.throws(() => Mesh.load(bad, 'bad.vtk'));
     assert.throws(() => Mesh.grid(-1, 2, 2));
-  }
-  assert.equal(heapBytes(), before);
+    assert.throws(() => m.apply('hexpush h0f0'));
+    assert.throws(() => m.applyLog('v1;pillow h13f5;hexpush h0f0'));
+    assert.throws(() => m.sheetDiagram(99));
+  };
+  for (let i = 0; i < 200; i++) failures();
+  const before = heapBytes();
+  const jsBefore = process.memoryUsage().heapUsed;
+  for (let i = 0; i < 2000; i++) failures();  // 10,000 throws
+  // Capacities inside the mesh (undo lists, tracker scratch) move by a few bytes either way; a
+  // leak of even one byte per throw would show as 10 kB.
+  assert.ok(Math.abs(heapBytes() - before) < 1024, `wasm heap moved by ${heapBytes() - before} bytes`);
+  globalThis.gc?.();
+  const jsGrowth = process.memoryUsage().heapUsed - jsBefore;
+  console.log(`10,000 throws: wasm heap ${heapBytes() - before} bytes, JS heapUsed ${jsGrowth} bytes`);
+  assert.ok(jsGrowth < 8e6, `JS heap grew by ${jsGrowth} bytes`);
+  assert.equal(m.counts.hexes, 27);
+  m.delete();
 });
 
 test('meshes free their memory: 500 create/delete cycles do not grow the heap', () => {
@@ -111,7 +154,7 @@ test('sheet diagrams from wasm equal the native CLI JSON', () => {
   execFileSync(cli, ['sheets', '/tmp/hexdual_node_sd.hxd', '--sheet', '2', '--json', '/tmp/hexdual_node_sd']);
   const native = JSON.parse(execFileSync('cat', ['/tmp/hexdual_node_sd/sheet-2.json']).toString());
   const m = Mesh.grid(3, 3, 3);
-  const d = m.sheetDiagram(2);
+  const d = m.sheetDiagramJSON(2);
   assert.equal(d.crossings.length, 9);
   assert.equal(d.method, 'disk');
   assert.deepEqual(d.crossings.map((c) => c.hex), native.crossings.map((c) => c.hex));
@@ -128,18 +171,17 @@ test('sheet diagrams from wasm equal the native CLI JSON', () => {
 
 test('apply: operation steps from JS, with errors that leave the mesh unchanged', () => {
   const m = Mesh.grid(3, 3, 3);
-  assert.equal(m.apply('pillow h13f5'), 'unpillow h27');
+  assert.equal(m.apply('pillow h13f5').inverse, 'unpillow h27');
   assert.equal(m.counts.hexes, 29);
   assert.throws(() => m.apply('hexpush h0f0'), { message: 'hexpush: quad h0f0 is on the boundary; hex push needs an interior quad' });
   assert.throws(() => m.apply('frobnicate h1'), { message: "oplog: position 0: unknown operation at 'frobnicate'" });
   assert.equal(m.counts.hexes, 29);
-  assert.equal(m.apply('unpillow h27'), 'pillow h13f5');
+  assert.equal(m.apply('unpillow h27').inverse, 'pillow h13f5');
   assert.equal(m.counts.hexes, 27);
   m.delete();
 });
 
 test('flips: the 4-cube and the stored decompositions replay in wasm', async () => {
-  const { flips } = await import('../../wasm/index.js');
   const all = flips();
   assert.deepEqual(all.map((f) => f.name), ['1-7', '2-6', '3-5c', '3-5e', '4-4m', '4-4v', '5-3c', '5-3e', '6-2', '7-1']);
   assert.equal(all.find((f) => f.name === '4-4v').steps, null);

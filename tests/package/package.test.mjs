@@ -1,0 +1,156 @@
+// The npm package as a user gets it: `npm pack`, installed offline into a fresh folder, then used
+// from Node (examples/node), a Vite dev server and a Vite production build (examples/vite), a
+// plain static page (examples/static) in headless Chromium, and a TypeScript consumer under
+// `tsc --strict` (lib es2022 and esnext). Vite and TypeScript come from the repository's
+// node_modules; nothing is fetched from a registry.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync, existsSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { startBrowser } from '../browser/harness.mjs';
+import { serveStatic, startVite } from './harness.mjs';
+
+const root = new URL('../../', import.meta.url).pathname;
+const pkg = JSON.parse(readFileSync(join(root, 'package.json'), 'utf8'));
+let work, tarball, files, browser;
+// What every example page and the Node example compute (grid 3x3x3, pillow h13f5).
+const expected = { hexes: 29, created: [27, 28], inverse: 'unpillow h27' };
+
+function run(cmd, args, cwd) {
+  return execFileSync(cmd, args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+}
+
+// A fresh project folder holding `example`'s files and the tarball installed offline.
+function project(name, example) {
+  const dir = join(work, name);
+  if (example) cpSync(join(root, 'examples', example), dir, { recursive: true });
+  else mkdirSync(dir);
+  writeFileSync(join(dir, 'package.json'), JSON.stringify({ name: `consumer-${name}`, private: true, type: 'module' }));
+  run('npm', ['install', '--offline', '--no-audit', '--no-fund', '--no-package-lock', '--loglevel=error', tarball], dir);
+  return dir;
+}
+
+before(() => {
+  work = mkdtempSync(join(tmpdir(), 'hexdual-package-'));
+  const [info] = JSON.parse(run('npm', ['pack', '--json', '--pack-destination', work], root));
+  tarball = join(work, info.filename);
+  files = info.files.map((f) => f.path).sort();
+});
+after(async () => {
+  await browser?.close();
+  if (work) rmSync(work, { recursive: true, force: true });
+});
+
+test('the tarball holds the entries, the .wasm, the types and the LICENSE, and nothing else', () => {
+  assert.deepEqual(files, [
+    'LICENSE', 'README.md', 'docs/api.md', 'package.json', 'wasm/dist/hexdual.mjs', 'wasm/dist/hexdual.wasm', 'wasm/index.d.ts',
+    'wasm/index.js', 'wasm/index.node.js',
+  ]);
+  assert.equal(pkg.dependencies, undefined, 'no runtime dependencies');
+  assert.equal(pkg.sideEffects, false);
+  const gz = execFileSync('gzip', ['-c', join(root, 'wasm/dist/hexdual.wasm')]).length;
+  console.log(`hexdual.wasm: ${readFileSync(join(root, 'wasm/dist/hexdual.wasm')).length} bytes, ${gz} gzipped`);
+  assert.ok(gz <= 250000, `${gz} bytes gzipped`);
+});
+
+test('Node: examples/node runs from the installed tarball (ESM, no flags)', () => {
+  const dir = project('node', 'node');
+  const out = run('node', ['main.mjs'], dir);
+  assert.match(out, /^pillow: created hexes 27,28, delta \{"V":4,"E":8,"F":6,"H":2\}, inverse 'unpillow h27'$/m);
+  assert.match(out, /^log v1;pillow h13f5;hexpush h13f5  url 1\.P13f5\.H13f5  hash [0-9a-f]{16}$/m);
+  assert.match(out, /^rejected \(PRECONDITION\): hexpush: quad h0f0 is on the boundary; hex push needs an interior quad$/m);
+  assert.match(out, /^after undo: 29 hexes, log v1;pillow h13f5$/m);
+  assert.match(out, /^binary VTK: \d+ bytes; .hxd reloaded isomorphic: true$/m);
+  assert.ok(readFileSync(join(dir, 'sheet.svg'), 'utf8').startsWith('<svg'));
+  // The package's own files resolve: the .wasm and package.json subpaths.
+  const wasm = run('node', ['-e', "console.log(import.meta.resolve('hexdual/hexdual.wasm'))", '--input-type=module'], dir).trim();
+  assert.ok(wasm.endsWith('/node_modules/hexdual/wasm/dist/hexdual.wasm'), wasm);
+  const version = run('node', ['--input-type=module', '-e', "import p from 'hexdual/package.json' with { type: 'json' }; console.log(p.version)"], dir);
+  assert.equal(version.trim(), pkg.version);
+});
+
+function nodeHash() {
+  const dir = join(work, 'node');
+  const code = "import { init, Mesh } from 'hexdual'; await init(); const m = Mesh.grid(3,3,3); m.apply('pillow h13f5'); console.log(m.canonicalHash());";
+  return run('node', ['--input-type=module', '-e', code], dir).trim();
+}
+
+async function pageResult(url) {
+  browser ??= await startBrowser();
+  const page = await browser.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  try {
+    await page.goto(url);
+    await page.waitForSelector('#out[data-status]', { timeout: 30000 });
+    const status = await page.getAttribute('#out', 'data-status');
+    const text = await page.textContent('#out');
+    assert.equal(status, 'ok', text);
+    assert.deepEqual(errors, []);
+    assert.ok((await page.innerHTML('#diagram')).startsWith('<svg'));
+    return JSON.parse(text);
+  } finally {
+    await page.close();
+  }
+}
+
+function viteProject() {
+  const dir = join(work, 'vite');
+  if (!existsSync(dir)) project('vite', 'vite');
+  return dir;
+}
+const vite = () => join(root, 'node_modules/.bin/vite');
+
+test('Vite dev server: `await init()` with no options', async () => {
+  const server = await startVite(vite(), ['--host', '127.0.0.1', '--strictPort'], viteProject());
+  try {
+    assert.deepEqual(await pageResult(server.url), { ...expected, hash: nodeHash() });
+  } finally {
+    server.stop();
+  }
+});
+
+test('Vite production build: the .wasm is emitted and no Node module is bundled', async () => {
+  const dir = viteProject();
+  const log = run(vite(), ['build', '--logLevel', 'warn'], dir);
+  assert.doesNotMatch(log, /externalized|node:fs/, log);
+  const assets = run('ls', [join(dir, 'dist/assets')], dir).split('\n');
+  assert.ok(assets.some((f) => /^hexdual-.*\.wasm$/.test(f)), assets.join(' '));
+  const js = assets.filter((f) => f.endsWith('.js')).map((f) => readFileSync(join(dir, 'dist/assets', f), 'utf8')).join('\n');
+  assert.doesNotMatch(js, /node:fs|readFile\(/);
+  const server = await serveStatic(join(dir, 'dist'));
+  try {
+    assert.deepEqual(await pageResult(server.url), { ...expected, hash: nodeHash() });
+  } finally {
+    server.stop();
+  }
+});
+
+test('plain <script type="module"> page served from a static folder', async () => {
+  const dir = project('static', 'static');
+  const server = await serveStatic(dir);
+  try {
+    assert.deepEqual(await pageResult(server.url), { ...expected, hash: nodeHash() });
+  } finally {
+    server.stop();
+  }
+});
+
+test('TypeScript consumer: tsc --strict with lib es2022 and with esnext', () => {
+  const dir = project('ts');
+  cpSync(join(root, 'tests/package/consumer.ts'), join(dir, 'consumer.ts'));
+  cpSync(join(root, 'tests/package/consumer-using.ts'), join(dir, 'consumer-using.ts'));
+  symlinkSync(join(root, 'node_modules/typescript'), join(dir, 'node_modules/typescript'));
+  const tsc = join(root, 'node_modules/.bin/tsc');
+  const common = ['--strict', '--noEmit', '--module', 'nodenext', '--moduleResolution', 'nodenext', '--skipLibCheck', 'false'];
+  run(tsc, [...common, '--target', 'es2022', 'consumer.ts'], dir);
+  run(tsc, [...common, '--target', 'esnext', 'consumer.ts', 'consumer-using.ts'], dir);
+  // Under es2022 `using` is unknown to the lib: the error names Disposable, not hexdual's types.
+  assert.throws(() => run(tsc, [...common, '--target', 'es2022', 'consumer-using.ts'], dir), (e) => {
+    assert.match(e.stdout, /Cannot find global type 'Disposable'/);
+    assert.doesNotMatch(e.stdout, /index\.d\.ts/);
+    return true;
+  });
+});
