@@ -8,54 +8,7 @@ using namespace tables;
 
 namespace {
 
-// Axis of the neighbour continuing axis `a` across face f glued to face f2 with orientation o.
-constexpr int axisAcross(int f, int a, int f2, int o) {
-  int n = axisOfFace(f);
-  if (a == n) return axisOfFace(f2);
-  int u = (n + 1) % 3;
-  // Positions 0->1 run along u, 1->2 along v.
-  int q0 = mapPosition(a == u ? 0 : 1, o), q1 = mapPosition(a == u ? 1 : 2, o);
-  int m = ((q1 - q0) & 3) == 1 ? q0 : q1;
-  int n2 = axisOfFace(f2);
-  return (m % 2 == 0) ? (n2 + 1) % 3 : (n2 + 2) % 3;
-}
-constexpr std::array<int8_t, 6 * 3 * 6 * 8> makeAxisAcross() {
-  std::array<int8_t, 6 * 3 * 6 * 8> t{};
-  for (int f = 0; f < 6; ++f)
-    for (int a = 0; a < 3; ++a)
-      for (int f2 = 0; f2 < 6; ++f2)
-        for (int o = 0; o < 8; ++o) t[((f * 3 + a) * 6 + f2) * 8 + o] = int8_t(axisAcross(f, a, f2, o));
-  return t;
-}
-constexpr auto kAxisAcross = makeAxisAcross();
-int axisAcrossGluing(int f, int a, const Gluing& g) { return kAxisAcross[((f * 3 + a) * 6 + g.face) * 8 + g.orient]; }
-
-// Position of an a-edge of a hex in the cycle of its sheet slot's mid-quad: (u,v) bits 00,10,11,01.
-constexpr int midIndex(int edge) { return (edge & 1) ^ ((edge >> 1) & 1) ? ((edge & 1) ? 1 : 3) : ((edge & 1) ? 2 : 0); }
-
-// For face f parallel to axis a: its first a-edge and the direction (+1/-1) in which the slot's
-// mid-quad runs over it (from the first a-edge to the second).
-struct MidSide {
-  int8_t firstEdge = -1, secondEdge = -1, dir = 0;
-};
-constexpr std::array<MidSide, 18> makeMidSides() {
-  std::array<MidSide, 18> t{};
-  for (int f = 0; f < 6; ++f)
-    for (int a = 0; a < 3; ++a) {
-      if (axisOfFace(f) == a) continue;
-      MidSide m;
-      for (int p = 0; p < 4; ++p) {
-        int e = kFaceEdges[f][p];
-        if (axisOfEdge(e) != a) continue;
-        if (m.firstEdge < 0) m.firstEdge = int8_t(e);
-        else m.secondEdge = int8_t(e);
-      }
-      m.dir = ((midIndex(m.secondEdge) - midIndex(m.firstEdge)) & 3) == 1 ? 1 : -1;
-      t[f * 3 + a] = m;
-    }
-  return t;
-}
-constexpr auto kMidSides = makeMidSides();
+int axisAcrossGluing(int f, int a, const Gluing& g) { return kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))].axis; }
 
 size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
 
