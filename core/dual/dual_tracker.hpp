@@ -29,6 +29,9 @@ class DualTracker {
   // sheets, if one is ever found, falls back to re-flooding the sheets involved.
   DualChange update(const Complex& cx, std::vector<HexId> touched, bool sheetsKeepTopology = false);
 
+  // Slots the last update visited (walked, flooded or re-labelled): its cost, independent of time.
+  size_t slotsTouched() const { return slotsTouched_; }
+
   // True for the operations that never cut, merge or re-shape an existing sheet.
   static bool keepsSheetTopology(const std::string& op);
 
@@ -38,8 +41,8 @@ class DualTracker {
   void updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   Dual dual_;
   std::vector<int32_t> selfHexes_;  // per sheet id: hexes with two or more slots on it
-  std::vector<int8_t> sign_;
-  std::vector<Slot> stack_;
+  SheetFlooder flooder_;
+  size_t slotsTouched_ = 0;
 };
 
 // Hex ids whose gluings or corners an edit log changed (created, removed, re-glued, renumbered).
