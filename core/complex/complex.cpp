@@ -230,15 +230,14 @@ std::vector<QuadSide> Complex::quads() const {
   return out;
 }
 
-// Walks from (h, e) out through face `exitFace`; returns the next incidence and its arrival face.
+// Walks from (h, e) out through face `exitFace`; returns the next incidence and its exit face
+// (one table lookup per step).
 static bool stepAroundEdge(const Complex& cx, EdgeRef& cur, int& exitFace) {
   Gluing g = cx.gluing(cur.hex, exitFace);
   if (g.boundary()) return false;
-  int c0 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[cur.edge][0]);
-  int c1 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[cur.edge][1]);
-  cur = {g.hex, edgeBetween(c0, c1)};
-  auto fs = facesOfEdge(cur.edge);
-  exitFace = fs[0] == g.face ? fs[1] : fs[0];
+  const EdgeStep& st = kEdgeSteps[size_t(edgeStepIndex(cur.edge, exitFace, g.face, g.orient))];
+  cur = {g.hex, st.edge};
+  exitFace = st.exit;
   return true;
 }
 
@@ -272,8 +271,19 @@ std::vector<EdgeRef> Complex::edgeCycle(EdgeRef e, bool* closed) const {
 }
 
 EdgeRef Complex::canonical(EdgeRef e) const {
-  auto cyc = edgeCycle(e);
-  return *std::min_element(cyc.begin(), cyc.end());
+  // The smallest incidence met walking round the cycle, or both ways along the fan (no allocation).
+  EdgeRef best = e;
+  auto fs = facesOfEdge(e.edge);
+  const size_t limit = size_t(12) * size_t(numHexes_) + 1;
+  for (int dir = 0; dir < 2; ++dir) {
+    EdgeRef cur = e;
+    int exitFace = fs[size_t(dir)];
+    for (size_t n = 0; n < limit && stepAroundEdge(*this, cur, exitFace); ++n) {
+      if (cur == e) return best;
+      if (cur < best) best = cur;
+    }
+  }
+  return best;
 }
 
 std::vector<std::pair<HexId, int>> Complex::cornersOfVertex(HexId h, int corner) const {
