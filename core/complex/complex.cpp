@@ -230,17 +230,6 @@ std::vector<QuadSide> Complex::quads() const {
   return out;
 }
 
-// Walks from (h, e) out through face `exitFace`; returns the next incidence and its exit face
-// (one table lookup per step).
-static bool stepAroundEdge(const Complex& cx, EdgeRef& cur, int& exitFace) {
-  Gluing g = cx.gluing(cur.hex, exitFace);
-  if (g.boundary()) return false;
-  const EdgeStep& st = kEdgeSteps[size_t(edgeStepIndex(cur.edge, exitFace, g.face, g.orient))];
-  cur = {g.hex, st.edge};
-  exitFace = st.exit;
-  return true;
-}
-
 std::vector<EdgeRef> Complex::edgeCycle(EdgeRef e, bool* closed) const {
   std::vector<EdgeRef> fwd{e};
   auto fs = facesOfEdge(e.edge);
@@ -248,7 +237,7 @@ std::vector<EdgeRef> Complex::edgeCycle(EdgeRef e, bool* closed) const {
   int exitFace = fs[0];
   const size_t limit = size_t(12) * size_t(numHexes_) + 1;
   bool isClosed = false;
-  while (stepAroundEdge(*this, cur, exitFace)) {
+  while (stepAroundEdge(cur, exitFace)) {
     if (cur == e) {
       isClosed = true;
       break;
@@ -261,7 +250,7 @@ std::vector<EdgeRef> Complex::edgeCycle(EdgeRef e, bool* closed) const {
   std::vector<EdgeRef> back;
   cur = e;
   exitFace = fs[1];
-  while (stepAroundEdge(*this, cur, exitFace)) {
+  while (stepAroundEdge(cur, exitFace)) {
     back.push_back(cur);
     if (back.size() > limit) break;
   }
@@ -278,7 +267,7 @@ EdgeRef Complex::canonical(EdgeRef e) const {
   for (int dir = 0; dir < 2; ++dir) {
     EdgeRef cur = e;
     int exitFace = fs[size_t(dir)];
-    for (size_t n = 0; n < limit && stepAroundEdge(*this, cur, exitFace); ++n) {
+    for (size_t n = 0; n < limit && stepAroundEdge(cur, exitFace); ++n) {
       if (cur == e) return best;
       if (cur < best) best = cur;
     }
@@ -311,7 +300,7 @@ std::vector<int32_t> Complex::edgeClasses(int32_t* numClasses) const {
         EdgeRef cur{h, e};
         int exitFace = fs[dir];
         bool closed = false;
-        while (stepAroundEdge(*this, cur, exitFace)) {
+        while (stepAroundEdge(cur, exitFace)) {
           int32_t& c = cls[size_t(12) * cur.hex + cur.edge];
           if (c == n) {
             closed = true;

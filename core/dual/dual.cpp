@@ -38,17 +38,11 @@ void SheetFlooder::walkEdge(const Complex& cx, HexId h, int e) {
   edgeSeen_[size_t(h)] |= uint16_t(1u << e);
   auto fs = facesOfEdge(e);
   for (int dir = 0; dir < 2; ++dir) {
-    HexId ch = h;
-    int ce = e, exit = fs[size_t(dir)];
-    for (;;) {
-      Gluing g = cx.gluing(ch, exit);
-      if (g.boundary()) break;
-      const EdgeStep& st = kEdgeSteps[size_t(edgeStepIndex(ce, exit, g.face, g.orient))];
-      ch = g.hex;
-      ce = st.edge;
-      exit = st.exit;
-      if (ch == h && ce == e) return;  // round the cycle
-      edgeSeen_[size_t(ch)] |= uint16_t(1u << ce);
+    EdgeRef cur{h, e};
+    int exit = fs[size_t(dir)];
+    while (cx.stepAroundEdge(cur, exit)) {
+      if (cur.hex == h && cur.edge == e) return;  // round the cycle
+      edgeSeen_[size_t(cur.hex)] |= uint16_t(1u << cur.edge);
     }
   }
 }
@@ -64,15 +58,11 @@ void SheetFlooder::walkLoop(const Complex& cx, HexId h, int f, int a) {
     loopSeen_[size_t(ch)] |= uint16_t(1u << loopBit(cf, ca));
     // Around the primal edge `leave` from face cf to the fan's other boundary face.
     auto fs = facesOfEdge(leave);
-    int exit = fs[0] == cf ? fs[1] : fs[0], ce = leave;
-    for (;;) {
-      Gluing g = cx.gluing(ch, exit);
-      if (g.boundary()) break;
-      const EdgeStep& st = kEdgeSteps[size_t(edgeStepIndex(ce, exit, g.face, g.orient))];
-      ch = g.hex;
-      ce = st.edge;
-      exit = st.exit;
-    }
+    int exit = fs[0] == cf ? fs[1] : fs[0];
+    EdgeRef cur{ch, leave};
+    while (cx.stepAroundEdge(cur, exit)) continue;  // to the fan's far end
+    ch = cur.hex;
+    const int ce = cur.edge;
     cf = exit;
     ca = axisOfEdge(ce);
     if (ch == h && cf == f && ca == a) return;
