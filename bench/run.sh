@@ -4,8 +4,29 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SIZES=${SIZES:-"10 20 50 100"}
+FLOOR_SIZES=${FLOOR_SIZES:-"10 50 100 150 200"}
 REPS=${REPS:-5}
 OP_REPS=${OP_REPS:-21}
+
+echo "### Dual extraction against the floor (CPU ms, minimum of $REPS interleaved repetitions on the same complex)"
+echo
+echo "The floor (bench/floor.cpp) only labels sheets and chords: one union-find pass over glued quads."
+echo
+echo "| n³ hexes | floor ms | hexdual extractDual ms | ratio | floor ns/hex | hexdual ns/hex |"
+echo "| --- | --- | --- | --- | --- | --- |"
+for n in $FLOOR_SIZES; do
+  reps=$REPS
+  [ "$n" -ge 150 ] && reps=2
+  if ! f=$(build/native/hexdual_floor "$n" "$reps" 2>&1); then
+    echo "| ${n}³ | — | — | — | not run: ${f//$'\n'/ } | |"
+    continue
+  fi
+  node -e '
+    const a = JSON.parse(process.argv[1]);
+    console.log(`| ${a.n}³ = ${a.hexes} | ${a.floorMs.toFixed(1)} | ${a.dualMs.toFixed(1)} | ${a.ratio.toFixed(2)} | ${a.floorNsPerHex.toFixed(0)} | ${a.dualNsPerHex.toFixed(0)} |`);
+  ' "$f"
+done
+echo
 
 echo "### Build + dual extraction"
 echo
@@ -13,16 +34,18 @@ echo "| n³ hexes | native cold ms | native warm build+dual ms | wasm cold ms | 
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for n in $SIZES; do
   nat=$(build/native/hexdual_bench build "$n" "$REPS")
-  was=$(node bench/bench_wasm.mjs build "$n" "$REPS")
+  # The wasm row comes from the package build (wasm/dist); marked when that build is absent or fails.
+  was=$(node bench/bench_wasm.mjs build "$n" "$REPS" 2>/dev/null || echo '{"missing":true}')
   node -e '
-    const a = JSON.parse(process.argv[1]), b = JSON.parse(process.argv[2]);
-    const f = (x) => x.toFixed(1);
-    console.log(`| ${a.n}³ = ${a.hexes} | ${f(a.coldMs)} | ${f(a.buildMs)} + ${f(a.dualMs)} = ${f(a.totalMs)} | ${f(b.coldMs)} | ${f(b.buildMs)} + ${f(b.dualMs)} = ${f(b.totalMs)} | ${(b.totalMs / a.totalMs).toFixed(2)} | ${f(a.bytesPerHex)} | ${f(a.peakRssMb)} | ${f(b.peakRssMb)} |`);
+    const a = JSON.parse(process.argv[1]), b0 = JSON.parse(process.argv[2]);
+    const b = b0.missing ? { coldMs: NaN, buildMs: NaN, dualMs: NaN, totalMs: NaN, peakRssMb: NaN } : b0;
+    const f = (x) => (Number.isNaN(x) ? "**no wasm build**" : x.toFixed(1));
+    console.log(`| ${a.n}³ = ${a.hexes} | ${f(a.coldMs)} | ${f(a.buildMs)} + ${f(a.dualMs)} = ${f(a.totalMs)} | ${f(b.coldMs)} | ${f(b.buildMs)} + ${f(b.dualMs)} = ${f(b.totalMs)} | ${f(b.totalMs / a.totalMs)} | ${f(a.bytesPerHex)} | ${f(a.peakRssMb)} | ${f(b.peakRssMb)} |`);
   ' "$nat" "$was"
 done
 
 echo
-echo "### Operation latency at the centre of an n³ grid (µs, median of $OP_REPS; op alone / op + incremental dual update)"
+echo "### Operation latency at the centre of an n³ grid (CPU µs, minimum of $OP_REPS; op alone / op + incremental dual update)"
 echo
 lines=""
 for n in $SIZES; do lines+=$(build/native/hexdual_bench ops "$n" "$OP_REPS")$'\n'; done
@@ -41,11 +64,11 @@ node -e '
 ' "$lines"
 
 echo
-echo "### Random sequences (pillow, hex push, chord push at random places, with dual updates)"
+echo "### Random sequences (pillow, hex push, chord push at random places, with dual updates; CPU time)"
 echo
 echo "| grid | attempted | applied | applied per second | hexes at the end |"
 echo "| --- | --- | --- | --- | --- |"
-for n in 10; do
+for n in 10 100; do
   t=$(build/native/hexdual_bench throughput "$n" 20000)
   node -e 'const t = JSON.parse(process.argv[1]); console.log(`| ${t.n}³ | ${t.attempted} | ${t.applied} | ${t.appliedPerSec} | ${t.hexesAfter} |`);' "$t"
 done
@@ -66,3 +89,11 @@ echo "### The npm package's size"
 echo
 wasm=wasm/dist/hexdual.wasm
 echo "hexdual.wasm $(stat -c %s $wasm) bytes, $(gzip -9c $wasm | wc -c) gzipped; loader hexdual.mjs $(stat -c %s wasm/dist/hexdual.mjs) bytes, $(gzip -9c wasm/dist/hexdual.mjs | wc -c) gzipped"
+echo
+echo "### Peers, for context (quoted from the performance issue: CPU time on this kind of machine, not rerun here)"
+echo
+echo "| tool | task | 10³ | 22³ | 46³ | 100³ |"
+echo "| --- | --- | --- | --- | --- | --- |"
+echo "| MOAB 5.1.1 DualTool::construct_hex_dual | dual extraction | 529 ms | 4.8 s | 52.9 s | 886 s |"
+echo "| MOAB 5.1.1 face_shrink (= hex push) + dual update | one operation | | | 3.7 s | |"
+echo "| gmds sheet selector | sheets (some wrong) | | | 15.8 s | |"

@@ -234,18 +234,6 @@ std::vector<QuadSide> Complex::quads() const {
   return out;
 }
 
-// Walks from (h, e) out through face `exitFace`; returns the next incidence and its arrival face.
-static bool stepAroundEdge(const Complex& cx, EdgeRef& cur, int& exitFace) {
-  Gluing g = cx.gluing(cur.hex, exitFace);
-  if (g.boundary()) return false;
-  int c0 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[cur.edge][0]);
-  int c1 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[cur.edge][1]);
-  cur = {g.hex, edgeBetween(c0, c1)};
-  auto fs = facesOfEdge(cur.edge);
-  exitFace = fs[0] == g.face ? fs[1] : fs[0];
-  return true;
-}
-
 std::vector<EdgeRef> Complex::edgeCycle(EdgeRef e, bool* closed) const {
   std::vector<EdgeRef> fwd{e};
   auto fs = facesOfEdge(e.edge);
@@ -253,7 +241,7 @@ std::vector<EdgeRef> Complex::edgeCycle(EdgeRef e, bool* closed) const {
   int exitFace = fs[0];
   const size_t limit = size_t(12) * size_t(numHexes_) + 1;
   bool isClosed = false;
-  while (stepAroundEdge(*this, cur, exitFace)) {
+  while (stepAroundEdge(cur, exitFace)) {
     if (cur == e) {
       isClosed = true;
       break;
@@ -266,7 +254,7 @@ std::vector<EdgeRef> Complex::edgeCycle(EdgeRef e, bool* closed) const {
   std::vector<EdgeRef> back;
   cur = e;
   exitFace = fs[1];
-  while (stepAroundEdge(*this, cur, exitFace)) {
+  while (stepAroundEdge(cur, exitFace)) {
     back.push_back(cur);
     if (back.size() > limit) break;
   }
@@ -276,8 +264,19 @@ std::vector<EdgeRef> Complex::edgeCycle(EdgeRef e, bool* closed) const {
 }
 
 EdgeRef Complex::canonical(EdgeRef e) const {
-  auto cyc = edgeCycle(e);
-  return *std::min_element(cyc.begin(), cyc.end());
+  // The smallest incidence met walking round the cycle, or both ways along the fan (no allocation).
+  EdgeRef best = e;
+  auto fs = facesOfEdge(e.edge);
+  const size_t limit = size_t(12) * size_t(numHexes_) + 1;
+  for (int dir = 0; dir < 2; ++dir) {
+    EdgeRef cur = e;
+    int exitFace = fs[size_t(dir)];
+    for (size_t n = 0; n < limit && stepAroundEdge(cur, exitFace); ++n) {
+      if (cur == e) return best;
+      if (cur < best) best = cur;
+    }
+  }
+  return best;
 }
 
 std::vector<std::pair<HexId, int>> Complex::cornersOfVertex(HexId h, int corner) const {
@@ -305,7 +304,7 @@ std::vector<int32_t> Complex::edgeClasses(int32_t* numClasses) const {
         EdgeRef cur{h, e};
         int exitFace = fs[dir];
         bool closed = false;
-        while (stepAroundEdge(*this, cur, exitFace)) {
+        while (stepAroundEdge(cur, exitFace)) {
           int32_t& c = cls[size_t(12) * cur.hex + cur.edge];
           if (c == n) {
             closed = true;

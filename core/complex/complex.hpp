@@ -154,6 +154,16 @@ class Complex {
     Gluing g = gluing(h, face);
     return tables::kFaceCorners[size_t(g.face)][size_t(tables::mapPosition(tables::positionInFace(face, corner), g.orient))];
   }
+  // One step around an edge: from incidence `cur` out through `exitFace` (a face containing it) to
+  // the neighbour's incidence and the face to leave that by; false at the boundary (one table lookup).
+  bool stepAroundEdge(EdgeRef& cur, int& exitFace) const {
+    const uint32_t g = glue_[size_t(cur.hex)][size_t(exitFace)];
+    if (g == kBoundary) return false;
+    const tables::EdgeStep& st = tables::kEdgeSteps[size_t(tables::edgeStepIndex(cur.edge, exitFace, int((g >> 3) & 7), int(g & 7)))];
+    cur = {HexId(g >> 6), st.edge};
+    exitFace = st.exit;
+    return true;
+  }
   // The (hex, edge) incidences of an edge, in cycle order; `closed` tells whether the cycle closes.
   std::vector<EdgeRef> edgeCycle(EdgeRef e, bool* closed = nullptr) const;
   // The canonical incidence (smallest) of an edge.

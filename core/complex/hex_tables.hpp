@@ -134,4 +134,102 @@ constexpr int orientFromPositions(int p0, int p1) {
   return ((p1 - p0) & 3) == 1 ? p0 : (4 | p0);
 }
 
+// ---- precomputed crossing tables (one lookup per step of a flood or walk) ----
+
+// Axis of the neighbour continuing axis `a` across face f glued to face f2 with orientation o.
+constexpr int axisAcross(int f, int a, int f2, int o) {
+  int n = axisOfFace(f);
+  if (a == n) return axisOfFace(f2);
+  int u = (n + 1) % 3;
+  // Positions 0->1 run along u, 1->2 along v.
+  int q0 = mapPosition(a == u ? 0 : 1, o), q1 = mapPosition(a == u ? 1 : 2, o);
+  int m = ((q1 - q0) & 3) == 1 ? q0 : q1;
+  int n2 = axisOfFace(f2);
+  return (m % 2 == 0) ? (n2 + 1) % 3 : (n2 + 2) % 3;
+}
+
+// Position of an a-edge of a hex in the cycle of its sheet slot's mid-quad: (u,v) bits 00,10,11,01.
+constexpr int midIndex(int edge) { return (edge & 1) ^ ((edge >> 1) & 1) ? ((edge & 1) ? 1 : 3) : ((edge & 1) ? 2 : 0); }
+
+// For face f parallel to axis a: its two a-edges and the direction (+1/-1) in which the slot's
+// mid-quad runs over the face (from the first a-edge to the second).
+struct MidSide {
+  int8_t firstEdge = -1, secondEdge = -1, dir = 0;
+};
+constexpr std::array<MidSide, 18> makeMidSides() {
+  std::array<MidSide, 18> t{};
+  for (int f = 0; f < 6; ++f)
+    for (int a = 0; a < 3; ++a) {
+      if (axisOfFace(f) == a) continue;
+      MidSide m;
+      for (int p = 0; p < 4; ++p) {
+        int e = kFaceEdges[f][p];
+        if (axisOfEdge(e) != a) continue;
+        if (m.firstEdge < 0) m.firstEdge = int8_t(e);
+        else m.secondEdge = int8_t(e);
+      }
+      m.dir = ((midIndex(m.secondEdge) - midIndex(m.firstEdge)) & 3) == 1 ? 1 : -1;
+      t[f * 3 + a] = m;
+    }
+  return t;
+}
+inline constexpr auto kMidSides = makeMidSides();
+
+// A crossing of face f (axis a) into face f2 with orientation o: the neighbour's axis, and for a
+// sheet slot (a parallel to f) whether the mid-quad orientation flips (shared mid-edges are run
+// in opposite directions by consistently oriented quads). Index ((f*3+a)*6+f2)*8+o. TK03 §1.1.
+struct Crossing {
+  int8_t axis = 0, sign = 1;
+};
+constexpr int crossingIndex(int f, int a, int f2, int o) { return ((f * 3 + a) * 6 + f2) * 8 + o; }
+constexpr std::array<Crossing, 6 * 3 * 6 * 8> makeCrossings() {
+  std::array<Crossing, 6 * 3 * 6 * 8> t{};
+  for (int f = 0; f < 6; ++f)
+    for (int a = 0; a < 3; ++a)
+      for (int f2 = 0; f2 < 6; ++f2)
+        for (int o = 0; o < 8; ++o) {
+          Crossing c;
+          c.axis = int8_t(axisAcross(f, a, f2, o));
+          if (axisOfFace(f) != a) {
+            const MidSide& ours = kMidSides[f * 3 + a];
+            const MidSide& theirs = kMidSides[f2 * 3 + c.axis];
+            // Where our first a-edge lands in the neighbour decides the neighbour's direction.
+            int c0 = kFaceCorners[f2][mapPosition(positionInFace(f, kEdgeCorners[ours.firstEdge][0]), o)];
+            int c1 = kFaceCorners[f2][mapPosition(positionInFace(f, kEdgeCorners[ours.firstEdge][1]), o)];
+            int dirImage = edgeBetween(c0, c1) == theirs.firstEdge ? theirs.dir : -theirs.dir;
+            c.sign = int8_t(-ours.dir * dirImage);
+          }
+          t[crossingIndex(f, a, f2, o)] = c;
+        }
+  return t;
+}
+inline constexpr auto kCrossings = makeCrossings();
+
+// One step around an edge: edge e of a hex left through face x (which contains e) into face f2 of
+// the neighbour with orientation o arrives at the neighbour's edge `edge`, which is left next
+// through face `exit`. Index ((e*6+x)*6+f2)*8+o.
+struct EdgeStep {
+  int8_t edge = -1, exit = -1;
+};
+constexpr int edgeStepIndex(int e, int x, int f2, int o) { return ((e * 6 + x) * 6 + f2) * 8 + o; }
+constexpr std::array<EdgeStep, 12 * 6 * 6 * 8> makeEdgeSteps() {
+  std::array<EdgeStep, 12 * 6 * 6 * 8> t{};
+  for (int e = 0; e < 12; ++e)
+    for (int x = 0; x < 6; ++x) {
+      if (positionInFace(x, kEdgeCorners[e][0]) < 0 || positionInFace(x, kEdgeCorners[e][1]) < 0) continue;
+      for (int f2 = 0; f2 < 6; ++f2)
+        for (int o = 0; o < 8; ++o) {
+          int c0 = kFaceCorners[f2][mapPosition(positionInFace(x, kEdgeCorners[e][0]), o)];
+          int c1 = kFaceCorners[f2][mapPosition(positionInFace(x, kEdgeCorners[e][1]), o)];
+          EdgeStep s;
+          s.edge = int8_t(edgeBetween(c0, c1));
+          auto fs = facesOfEdge(s.edge);
+          s.exit = int8_t(fs[0] == f2 ? fs[1] : fs[0]);
+          t[edgeStepIndex(e, x, f2, o)] = s;
+        }
+    }
+  return t;
+}
+inline constexpr auto kEdgeSteps = makeEdgeSteps();
+
 }  // namespace hexdual::tables

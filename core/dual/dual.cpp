@@ -8,99 +8,135 @@ using namespace tables;
 
 namespace {
 
-// Axis of the neighbour continuing axis `a` across face f glued to face f2 with orientation o.
-constexpr int axisAcross(int f, int a, int f2, int o) {
-  int n = axisOfFace(f);
-  if (a == n) return axisOfFace(f2);
-  int u = (n + 1) % 3;
-  // Positions 0->1 run along u, 1->2 along v.
-  int q0 = mapPosition(a == u ? 0 : 1, o), q1 = mapPosition(a == u ? 1 : 2, o);
-  int m = ((q1 - q0) & 3) == 1 ? q0 : q1;
-  int n2 = axisOfFace(f2);
-  return (m % 2 == 0) ? (n2 + 1) % 3 : (n2 + 2) % 3;
-}
-constexpr std::array<int8_t, 6 * 3 * 6 * 8> makeAxisAcross() {
-  std::array<int8_t, 6 * 3 * 6 * 8> t{};
-  for (int f = 0; f < 6; ++f)
-    for (int a = 0; a < 3; ++a)
-      for (int f2 = 0; f2 < 6; ++f2)
-        for (int o = 0; o < 8; ++o) t[((f * 3 + a) * 6 + f2) * 8 + o] = int8_t(axisAcross(f, a, f2, o));
-  return t;
-}
-constexpr auto kAxisAcross = makeAxisAcross();
-int axisAcrossGluing(int f, int a, const Gluing& g) { return kAxisAcross[((f * 3 + a) * 6 + g.face) * 8 + g.orient]; }
+constexpr std::array<std::array<int, 4>, 3> kParallelFaces = {{{2, 3, 4, 5}, {0, 1, 4, 5}, {0, 1, 2, 3}}};
+constexpr std::array<std::array<int, 2>, 3> kParallelAxes = {{{1, 2}, {0, 2}, {0, 1}}};
+// Bit of boundary mid-edge (face f, slot axis a) in a hex's loop marks.
+constexpr int loopBit(int f, int a) { return 2 * f + (a == (axisOfFace(f) + 1) % 3 ? 0 : 1); }
 
-// Position of an a-edge of a hex in the cycle of its sheet slot's mid-quad: (u,v) bits 00,10,11,01.
-constexpr int midIndex(int edge) { return (edge & 1) ^ ((edge >> 1) & 1) ? ((edge & 1) ? 1 : 3) : ((edge & 1) ? 2 : 0); }
-
-// For face f parallel to axis a: its first a-edge and the direction (+1/-1) in which the slot's
-// mid-quad runs over it (from the first a-edge to the second).
-struct MidSide {
-  int8_t firstEdge = -1, secondEdge = -1, dir = 0;
-};
-constexpr std::array<MidSide, 18> makeMidSides() {
-  std::array<MidSide, 18> t{};
-  for (int f = 0; f < 6; ++f)
-    for (int a = 0; a < 3; ++a) {
-      if (axisOfFace(f) == a) continue;
-      MidSide m;
-      for (int p = 0; p < 4; ++p) {
-        int e = kFaceEdges[f][p];
-        if (axisOfEdge(e) != a) continue;
-        if (m.firstEdge < 0) m.firstEdge = int8_t(e);
-        else m.secondEdge = int8_t(e);
-      }
-      m.dir = ((midIndex(m.secondEdge) - midIndex(m.firstEdge)) & 3) == 1 ? 1 : -1;
-      t[f * 3 + a] = m;
-    }
-  return t;
-}
-constexpr auto kMidSides = makeMidSides();
+int axisAcrossGluing(int f, int a, const Gluing& g) { return kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))].axis; }
 
 size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
 
 }  // namespace
 
-// Floods one sheet from a slot: labels its slots with `id` and an orientation sign per slot.
-// Returns false when two paths disagree on a sign (a non-orientable sheet).
-bool floodSheet(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, int8_t* sign, std::vector<Slot>& stack,
-                std::vector<Slot>* outSlots) {
-  bool orientable = true;
-  sheetOf[slotIndex(start.hex, start.axis)] = id;
-  sign[slotIndex(start.hex, start.axis)] = 1;
-  stack.assign(1, start);
-  while (!stack.empty()) {
-    Slot cur = stack.back();
-    stack.pop_back();
-    if (outSlots) outSlots->push_back(cur);
-    int sc = sign[slotIndex(cur.hex, cur.axis)];
-    for (int f = 0; f < 6; ++f) {
-      if (axisOfFace(f) == cur.axis) continue;
-      Gluing g = cx.gluing(cur.hex, f);
-      if (g.boundary()) continue;
-      int a2 = axisAcrossGluing(f, cur.axis, g);
-      const MidSide& ours = kMidSides[f * 3 + cur.axis];
-      const MidSide& theirs = kMidSides[g.face * 3 + a2];
-      // Where does our first a-edge land in the neighbour? Its image decides the neighbour's direction.
-      int c0 = kFaceCorners[g.face][mapPosition(positionInFace(f, kEdgeCorners[ours.firstEdge][0]), g.orient)];
-      int c1 = kFaceCorners[g.face][mapPosition(positionInFace(f, kEdgeCorners[ours.firstEdge][1]), g.orient)];
-      int dirImage = edgeBetween(c0, c1) == theirs.firstEdge ? theirs.dir : -theirs.dir;
-      int want = -sc * ours.dir * dirImage;  // shared mid-edges are run in opposite directions
-      size_t k = slotIndex(g.hex, a2);
-      if (sheetOf[k] < 0) {
-        sheetOf[k] = id;
-        sign[k] = int8_t(want);
-        stack.push_back({g.hex, a2});
-      } else if (sign[k] != want) {
-        orientable = false;
+void SheetFlooder::reserve(size_t hexCapacity) {
+  if (sign_.size() < 3 * hexCapacity) sign_.resize(3 * hexCapacity, 0);
+  if (edgeSeen_.size() < hexCapacity) edgeSeen_.resize(hexCapacity, 0);
+  if (loopSeen_.size() < hexCapacity) loopSeen_.resize(hexCapacity, 0);
+}
+
+void SheetFlooder::clear(const std::vector<Slot>& slots) {
+  for (Slot t : slots) {
+    sign_[slotIndex(t.hex, t.axis)] = 0;
+    edgeSeen_[size_t(t.hex)] &= uint16_t(~(0xFu << (4 * t.axis)));
+    for (int f : kParallelFaces[t.axis]) loopSeen_[size_t(t.hex)] &= uint16_t(~(1u << loopBit(f, t.axis)));
+  }
+}
+
+// Marks every incidence of the edge at (h, e) (its cycle, or its fan both ways to the boundary).
+void SheetFlooder::walkEdge(const Complex& cx, HexId h, int e) {
+  edgeSeen_[size_t(h)] |= uint16_t(1u << e);
+  auto fs = facesOfEdge(e);
+  for (int dir = 0; dir < 2; ++dir) {
+    EdgeRef cur{h, e};
+    int exit = fs[size_t(dir)];
+    while (cx.stepAroundEdge(cur, exit)) {
+      if (cur.hex == h && cur.edge == e) return;  // round the cycle
+      edgeSeen_[size_t(cur.hex)] |= uint16_t(1u << cur.edge);
+    }
+  }
+}
+
+// Walks one boundary loop of a sheet's mid-surface from a boundary mid-edge (the side of slot
+// (h, a) on boundary face f): mid-edge, fan of the primal edge it ends at, next mid-edge, ...
+void SheetFlooder::walkLoop(const Complex& cx, HexId h, int f, int a) {
+  HexId ch = h;
+  int cf = f, ca = a;
+  int leave = kMidSides[size_t(f * 3 + a)].secondEdge;
+  const size_t limit = 12 * size_t(cx.hexCapacity()) + 1;  // a valid complex never gets near it
+  for (size_t steps = 0; steps < limit; ++steps) {
+    loopSeen_[size_t(ch)] |= uint16_t(1u << loopBit(cf, ca));
+    // Around the primal edge `leave` from face cf to the fan's other boundary face.
+    auto fs = facesOfEdge(leave);
+    int exit = fs[0] == cf ? fs[1] : fs[0];
+    EdgeRef cur{ch, leave};
+    while (cx.stepAroundEdge(cur, exit)) continue;  // to the fan's far end
+    ch = cur.hex;
+    const int ce = cur.edge;
+    cf = exit;
+    ca = axisOfEdge(ce);
+    if (ch == h && cf == f && ca == a) return;
+    const MidSide& m = kMidSides[size_t(cf * 3 + ca)];
+    leave = m.firstEdge == ce ? m.secondEdge : m.firstEdge;
+  }
+}
+
+// Adds one slot's share of its sheet's mid-surface: the quad, its sides, and the primal edges and
+// boundary loops it is the first to meet (each is walked whole and marked).
+void SheetFlooder::measure(const Complex& cx, HexId h, int a, SheetStats& st) {
+  ++st.slots;
+  const unsigned unseen = ~unsigned(edgeSeen_[size_t(h)] >> (4 * a)) & 0xFu;
+  if (unseen)
+    for (int k = 0; k < 4; ++k)
+      if ((unseen >> k) & 1u && !((edgeSeen_[size_t(h)] >> (4 * a + k)) & 1u)) {  // the walk may mark a sibling
+        walkEdge(cx, h, 4 * a + k);
+        ++st.vertices;
+      }
+  for (int f : kParallelFaces[a]) {
+    if (!cx.isBoundary({h, f})) {
+      ++st.interiorSides;
+    } else {
+      ++st.boundarySides;
+      if (!((loopSeen_[size_t(h)] >> loopBit(f, a)) & 1u)) {
+        walkLoop(cx, h, f, a);
+        ++st.loops;
       }
     }
   }
-  return orientable;
+}
+
+SheetStats SheetFlooder::flood(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, std::vector<Slot>* out,
+                               std::vector<int32_t>* previous) {
+  SheetStats st;
+  if (previous) previous->push_back(sheetOf[slotIndex(start.hex, start.axis)]);
+  sheetOf[slotIndex(start.hex, start.axis)] = id;
+  sign_[slotIndex(start.hex, start.axis)] = 1;
+  stack_.assign(1, start);
+  while (!stack_.empty()) {
+    Slot cur = stack_.back();
+    stack_.pop_back();
+    if (out) out->push_back(cur);
+    const int a = cur.axis;
+    measure(cx, cur.hex, a, st);
+    const int sc = sign_[slotIndex(cur.hex, a)];
+    for (int f : kParallelFaces[a]) {
+      Gluing g = cx.gluing(cur.hex, f);
+      if (g.boundary()) continue;
+      const Crossing& c = kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))];
+      const size_t k = slotIndex(g.hex, c.axis);
+      const int want = sc * c.sign;
+      if (sheetOf[k] < 0) {
+        if (previous) previous->push_back(sheetOf[k]);
+        sheetOf[k] = id;
+        sign_[k] = int8_t(want);
+        stack_.push_back({g.hex, c.axis});
+      } else if (sign_[k] != want) {
+        st.orientable = false;
+      }
+    }
+  }
+  return st;
+}
+
+void SheetStats::classify(Sheet& sh) const {
+  sh.orientable = orientable;
+  sh.boundaryLoops = loops;
+  sh.euler = vertices - (interiorSides / 2 + boundarySides) + slots;
+  sh.topology = classifySurface(sh.euler, sh.boundaryLoops, sh.orientable);
 }
 
 // Walks one chord from a slot: back to a boundary end (or once round), then forward, labelling.
-void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf) {
+void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf, std::vector<int32_t>* previous) {
   Slot cur = start;
   int back = 2 * cur.axis;  // leaving backwards through the low face
   bool closed = false;
@@ -118,17 +154,32 @@ void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf) {
     cur = start;
     back = 2 * start.axis;
   }
-  int exitFace = oppositeFace(back);
+  walkChordForward(cx, cur, oppositeFace(back), ch, chordOf, previous);
+  ch.closed = closed;
+}
+
+ChordWalk walkChordForward(const Complex& cx, Slot cur, int exitFace, Chord& ch, int32_t* chordOf,
+                           std::vector<int32_t>* previous) {
+  ChordWalk w;
+  w.smallest = slotIndex(cur.hex, cur.axis);
+  w.smallestEnteredLow = (oppositeFace(exitFace) & 1) == 0;
   for (;;) {
     ch.slots.push_back(cur);
+    if (previous) previous->push_back(chordOf[slotIndex(cur.hex, cur.axis)]);
     chordOf[slotIndex(cur.hex, cur.axis)] = ch.id;
     Gluing g = cx.gluing(cur.hex, exitFace);
     if (g.boundary()) break;
     cur = {g.hex, axisOfFace(g.face)};
     exitFace = oppositeFace(g.face);
-    if (chordOf[slotIndex(cur.hex, cur.axis)] == ch.id) break;
+    const size_t k = slotIndex(cur.hex, cur.axis);
+    if (chordOf[k] == ch.id) break;
+    if (k < w.smallest) {
+      w.smallest = k;
+      w.smallestEnteredLow = (g.face & 1) == 0;
+    }
   }
-  ch.closed = closed;
+  ch.closed = false;
+  return w;
 }
 
 int mapAxisAcross(const Complex& cx, HexId h, int face, int axis) { return axisAcrossGluing(face, axis, cx.gluing(h, face)); }
@@ -142,90 +193,144 @@ std::string classifySurface(int64_t euler, int loops, bool orientable) {
   return "other";
 }
 
+namespace {
+
+// Union-find over slots that also keeps each slot's orientation relative to its root (the low
+// bit of its link), so one sequential pass over glued quads finds the sheets and their
+// orientability, as the floor finds the sheets alone. The smaller root wins: a sheet's root is
+// its smallest slot.
+class OrientedUnionFind {
+ public:
+  explicit OrientedUnionFind(size_t n) : link_(n), twisted_(n, 0) {
+    for (size_t i = 0; i < n; ++i) link_[i] = uint32_t(i) << 1;
+  }
+  uint32_t find(uint32_t x, uint32_t& parity) {
+    parity = 0;
+    for (;;) {
+      const uint32_t l = link_[x], p = l >> 1;
+      if (p == x) return x;
+      const uint32_t lp = link_[p], gp = lp >> 1, par = (l ^ lp) & 1u;
+      link_[x] = (gp << 1) | par;  // path halving, parity composed
+      parity ^= par;
+      x = gp;
+    }
+  }
+  // Joins two slots whose orientations differ by `flip`; a conflict marks the sheet twisted.
+  void unite(uint32_t a, uint32_t b, uint32_t flip) {
+    uint32_t pa, pb;
+    uint32_t ra = find(a, pa), rb = find(b, pb);
+    if (ra == rb) {
+      if ((pa ^ pb) != flip) twisted_[ra] = 1;
+      return;
+    }
+    if (rb < ra) std::swap(ra, rb);
+    link_[rb] = (ra << 1) | (pa ^ pb ^ flip);
+    twisted_[ra] |= twisted_[rb];
+  }
+  bool twisted(uint32_t root) const { return twisted_[root] != 0; }
+
+ private:
+  std::vector<uint32_t> link_;
+  std::vector<uint8_t> twisted_;
+};
+
+// Sheets numbered in the order of their smallest slot: labelled by one oriented union-find pass
+// over the glued quads, then each slot's share of its mid-surface measured in one more pass.
+void extractSheets(const Complex& cx, Dual& d) {
+  int32_t* sheetOf = d.sheetOf.empty() ? nullptr : d.sheetOf[0].data();
+  OrientedUnionFind uf(3 * size_t(cx.hexCapacity()));
+  for (HexId h : cx.hexes())
+    for (int f = 0; f < 6; ++f) {
+      Gluing g = cx.gluing(h, f);
+      if (g.boundary() || g.hex < h || (g.hex == h && g.face < f)) continue;  // each glued quad once
+      for (int a : kParallelAxes[axisOfFace(f)]) {
+        const Crossing& c = kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))];
+        uf.unite(uint32_t(slotIndex(h, a)), uint32_t(slotIndex(g.hex, c.axis)), c.sign < 0 ? 1u : 0u);
+      }
+    }
+  std::vector<uint32_t> roots;
+  for (HexId h : cx.hexes())
+    for (int a = 0; a < 3; ++a) {
+      const uint32_t i = uint32_t(slotIndex(h, a));
+      uint32_t parity;
+      const uint32_t r = uf.find(i, parity);
+      if (r == i) {
+        sheetOf[i] = int32_t(roots.size());
+        roots.push_back(r);
+      } else {
+        sheetOf[i] = sheetOf[r];
+      }
+    }
+  std::vector<SheetStats> stats(roots.size());
+  SheetFlooder flooder;
+  flooder.reserve(size_t(cx.hexCapacity()));
+  for (HexId h : cx.hexes())
+    for (int a = 0; a < 3; ++a) flooder.measure(cx, h, a, stats[size_t(sheetOf[slotIndex(h, a)])]);
+  d.sheets.resize(stats.size());
+  for (size_t s = 0; s < stats.size(); ++s) {
+    d.sheets[s].id = int32_t(s);
+    stats[s].orientable = !uf.twisted(roots[s]);
+    stats[s].classify(d.sheets[s]);
+    d.sheets[s].slots.reserve(size_t(stats[s].slots));
+  }
+}
+
+// Open chords walked once, forward from the boundary end met first; closed ones after. Ids are
+// then renumbered in the order of each chord's smallest slot, and each open chord listed from the
+// end its smallest slot's low face leads to (as a walk from that slot would list it).
+std::vector<int32_t> extractChords(const Complex& cx, Dual& d) {
+  int32_t* chordOf = d.chordOf.empty() ? nullptr : d.chordOf[0].data();
+  std::vector<ChordWalk> walks;
+  for (HexId h : cx.hexes())
+    for (int f = 0; f < 6; ++f) {
+      if (!cx.isBoundary({h, f}) || chordOf[slotIndex(h, axisOfFace(f))] >= 0) continue;
+      Chord ch;
+      ch.id = int32_t(d.chords.size());
+      walks.push_back(walkChordForward(cx, {h, axisOfFace(f)}, oppositeFace(f), ch, chordOf));
+      if (!walks.back().smallestEnteredLow) std::reverse(ch.slots.begin(), ch.slots.end());
+      d.chords.push_back(std::move(ch));
+    }
+  for (HexId h : cx.hexes())
+    for (int a = 0; a < 3; ++a)
+      if (chordOf[slotIndex(h, a)] < 0) {
+        Chord ch;
+        ch.id = int32_t(d.chords.size());
+        walkChord(cx, {h, a}, ch, chordOf);
+        walks.push_back({slotIndex(h, a), true});
+        d.chords.push_back(std::move(ch));
+      }
+  // Renumber by smallest slot.
+  std::vector<int32_t> order(walks.size()), newId(walks.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = int32_t(i);
+  std::sort(order.begin(), order.end(), [&](int32_t x, int32_t y) { return walks[size_t(x)].smallest < walks[size_t(y)].smallest; });
+  std::vector<Chord> sorted(order.size());
+  for (size_t r = 0; r < order.size(); ++r) {
+    newId[size_t(order[r])] = int32_t(r);
+    sorted[r] = std::move(d.chords[size_t(order[r])]);
+    sorted[r].id = int32_t(r);
+  }
+  d.chords = std::move(sorted);
+  return newId;
+}
+
+}  // namespace
+
 Dual extractDual(const Complex& cx) {
   const size_t n = size_t(cx.hexCapacity());
   Dual d;
   d.sheetOf.assign(n, {-1, -1, -1});
   d.chordOf.assign(n, {-1, -1, -1});
-  // Flat views of the per-hex arrays (std::array<int32_t,3> is contiguous).
-  int32_t* sheetOf = n ? d.sheetOf[0].data() : nullptr;
-  int32_t* chordOf = n ? d.chordOf[0].data() : nullptr;
-  std::vector<int8_t> sign(3 * n, 0);
-  std::vector<Slot> stack;
-  std::vector<uint8_t> orientable;
-  for (HexId h : cx.hexes())
-    for (int a = 0; a < 3; ++a) {
-      if (sheetOf[slotIndex(h, a)] < 0) {
-        int32_t id = int32_t(d.sheets.size());
-        d.sheets.emplace_back();
-        d.sheets.back().id = id;
-        d.sheets.back().orientable = floodSheet(cx, {h, a}, id, sheetOf, sign.data(), stack, nullptr);
-      }
-      if (chordOf[slotIndex(h, a)] < 0) {
-        d.chords.emplace_back();
-        d.chords.back().id = int32_t(d.chords.size() - 1);
-        walkChord(cx, {h, a}, d.chords.back(), chordOf);
-      }
-    }
-
+  extractSheets(cx, d);
+  const std::vector<int32_t> newChordId = extractChords(cx, d);
   for (HexId h : cx.hexes()) {
-    const auto &s = d.sheetOf[h], &c = d.chordOf[h];
+    auto& c = d.chordOf[size_t(h)];
+    for (int32_t& id : c) id = newChordId[size_t(id)];
+    const auto& s = d.sheetOf[size_t(h)];
     if (s[0] == s[1] || s[0] == s[2]) d.sheets[size_t(s[0])].selfIntersecting = true;
     if (s[1] == s[2]) d.sheets[size_t(s[1])].selfIntersecting = true;
     if (c[0] == c[1] || c[0] == c[2]) d.chords[size_t(c[0])].selfIntersecting = true;
     if (c[1] == c[2]) d.chords[size_t(c[1])].selfIntersecting = true;
-  }
-  // Sheet slot lists in (hex, axis) order, sized first to avoid regrowth.
-  std::vector<size_t> sizes(d.sheets.size(), 0);
-  for (HexId h : cx.hexes())
-    for (int a = 0; a < 3; ++a) ++sizes[size_t(d.sheetOf[h][a])];
-  for (size_t s = 0; s < d.sheets.size(); ++s) d.sheets[s].slots.reserve(sizes[s]);
-  for (HexId h : cx.hexes())
-    for (int a = 0; a < 3; ++a) d.sheets[size_t(d.sheetOf[h][a])].slots.push_back({h, a});
-
-  // Mid-surfaces: faces = slots, edges = (slot, parallel face) incidences, vertices = edge classes.
-  int32_t numEdges = 0;
-  auto edgeClass = cx.edgeClasses(&numEdges);
-  const size_t ns = d.sheets.size();
-  std::vector<int64_t> interiorSides(ns, 0), boundarySides(ns, 0), verts(ns, 0);
-  std::vector<int32_t> edgeSheet(size_t(numEdges), -1);
-  // Boundary loops: union-find over boundary edge classes along boundary mid-edges.
-  std::vector<int32_t> loopParent(size_t(numEdges), -1);
-  auto root = [&](int32_t x) {
-    while (loopParent[size_t(x)] != x) x = loopParent[size_t(x)] = loopParent[size_t(loopParent[size_t(x)])];
-    return x;
-  };
-  for (HexId h : cx.hexes())
-    for (int a = 0; a < 3; ++a) {
-      size_t s = size_t(d.sheetOf[h][a]);
-      for (int k = 0; k < 4; ++k) {
-        int32_t ec = edgeClass[size_t(12) * h + 4 * a + k];
-        if (edgeSheet[size_t(ec)] < 0) {
-          edgeSheet[size_t(ec)] = int32_t(s);
-          ++verts[s];
-        }
-      }
-      for (int f = 0; f < 6; ++f) {
-        if (axisOfFace(f) == a) continue;
-        if (!cx.isBoundary({h, f})) {
-          ++interiorSides[s];
-          continue;
-        }
-        ++boundarySides[s];
-        const MidSide& m = kMidSides[f * 3 + a];
-        int32_t e0 = edgeClass[size_t(12) * h + m.firstEdge], e1 = edgeClass[size_t(12) * h + m.secondEdge];
-        for (int32_t e : {e0, e1})
-          if (loopParent[size_t(e)] < 0) loopParent[size_t(e)] = e;
-        int32_t r0 = root(e0), r1 = root(e1);
-        if (r0 != r1) loopParent[size_t(std::max(r0, r1))] = std::min(r0, r1);
-      }
-    }
-  for (int32_t ec = 0; ec < numEdges; ++ec)
-    if (loopParent[size_t(ec)] == ec) ++d.sheets[size_t(edgeSheet[size_t(ec)])].boundaryLoops;
-  for (Sheet& sh : d.sheets) {
-    size_t s = size_t(sh.id);
-    sh.euler = verts[s] - (interiorSides[s] / 2 + boundarySides[s]) + int64_t(sh.slots.size());
-    sh.topology = classifySurface(sh.euler, sh.boundaryLoops, sh.orientable);
+    for (int a = 0; a < 3; ++a) d.sheets[size_t(s[size_t(a)])].slots.push_back({h, a});
   }
   return d;
 }
@@ -289,51 +394,6 @@ void validateDual(const Complex& cx, const Dual& d) {
 #include <unordered_map>
 
 namespace hexdual {
-
-namespace {
-uint64_t edgeKey(EdgeRef e) { return (uint64_t(uint32_t(e.hex)) << 4) | uint64_t(e.edge); }
-}  // namespace
-
-void classifySheet(const Complex& cx, Sheet& sh) {
-  std::sort(sh.slots.begin(), sh.slots.end());
-  sh.selfIntersecting = false;
-  for (size_t i = 1; i < sh.slots.size(); ++i)
-    if (sh.slots[i].hex == sh.slots[i - 1].hex) sh.selfIntersecting = true;
-  // Mid-surface vertices = primal edges crossing the sheet; boundary loops by union-find over them.
-  std::unordered_map<uint64_t, int32_t> vertexIndex;
-  std::vector<int32_t> parent;
-  auto indexOf = [&](EdgeRef e) {
-    auto [it, inserted] = vertexIndex.try_emplace(edgeKey(cx.canonical(e)), int32_t(parent.size()));
-    if (inserted) parent.push_back(-1);
-    return it->second;
-  };
-  auto root = [&](int32_t x) {
-    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-    return x;
-  };
-  int64_t interiorSides = 0, boundarySides = 0;
-  for (Slot s : sh.slots) {
-    for (int k = 0; k < 4; ++k) indexOf({s.hex, 4 * s.axis + k});
-    for (int f = 0; f < 6; ++f) {
-      if (axisOfFace(f) == s.axis) continue;
-      if (!cx.isBoundary({s.hex, f})) {
-        ++interiorSides;
-        continue;
-      }
-      ++boundarySides;
-      const MidSide& m = kMidSides[f * 3 + s.axis];
-      int32_t e0 = indexOf({s.hex, m.firstEdge}), e1 = indexOf({s.hex, m.secondEdge});
-      for (int32_t e : {e0, e1})
-        if (parent[size_t(e)] < 0) parent[size_t(e)] = e;
-      int32_t r0 = root(e0), r1 = root(e1);
-      if (r0 != r1) parent[size_t(std::max(r0, r1))] = std::min(r0, r1);
-    }
-  }
-  sh.boundaryLoops = 0;
-  for (size_t i = 0; i < parent.size(); ++i) sh.boundaryLoops += parent[i] == int32_t(i);
-  sh.euler = int64_t(vertexIndex.size()) - (interiorSides / 2 + boundarySides) + int64_t(sh.slots.size());
-  sh.topology = classifySurface(sh.euler, sh.boundaryLoops, sh.orientable);
-}
 
 void compareDuals(const Complex& cx, const Dual& a, const Dual& b) {
   auto fail = [](const std::string& m) { throw Error("compareDuals: " + m); };

@@ -54,17 +54,51 @@ Dual extractDual(const Complex& cx);
 // Names a sheet's topology from its Euler characteristic, boundary loops and orientability.
 std::string classifySurface(int64_t euler, int loops, bool orientable);
 
-// Recomputes a sheet's Euler characteristic, boundary loops, self-intersection and topology from
-// its slots alone (local: cost proportional to the sheet). `orientable` must already be set.
-void classifySheet(const Complex& cx, Sheet& sheet);
+// What one flood measures of a sheet's mid-surface (faces = slots, edges = slot sides parallel to
+// the sheet, vertices = primal edges crossing it). TK03 §1.1.
+struct SheetStats {
+  int64_t slots = 0, interiorSides = 0, boundarySides = 0, vertices = 0;
+  int loops = 0;
+  bool orientable = true;
+  // Sets the sheet's Euler characteristic, loops, orientability and topology name.
+  void classify(Sheet& sheet) const;
+};
 
-// Floods the sheet through a slot, labelling unlabelled slots (-1 in the flat per-slot array
-// `sheetOf`, 3 per hex) with `id`; `sign` (same layout) receives an orientation per slot.
-// Returns false when the sheet is not orientable; appends the slots to `out`.
-bool floodSheet(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, int8_t* sign, std::vector<Slot>& stack,
-                std::vector<Slot>* out);
-// Walks the chord through a slot, labelling its slots with `chord.id` in `chordOf` (flat array).
-void walkChord(const Complex& cx, Slot start, Chord& chord, int32_t* chordOf);
+// Floods sheets: labels slots, orients them and measures the mid-surface in the same pass (each
+// primal edge walked once, each boundary loop once). Its marks persist between floods so a whole
+// extraction pays once; clear() resets the marks of a flooded sheet for the next local flood.
+class SheetFlooder {
+ public:
+  void reserve(size_t hexCapacity);
+  // Floods the sheet through `start`, labelling unlabelled slots (-1 in the flat per-slot array
+  // `sheetOf`, 3 per hex) with `id`; appends the slots to `out` and the labels they had (all
+  // negative) to `previous` when given.
+  SheetStats flood(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, std::vector<Slot>* out,
+                   std::vector<int32_t>* previous = nullptr);
+  void clear(const std::vector<Slot>& slots);
+  // Adds slot (h, a)'s share of its sheet's mid-surface to `stats` (not its orientation).
+  void measure(const Complex& cx, HexId h, int a, SheetStats& stats);
+
+ private:
+  void walkEdge(const Complex& cx, HexId h, int e);
+  void walkLoop(const Complex& cx, HexId h, int f, int a);
+  std::vector<int8_t> sign_;        // per slot: orientation of its mid-quad
+  std::vector<uint16_t> edgeSeen_;  // per hex: bit e set once edge incidence (h, e) is counted
+  std::vector<uint16_t> loopSeen_;  // per hex: bit per boundary mid-edge (face, slot axis) walked
+  std::vector<Slot> stack_;
+};
+
+// Walks the chord through a slot (back to a boundary end or once round, then forward), labelling
+// its slots with `chord.id` in `chordOf` (flat array); the labels overwritten go to `previous`.
+void walkChord(const Complex& cx, Slot start, Chord& chord, int32_t* chordOf, std::vector<int32_t>* previous = nullptr);
+// Walks a chord forward from slot `start` leaving through `exitFace`, until the boundary or back
+// at a slot already labelled with chord.id; reports the smallest slot index met and its entry side.
+struct ChordWalk {
+  size_t smallest = 0;
+  bool smallestEnteredLow = true;
+};
+ChordWalk walkChordForward(const Complex& cx, Slot start, int exitFace, Chord& chord, int32_t* chordOf,
+                           std::vector<int32_t>* previous = nullptr);
 
 // Compares two duals of the same complex up to renaming of ids: same partition of slots into
 // sheets and chords, same classification. Throws Error naming the first difference.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <climits>
 
 namespace hexdual {
 
@@ -113,10 +114,11 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
       id = int32_t(dual_.sheets.size());
       Sheet sh;
       sh.id = id;
-      std::vector<Slot> stack;
-      sh.orientable = floodSheet(cx, comps[ci][0], id, dual_.sheetOf[0].data(), sign_.data(), stack, &sh.slots);
-      for (Slot t : sh.slots) sign_[3 * size_t(t.hex) + size_t(t.axis)] = 0;
-      classifySheet(cx, sh);
+      SheetStats st = flooder_.flood(cx, comps[ci][0], id, dual_.sheetOf[0].data(), &sh.slots);
+      flooder_.clear(sh.slots);
+      std::sort(sh.slots.begin(), sh.slots.end());
+      st.classify(sh);
+      slotsTouched_ += sh.slots.size();
       dual_.sheets.push_back(std::move(sh));
       selfHexes_.push_back(0);
       change.sheetsCreated.push_back(id);
@@ -160,7 +162,8 @@ DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bo
   const size_t cap = std::max(size_t(cx.hexCapacity()), dual_.sheetOf.size());
   dual_.sheetOf.resize(cap, {-1, -1, -1});
   dual_.chordOf.resize(cap, {-1, -1, -1});
-  sign_.resize(3 * cap, 0);
+  flooder_.reserve(cap);
+  slotsTouched_ = 0;
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   DualChange change;
@@ -170,141 +173,121 @@ DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bo
 }
 
 namespace {
+
+// Old labels are parked in the per-slot array as -2 - id, so a walk that overwrites them reports
+// which old sheets or chords each new one holds (no map of slots).
+int32_t parked(int32_t id) { return -2 - id; }
+
 // Picks the id for a recomputed component: the smallest old id it holds that no earlier
 // component took, else a fresh id.
-int chooseId(std::vector<int> candidates, std::vector<int>& taken, size_t freshId) {
-  std::sort(candidates.begin(), candidates.end());
-  for (int c : candidates)
-    if (std::find(taken.begin(), taken.end(), c) == taken.end()) {
-      taken.push_back(c);
-      return c;
-    }
-  return int(freshId);
+int chooseId(const std::vector<int32_t>& previous, std::vector<int>& taken, size_t freshId) {
+  int best = -1;
+  for (int32_t p : previous) {
+    int c = p <= -2 ? parked(p) : -1;
+    if (c >= 0 && (best < 0 || c < best) && std::find(taken.begin(), taken.end(), c) == taken.end()) best = c;
+  }
+  if (best < 0) return int(freshId);
+  taken.push_back(best);
+  return best;
 }
+
+// Re-labels the sheets or chords (`list`, per-slot labels `of`) through the touched hexes: every
+// old one touched is cleared and its slots re-walked from seeds (with `walk`, labelling kTemp),
+// and each component found keeps the smallest old id it holds. Sheets and chords alike.
+template <class Entity, class Walk>
+size_t relabel(const Complex& cx, const std::vector<HexId>& touched, std::vector<std::array<int32_t, 3>>& of,
+               std::vector<Entity>& list, Walk walk, std::vector<int>& created, std::vector<int>& changed,
+               std::vector<int>& removed) {
+  size_t visited = 0;
+  std::vector<int> old;
+  for (HexId h : touched)
+    for (int32_t id : of[size_t(h)])
+      if (id >= 0) old.push_back(id);
+  std::sort(old.begin(), old.end());
+  old.erase(std::unique(old.begin(), old.end()), old.end());
+  std::vector<Slot> seeds;
+  for (int id : old) {
+    for (Slot s : list[size_t(id)].slots) {
+      of[size_t(s.hex)][size_t(s.axis)] = parked(id);
+      seeds.push_back(s);
+    }
+    list[size_t(id)].alive = false;
+    list[size_t(id)].slots.clear();
+  }
+  for (HexId h : touched) {
+    if (!cx.isHex(h)) {
+      of[size_t(h)] = {-1, -1, -1};
+      continue;
+    }
+    for (int a = 0; a < 3; ++a)
+      if (of[size_t(h)][size_t(a)] == -1) seeds.push_back({h, a});
+  }
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  visited += seeds.size();
+  std::vector<int> taken;
+  std::vector<int32_t> previous;
+  for (Slot s : seeds) {
+    if (!cx.isHex(s.hex) || of[size_t(s.hex)][size_t(s.axis)] >= 0) continue;
+    Entity e;
+    previous.clear();
+    walk(s, e, previous);
+    visited += e.slots.size();
+    int id = chooseId(previous, taken, list.size());
+    e.id = id;
+    for (Slot t : e.slots) of[size_t(t.hex)][size_t(t.axis)] = id;
+    if (id == int(list.size())) {
+      list.push_back(std::move(e));
+      created.push_back(id);
+    } else {
+      list[size_t(id)] = std::move(e);
+      changed.push_back(id);
+    }
+  }
+  for (int id : old)
+    if (!list[size_t(id)].alive) removed.push_back(id);
+  return visited;
+}
+
+constexpr int32_t kTemp = INT32_MAX - 1;
+
 }  // namespace
 
 void DualTracker::updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
   int32_t* sheetOf = dual_.sheetOf[0].data();
-  std::vector<int> old;
-  for (HexId h : touched)
-    for (int a = 0; a < 3; ++a)
-      if (dual_.sheetOf[size_t(h)][size_t(a)] >= 0) old.push_back(dual_.sheetOf[size_t(h)][size_t(a)]);
-  std::sort(old.begin(), old.end());
-  old.erase(std::unique(old.begin(), old.end()), old.end());
-  std::map<std::pair<HexId, int>, int> oldOf;
-  std::vector<Slot> seeds;
-  for (int id : old) {
-    for (Slot s : dual_.sheets[size_t(id)].slots) {
-      oldOf[{s.hex, s.axis}] = id;
-      dual_.sheetOf[size_t(s.hex)][size_t(s.axis)] = -1;
-      seeds.push_back(s);
-    }
-    dual_.sheets[size_t(id)].alive = false;
-    dual_.sheets[size_t(id)].slots.clear();
-  }
-  for (HexId h : touched) {
-    if (!cx.isHex(h)) {
-      dual_.sheetOf[size_t(h)] = {-1, -1, -1};
-      continue;
-    }
-    for (int a = 0; a < 3; ++a)
-      if (dual_.sheetOf[size_t(h)][size_t(a)] < 0) seeds.push_back({h, a});
-  }
-  std::sort(seeds.begin(), seeds.end());
-  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-  std::vector<int> taken;
-  const int32_t kTemp = INT32_MAX - 1;
-  for (Slot s : seeds) {
-    if (!cx.isHex(s.hex) || dual_.sheetOf[size_t(s.hex)][size_t(s.axis)] >= 0) continue;
-    Sheet sh;
-    sh.orientable = floodSheet(cx, s, kTemp, sheetOf, sign_.data(), stack_, &sh.slots);
-    std::vector<int> cand;
-    for (Slot t : sh.slots) {
-      auto it = oldOf.find({t.hex, t.axis});
-      if (it != oldOf.end()) cand.push_back(it->second);
-    }
-    int id = chooseId(cand, taken, dual_.sheets.size());
-    for (Slot t : sh.slots) {
-      dual_.sheetOf[size_t(t.hex)][size_t(t.axis)] = id;
-      sign_[3 * size_t(t.hex) + size_t(t.axis)] = 0;
-    }
-    sh.id = id;
-    classifySheet(cx, sh);
+  auto walk = [&](Slot s, Sheet& sh, std::vector<int32_t>& previous) {
+    SheetStats st = flooder_.flood(cx, s, kTemp, sheetOf, &sh.slots, &previous);
+    flooder_.clear(sh.slots);
+    std::sort(sh.slots.begin(), sh.slots.end());
+    st.classify(sh);
+  };
+  slotsTouched_ += relabel(cx, touched, dual_.sheetOf, dual_.sheets, walk, change.sheetsCreated, change.sheetsChanged,
+                           change.sheetsRemoved);
+  selfHexes_.resize(dual_.sheets.size(), 0);
+  auto recount = [&](int id) {
+    Sheet& sh = dual_.sheets[size_t(id)];
     int32_t self = 0;
     for (size_t i = 1; i < sh.slots.size(); ++i)
       if (sh.slots[i].hex == sh.slots[i - 1].hex && (i < 2 || sh.slots[i - 2].hex != sh.slots[i].hex)) ++self;
-    if (id == int(dual_.sheets.size())) {
-      dual_.sheets.push_back(std::move(sh));
-      selfHexes_.push_back(self);
-      change.sheetsCreated.push_back(id);
-    } else {
-      dual_.sheets[size_t(id)] = std::move(sh);
-      selfHexes_[size_t(id)] = self;
-      change.sheetsChanged.push_back(id);
-    }
-  }
-  for (int id : old)
-    if (!dual_.sheets[size_t(id)].alive) change.sheetsRemoved.push_back(id);
+    selfHexes_[size_t(id)] = self;
+    sh.selfIntersecting = self > 0;
+  };
+  for (int id : change.sheetsCreated) recount(id);
+  for (int id : change.sheetsChanged) recount(id);
 }
 
 void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
   int32_t* chordOf = dual_.chordOf[0].data();
-  std::vector<int> old;
-  for (HexId h : touched)
-    for (int a = 0; a < 3; ++a)
-      if (dual_.chordOf[size_t(h)][size_t(a)] >= 0) old.push_back(dual_.chordOf[size_t(h)][size_t(a)]);
-  std::sort(old.begin(), old.end());
-  old.erase(std::unique(old.begin(), old.end()), old.end());
-  std::map<std::pair<HexId, int>, int> oldOf;
-  std::vector<Slot> seeds;
-  for (int id : old) {
-    for (Slot s : dual_.chords[size_t(id)].slots) {
-      oldOf[{s.hex, s.axis}] = id;
-      dual_.chordOf[size_t(s.hex)][size_t(s.axis)] = -1;
-      seeds.push_back(s);
-    }
-    dual_.chords[size_t(id)].alive = false;
-    dual_.chords[size_t(id)].slots.clear();
-  }
-  for (HexId h : touched) {
-    if (!cx.isHex(h)) {
-      dual_.chordOf[size_t(h)] = {-1, -1, -1};
-      continue;
-    }
-    for (int a = 0; a < 3; ++a)
-      if (dual_.chordOf[size_t(h)][size_t(a)] < 0) seeds.push_back({h, a});
-  }
-  std::sort(seeds.begin(), seeds.end());
-  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-  std::vector<int> taken;
-  const int32_t kTemp = INT32_MAX - 1;
-  for (Slot s : seeds) {
-    if (!cx.isHex(s.hex) || dual_.chordOf[size_t(s.hex)][size_t(s.axis)] >= 0) continue;
-    Chord ch;
+  auto walk = [&](Slot s, Chord& ch, std::vector<int32_t>& previous) {
     ch.id = kTemp;
-    walkChord(cx, s, ch, chordOf);
-    std::vector<int> cand;
-    for (Slot t : ch.slots) {
-      auto it = oldOf.find({t.hex, t.axis});
-      if (it != oldOf.end()) cand.push_back(it->second);
-    }
-    int id = chooseId(cand, taken, dual_.chords.size());
-    ch.id = id;
+    walkChord(cx, s, ch, chordOf, &previous);
     std::vector<Slot> sorted = ch.slots;
     std::sort(sorted.begin(), sorted.end());
     for (size_t i = 1; i < sorted.size(); ++i)
       if (sorted[i].hex == sorted[i - 1].hex) ch.selfIntersecting = true;
-    for (Slot t : ch.slots) dual_.chordOf[size_t(t.hex)][size_t(t.axis)] = id;
-    if (id == int(dual_.chords.size())) {
-      dual_.chords.push_back(std::move(ch));
-      change.chordsCreated.push_back(id);
-    } else {
-      dual_.chords[size_t(id)] = std::move(ch);
-      change.chordsChanged.push_back(id);
-    }
-  }
-  for (int id : old)
-    if (!dual_.chords[size_t(id)].alive) change.chordsRemoved.push_back(id);
+  };
+  slotsTouched_ += relabel(cx, touched, dual_.chordOf, dual_.chords, walk, change.chordsCreated, change.chordsChanged,
+                           change.chordsRemoved);
 }
 
 }  // namespace hexdual

@@ -33,14 +33,17 @@ class DualTracker {
   // undone step created are handed out again when it is redone.
   void releaseRetiredTail();
 
+  // Slots the last update visited (walked, flooded or re-labelled): its cost, independent of time.
+  size_t slotsTouched() const { return slotsTouched_; }
+
  private:
   bool updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   Dual dual_;
   std::vector<int32_t> selfHexes_;  // per sheet id: hexes with two or more slots on it
-  std::vector<int8_t> sign_;
-  std::vector<Slot> stack_;
+  SheetFlooder flooder_;
+  size_t slotsTouched_ = 0;
 };
 
 // Hex ids whose gluings or corners an edit log changed (created, removed, re-glued, renumbered).
