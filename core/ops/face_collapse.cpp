@@ -1,4 +1,4 @@
-// Face open-collapse and its inverse (MOAB face_open_collapse; OPERATIONS.md 4b).
+// Face open-collapse and its inverse (TK03 §4.4; MOAB face_open_collapse).
 #include "ops/support.hpp"
 
 namespace hexdual {
@@ -14,21 +14,27 @@ int cornerWithVertex(const Complex& cx, HexId h, VertexId v) {
 }  // namespace
 
 OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
-  const std::string op = "faceCollapse";
+  const OpKind kind = OpKind::FaceCollapse;
+  const std::string op = opName(kind);
   const ArcSplit sp = arcSplit(cx, e, f, g, op, "face collapse");
   const QuadSide fL = sp.fL, fR = sp.fR, gL = sp.gL, gR = sp.gR;
   const EdgeRef li = sp.li, lj = sp.lj;
   const VertexId c = sp.fa, d = sp.fb, c2 = sp.ga, d2 = sp.gb;
-  // c merges with c2 and d with d2 (each pair keeps its smaller id); none may be on the boundary.
+  // c merges with c2 and d with d2. A boundary vertex keeps its id and place, so the boundary quad
+  // mesh is unchanged; two boundary vertices never merge. Otherwise the smaller id stays.
+  auto survivor = [&](VertexId x, HexId hx, VertexId y, HexId hy) {
+    const bool bx = vertexOnBoundary(cx, hx, cornerWithVertex(cx, hx, x));
+    const bool by = vertexOnBoundary(cx, hy, cornerWithVertex(cx, hy, y));
+    if (bx && by)
+      reject(op, "vertices " + std::to_string(x) + " and " + std::to_string(y) + " would merge but both are on the boundary");
+    return bx ? x : by ? y : std::min(x, y);
+  };
   std::vector<std::pair<HexId, int>> cornersC2, cornersD2, cornersC, cornersD;
   cornersC = cx.cornersOfVertex(li.hex, cornerWithVertex(cx, li.hex, c));
   cornersD = cx.cornersOfVertex(li.hex, cornerWithVertex(cx, li.hex, d));
   cornersC2 = cx.cornersOfVertex(lj.hex, cornerWithVertex(cx, lj.hex, c2));
   cornersD2 = cx.cornersOfVertex(lj.hex, cornerWithVertex(cx, lj.hex, d2));
-  for (auto [h, vtx] : {std::pair{li.hex, c}, std::pair{li.hex, d}, std::pair{lj.hex, c2}, std::pair{lj.hex, d2}})
-    if (vertexOnBoundary(cx, h, cornerWithVertex(cx, h, vtx)))
-      reject(op, "vertex " + std::to_string(vtx) + " would merge but it is on the boundary");
-  const VertexId keepC = std::min(c, c2), keepD = std::min(d, d2);
+  const VertexId keepC = survivor(c, li.hex, c2, lj.hex), keepD = survivor(d, li.hex, d2, lj.hex);
   std::vector<HexId> touched;
   Transaction tx(cx);
   cx.unglue(fL.hex, fL.face);
@@ -44,33 +50,30 @@ OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
       touched.push_back(h);
     }
   OpResult r;
-  r.op = op;
-  r.removedVertices = {std::max(c, c2), std::max(d, d2)};
+  r.op = kind;
+  r.removedVertices = {keepC == c ? c2 : c, keepD == d ? d2 : d};
   if (fL == gL || fR == gR) reject(op, "the collapse would glue a quad to itself");
   int o1 = orientByVertices(cx, fL.hex, fL.face, gL.hex, gL.face), o2 = orientByVertices(cx, fR.hex, fR.face, gR.hex, gR.face);
   if (o1 < 0 || o2 < 0) reject(op, "after merging, the opened quads do not carry the same vertices");
   cx.glue(fL.hex, fL.face, gL.hex, gL.face, o1);
   cx.glue(fR.hex, fR.face, gR.hex, gR.face, o2);
   for (QuadSide s : {fL, fR, gL, gR}) touched.push_back(s.hex);
-  r.inverse = "facesplit " + sideName(fL) + " " + sideName(fR);
-  try {
-    tx.commit(r, touched);
-  } catch (const Error& err) {
-    reject(op, std::string("the result would not be a valid complex (") + err.what() + ")");
-  }
+  r.inverse = makeStep(OpKind::FaceSplit, fL, fR);
+  tx.commitIfValid(r, touched, op, "the result would not be a valid complex");
   return r;
 }
 
 OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
-  const std::string op = "faceSplit";
+  const OpKind kind = OpKind::FaceSplit;
+  const std::string op = opName(kind);
   for (QuadSide s : {sL, sR}) {
     if (!cx.isHex(s.hex)) reject(op, hexName(s.hex) + " does not exist");
     if (s.face < 0 || s.face > 5) reject(op, "local face " + std::to_string(s.face) + " is not 0..5");
-    if (cx.gluing(s).boundary()) reject(op, "quad " + sideName(s) + " is on the boundary");
+    if (cx.gluing(s).boundary()) reject(op, "quad " + entityName(s) + " is on the boundary");
   }
   if (cx.canonical(sL) == cx.canonical(sR)) reject(op, "the two sides belong to the same quad");
   if (faceVertexSet(cx, sL.hex, sL.face) != faceVertexSet(cx, sR.hex, sR.face))
-    reject(op, "quads " + sideName(sL) + " and " + sideName(sR) + " are not on the same 4 vertices");
+    reject(op, "quads " + entityName(sL) + " and " + entityName(sR) + " are not on the same 4 vertices");
   const QuadSide gL{cx.gluing(sL).hex, cx.gluing(sL).face}, gR{cx.gluing(sR).hex, cx.gluing(sR).face};
   // The quads share 3 of their 4 edges; the fourth (a doubled edge ab) stays, the vertices c, d
   // opposite it split in two.
@@ -86,7 +89,7 @@ OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
       own = p;
       ++owns;
     }
-  if (owns != 1) reject(op, "quads " + sideName(sL) + " and " + sideName(sR) + " are not a collapsed face pair");
+  if (owns != 1) reject(op, "quads " + entityName(sL) + " and " + entityName(sR) + " are not a collapsed face pair");
   const int cA = kFaceCorners[size_t(sL.face)][size_t(own)], cB = kFaceCorners[size_t(sL.face)][size_t((own + 1) & 3)];
   const int cD = kFaceCorners[size_t(sL.face)][size_t((own + 2) & 3)], cC = kFaceCorners[size_t(sL.face)][size_t((own + 3) & 3)];
   // cC and cD are the vertices opposite the doubled edge (cA, cB): they split.
@@ -97,21 +100,14 @@ OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
   };
   std::vector<Split> splits;
   for (int corner : {cC, cD}) {
-    auto keep = cornersOnSide(cx, {sL.hex, corner}, walls);
-    auto all = cx.cornersOfVertex(sL.hex, corner);
-    if (vertexOnBoundary(cx, sL.hex, corner)) reject(op, "vertex " + std::to_string(cx.vertex(sL.hex, corner)) + " is on the boundary");
-    Split s{cx.vertex(sL.hex, corner), {}};
-    for (auto k : all)
-      if (std::find(keep.begin(), keep.end(), k) == keep.end()) s.gSide.push_back(k);
-    if (s.gSide.empty() || cornersOnSide(cx, s.gSide[0], walls).size() != s.gSide.size())
-      reject(op, "the two quads do not cut vertex " + std::to_string(s.v) + " into two sides");
+    Split s{cx.vertex(sL.hex, corner), splitVertex(cx, {sL.hex, corner}, walls, op, "the two quads").moved};
     splits.push_back(s);
   }
   Transaction tx(cx);
   cx.unglue(sL.hex, sL.face);
   cx.unglue(sR.hex, sR.face);
   OpResult r;
-  r.op = op;
+  r.op = kind;
   std::vector<HexId> touched{sL.hex, sR.hex, gL.hex, gR.hex};
   for (const Split& s : splits) {
     Vec3 c;
@@ -129,12 +125,8 @@ OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
   cx.glue(sL.hex, sL.face, sR.hex, sR.face, o1);
   cx.glue(gL.hex, gL.face, gR.hex, gR.face, o2);
   // The restored edge ab, named in sL's hex, and f = sL, g = gL's quad.
-  r.inverse = "facecollapse " + edgeName({sL.hex, edgeBetween(cA, cB)}) + " " + sideName(sL) + " " + sideName(gL);
-  try {
-    tx.commit(r, touched);
-  } catch (const Error& err) {
-    reject(op, std::string("the result would not be a valid complex (") + err.what() + ")");
-  }
+  r.inverse = makeStep(OpKind::FaceCollapse, EdgeRef{sL.hex, edgeBetween(cA, cB)}, sL, gL);
+  tx.commitIfValid(r, touched, op, "the result would not be a valid complex");
   return r;
 }
 

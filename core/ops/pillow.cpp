@@ -6,7 +6,8 @@ using namespace tables;
 using namespace ops;
 
 OpResult pillow(Complex& cx, QuadSide q) {
-  const std::string op = "pillow";
+  const OpKind kind = OpKind::Pillow;
+  const std::string op = opName(kind);
   Gluing gB = requireInteriorQuad(cx, q, op, "a pillow needs an interior quad");
   const HexId A = q.hex, B = gB.hex;
   const int fA = q.face, fB = gB.face;
@@ -36,40 +37,22 @@ OpResult pillow(Complex& cx, QuadSide q) {
   glueByVertices(cx, Y, 5, B, fB);
 
   OpResult r;
-  r.op = op;
+  r.op = kind;
   r.createdHexes = {X, Y};
   r.createdVertices.assign(N.begin(), N.end());
-  r.inverse = "unpillow h" + std::to_string(X);
+  r.inverse = makeStep(OpKind::Unpillow, X);
   tx.commit(r, {A, B, X, Y});
   return r;
 }
 
 OpResult unpillow(Complex& cx, HexId x) {
-  const std::string op = "unpillow";
+  const OpKind kind = OpKind::Unpillow;
+  const std::string op = opName(kind);
   if (!cx.isHex(x)) reject(op, hexName(x) + " does not exist");
   // The partner is the hex glued to x across exactly 5 faces; x's sixth face is its free face.
-  HexId y = -1;
-  int freeX = -1;
-  for (int f = 0; f < 6 && y < 0; ++f) {
-    Gluing g = cx.gluing(x, f);
-    if (g.boundary() || g.hex == x) continue;
-    int n = 0, other = -1;
-    for (int k = 0; k < 6; ++k) {
-      Gluing gk = cx.gluing(x, k);
-      if (!gk.boundary() && gk.hex == g.hex) ++n;
-      else other = k;
-    }
-    if (n == 5) {
-      y = g.hex;
-      freeX = other;
-    }
-  }
+  const HexId y = partnerSharing(cx, x, 5);
   if (y < 0) reject(op, hexName(x) + " is not half of a pillow (no hex shares exactly 5 quads with it)");
-  int freeY = -1;
-  for (int f = 0; f < 6; ++f) {
-    Gluing g = cx.gluing(y, f);
-    if (g.boundary() || g.hex != x) freeY = f;
-  }
+  const int freeX = facesNotGluedTo(cx, x, y)[0], freeY = facesNotGluedTo(cx, y, x)[0];
   Gluing gA = cx.gluing(x, freeX), gB = cx.gluing(y, freeY);
   if (gA.boundary() || gB.boundary())
     reject(op, "the pillow of " + hexName(x) + " and " + hexName(y) + " touches the boundary; it must lie between two hexes");
@@ -93,10 +76,10 @@ OpResult unpillow(Complex& cx, HexId x) {
   cx.removeHex(y);
   glueByVertices(cx, A, fA, B, fB);
   OpResult r;
-  r.op = op;
+  r.op = kind;
   r.removedHexes = {x, y};
   r.removedVertices = inner;
-  r.inverse = "pillow h" + std::to_string(A) + "f" + std::to_string(fA);
+  r.inverse = makeStep(OpKind::Pillow, QuadSide{A, fA});
   tx.commit(r, {A, B});
   return r;
 }

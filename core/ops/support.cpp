@@ -32,7 +32,7 @@ Gluing requireInteriorQuad(const Complex& cx, QuadSide q, const std::string& op,
   if (!cx.isHex(q.hex)) reject(op, hexName(q.hex) + " does not exist");
   if (q.face < 0 || q.face > 5) reject(op, "local face " + std::to_string(q.face) + " is not 0..5");
   Gluing g = cx.gluing(q);
-  if (g.boundary()) reject(op, "quad " + sideName(q) + " is on the boundary; " + needs);
+  if (g.boundary()) reject(op, "quad " + entityName(q) + " is on the boundary; " + needs);
   return g;
 }
 
@@ -56,7 +56,7 @@ EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op) {
     st.entryFace.push_back(entry);
     st.exitFace.push_back(exitFace);
     Gluing g = cx.gluing(cur.hex, exitFace);
-    if (g.boundary()) reject(op, "edge " + edgeName(e) + " is on the boundary; it needs a closed cycle of hexes");
+    if (g.boundary()) reject(op, "edge " + entityName(e) + " is on the boundary; it needs a closed cycle of hexes");
     int c0 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[size_t(cur.edge)][0]);
     int c1 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[size_t(cur.edge)][1]);
     cur = {g.hex, edgeBetween(c0, c1)};
@@ -68,7 +68,7 @@ EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op) {
       return st;
     }
   }
-  reject(op, "the cycle around edge " + edgeName(e) + " does not close");
+  reject(op, "the cycle around edge " + entityName(e) + " does not close");
 }
 
 int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side) {
@@ -81,12 +81,29 @@ int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side) {
   return -1;
 }
 
-bool vertexOnBoundary(const Complex& cx, HexId h, int c) {
-  for (auto [hh, cc] : cx.cornersOfVertex(h, c))
-    for (int f : facesOfCorner(cc))
-      if (cx.gluing(hh, f).boundary()) return true;
+std::vector<int> facesNotGluedTo(const Complex& cx, HexId h, HexId other) {
+  std::vector<int> out;
+  for (int f = 0; f < 6; ++f)
+    if (cx.gluing(h, f).boundary() || cx.gluing(h, f).hex != other) out.push_back(f);
+  return out;
+}
+
+HexId partnerSharing(const Complex& cx, HexId x, int shared) {
+  for (int f = 0; f < 6; ++f) {
+    Gluing g = cx.gluing(x, f);
+    if (!g.boundary() && g.hex != x && int(facesNotGluedTo(cx, x, g.hex).size()) == 6 - shared) return g.hex;
+  }
+  return -1;
+}
+
+bool cornersOnBoundary(const Complex& cx, const std::vector<std::pair<HexId, int>>& corners) {
+  for (auto [h, c] : corners)
+    for (int f : facesOfCorner(c))
+      if (cx.gluing(h, f).boundary()) return true;
   return false;
 }
+
+bool vertexOnBoundary(const Complex& cx, HexId h, int c) { return cornersOnBoundary(cx, cx.cornersOfVertex(h, c)); }
 
 namespace {
 // The vertex of face f of hex h next to corner c, on the side away from corner `away`.
@@ -102,8 +119,8 @@ ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const st
   s.star = closedEdgeStar(cx, e, op);
   const int n = int(s.star.inc.size());
   int i = quadIndexInStar(cx, s.star, f), j = quadIndexInStar(cx, s.star, g);
-  if (i < 0) reject(op, "quad " + sideName(f) + " is not in the cycle around edge " + edgeName(e));
-  if (j < 0) reject(op, "quad " + sideName(g) + " is not in the cycle around edge " + edgeName(e));
+  if (i < 0) reject(op, "quad " + entityName(f) + " is not in the cycle around edge " + entityName(e));
+  if (j < 0) reject(op, "quad " + entityName(g) + " is not in the cycle around edge " + entityName(e));
   if (i == j) reject(op, std::string("f and g are the same quad; ") + what + " needs two distinct quads");
   // Quad k lies between incidence k (exit face) and k+1 (entry face).
   const auto& st = s.star;
@@ -124,8 +141,16 @@ ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const st
   s.ga = neighbourInFace(cx, s.lj.hex, s.gL.face, da, db);
   s.gb = neighbourInFace(cx, s.lj.hex, s.gL.face, db, da);
   if (s.fa == s.ga || s.fa == s.gb || s.fb == s.ga || s.fb == s.gb)
-    reject(op, "quads " + sideName(f) + " and " + sideName(g) + " share more than edge " + edgeName(e));
+    reject(op, "quads " + entityName(f) + " and " + entityName(g) + " share more than edge " + entityName(e));
   return s;
+}
+
+std::vector<HexId> withNeighbours(const Complex& cx, const std::vector<HexId>& hexes) {
+  std::vector<HexId> out = hexes;
+  for (HexId h : hexes)
+    for (int f = 0; f < 6; ++f)
+      if (!cx.gluing(h, f).boundary()) out.push_back(cx.gluing(h, f).hex);
+  return out;
 }
 
 void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) {
@@ -144,6 +169,15 @@ void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) {
   open_ = false;
 }
 
+void Transaction::commitIfValid(OpResult& r, const std::vector<HexId>& touched, const std::string& op,
+                                const std::string& why) {
+  try {
+    commit(r, touched);
+  } catch (const Error& err) {
+    reject(op, why + " (" + err.what() + ")");
+  }
+}
+
 std::vector<std::pair<HexId, int>> cornersOnSide(const Complex& cx, std::pair<HexId, int> seed,
                                                  const std::vector<QuadSide>& walls) {
   auto isWall = [&](HexId h, int f) { return std::find(walls.begin(), walls.end(), QuadSide{h, f}) != walls.end(); };
@@ -157,6 +191,39 @@ std::vector<std::pair<HexId, int>> cornersOnSide(const Complex& cx, std::pair<He
     }
   }
   return out;
+}
+
+VertexSplit splitVertex(const Complex& cx, std::pair<HexId, int> seed, const std::vector<QuadSide>& walls,
+                        const std::string& op, const std::string& what) {
+  const VertexId v = cx.vertex(seed.first, seed.second);
+  std::vector<std::vector<std::pair<HexId, int>>> pieces;
+  std::vector<std::pair<HexId, int>> left = cx.cornersOfVertex(seed.first, seed.second);
+  for (auto start = seed; !left.empty(); start = left.front()) {
+    pieces.push_back(cornersOnSide(cx, start, walls));
+    for (auto c : pieces.back()) left.erase(std::remove(left.begin(), left.end(), c), left.end());
+  }
+  if (pieces.size() < 2) reject(op, what + " do not cut vertex " + std::to_string(v) + " into two sides");
+  VertexSplit s;
+  if (pieces.size() == 2) {
+    s.keep = pieces[0];
+    s.moved = pieces[1];
+    if (cornersOnBoundary(cx, s.moved)) {
+      if (cornersOnBoundary(cx, s.keep))
+        reject(op, "vertex " + std::to_string(v) + " is on the boundary on both sides; splitting it would change the boundary");
+      std::swap(s.keep, s.moved);
+    }
+    return s;
+  }
+  for (auto& p : pieces) {
+    if (!cornersOnBoundary(cx, p)) {
+      if (!s.moved.empty()) reject(op, what + " cut vertex " + std::to_string(v) + " into more than two sides");
+      s.moved = p;
+    } else {
+      s.keep.insert(s.keep.end(), p.begin(), p.end());
+    }
+  }
+  if (s.moved.empty()) reject(op, what + " cut vertex " + std::to_string(v) + " into more than two sides");
+  return s;
 }
 
 }  // namespace hexdual::ops
@@ -197,10 +264,10 @@ std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::v
   for (const auto& [key, side] : outside) {
     auto hits = take(key);
     if (hits.size() != 1)
-      reject(op, "the new hexes do not fit the neighbour " + sideName(side) + " (" + std::to_string(hits.size()) +
+      reject(op, "the new hexes do not fit the neighbour " + entityName(side) + " (" + std::to_string(hits.size()) +
                      " faces carry its vertices)");
     int o = orientByVertices(cx, hits[0].hex, hits[0].face, side.hex, side.face);
-    if (o < 0) reject(op, "the new hexes meet " + sideName(side) + " in a different cyclic order");
+    if (o < 0) reject(op, "the new hexes meet " + entityName(side) + " in a different cyclic order");
     cx.glue(hits[0].hex, hits[0].face, side.hex, side.face, o);
   }
   while (!open.empty()) {

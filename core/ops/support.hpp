@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "ops/op_table.hpp"
 #include "ops/ops.hpp"
 
 namespace hexdual::ops {
@@ -37,12 +38,20 @@ EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op);
 // Index k of quad k of the star that has `side` as one of its sides, or -1.
 int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side);
 
+// The faces of h not glued to `other`.
+std::vector<int> facesNotGluedTo(const Complex& cx, HexId h, HexId other);
+// The first hex (by x's faces) glued to x across exactly `shared` of x's faces, or -1: the other
+// half of a pillow (5) or of a blind chord (4).
+HexId partnerSharing(const Complex& cx, HexId x, int shared);
+
+// Whether any of these (hex, corner) incidences has a face on the boundary.
+bool cornersOnBoundary(const Complex& cx, const std::vector<std::pair<HexId, int>>& corners);
 // Whether the vertex at corner c of hex h lies on the boundary (walks its corners).
 bool vertexOnBoundary(const Complex& cx, HexId h, int c);
 
-// The arc split of OPERATIONS.md: edge e = ab with a closed cycle, two distinct quads f and g of
-// it; arc L runs from after f up to g, arc R the rest. Sides: fL/gL face arc L, fR/gR arc R.
-// fa, fb (ga, gb) are f's (g's) vertices next to a and b. Rejects (as op) with the shared rules.
+// The arc split shared by chord push and face collapse: edge e = ab with a closed cycle, two
+// distinct quads f and g of it; arc L runs from after f up to g, arc R the rest. Sides: fL/gL
+// face arc L, fR/gR arc R. fa, fb (ga, gb) are f's (g's) vertices next to a and b.
 struct ArcSplit {
   EdgeStar star;
   EdgeRef li, lj;  // the incidences of e in L's first and last hex
@@ -50,6 +59,9 @@ struct ArcSplit {
   VertexId a, b, fa, fb, ga, gb;
 };
 ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const std::string& op, const char* what);
+
+// The hexes an edit touched: `hexes` and every hex glued to one of them.
+std::vector<HexId> withNeighbours(const Complex& cx, const std::vector<HexId>& hexes);
 
 // Opens a transaction; rolls back unless commit() is reached. Also fills the result's counts.
 class Transaction {
@@ -67,6 +79,9 @@ class Transaction {
   Transaction& operator=(const Transaction&) = delete;
   // Checks the invariants around `touched` (debug builds: everywhere), fills counts, commits.
   void commit(OpResult& r, const std::vector<HexId>& touched);
+  // The same for edits whose validity is only known afterwards: a broken invariant rolls back
+  // and rejects as "<op>: <why> (<the invariant>)".
+  void commitIfValid(OpResult& r, const std::vector<HexId>& touched, const std::string& op, const std::string& why);
 
  private:
   Complex& cx_;
@@ -78,6 +93,18 @@ class Transaction {
 // quads through v: corners reachable from `seed` without crossing any of `walls` (quad sides).
 std::vector<std::pair<HexId, int>> cornersOnSide(const Complex& cx, std::pair<HexId, int> seed,
                                                  const std::vector<QuadSide>& walls);
+
+// How a vertex splits along walls (quad sides through it): `keep` keeps its id, `moved` takes a
+// new vertex. Normally the walls cut its corners in two and the seed's side keeps the id. The
+// side on the boundary always keeps it, so the boundary quad mesh is unchanged: if only the other
+// side is on the boundary the two swap, and at a boundary vertex the walls may cut off pieces
+// touching the boundary around one piece inside, which alone moves. Rejects (as op) otherwise,
+// naming the walls as `walls` ("the two quads").
+struct VertexSplit {
+  std::vector<std::pair<HexId, int>> keep, moved;
+};
+VertexSplit splitVertex(const Complex& cx, std::pair<HexId, int> seed, const std::vector<QuadSide>& walls,
+                        const std::string& op, const std::string& what);
 
 }  // namespace hexdual::ops
 
