@@ -1,6 +1,7 @@
 #include "ops/support.hpp"
 
 #include "complex/manifold.hpp"
+#include "ops/op_table.hpp"
 
 namespace hexdual::ops {
 using namespace tables;
@@ -154,7 +155,7 @@ std::vector<HexId> withNeighbours(const Complex& cx, const std::vector<HexId>& h
 }
 
 void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) {
-  requireManifoldVertices(cx_, touched, r.op);
+  requireManifoldVertices(cx_, touched, r.op ? opName(*r.op) : "operation");
 #ifdef HEXDUAL_CHECK_INVARIANTS
   (void)touched;
   cx_.validate();
