@@ -115,4 +115,10 @@ TEST_CASE("hostile: fuzzer findings stay fixed") {
                    io::readVtk("# vtk DataFile Version\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 0 double\n", "v.vtk");
                  }),
                  "v.vtk"));
+  // A .hxd whose gluings contradict its vertices once overran the vertex-link scan.
+  std::string hxd = "hexdual 1\nvertices 16\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n0 0 2\n1 0 2\n"
+                    "0 1 2\n1 1 2\n.15 .15 1.15\n.85 .15 1.15\n.85 .85 1.15\n.15 .85 1.15\nhexes 4\n"
+                    "0 1 3 2 4 5 7 6\n8 5 7 6 8 9 11 10\n4 5 7 6 12 13 14 15\n12 13 14 15 4 5 7 6\ngluings 7\n"
+                    "0 5 2 4 0\n1 4 3 5 0\n2 0 3 0 7\n2 1 3 1 7\n2 2 3 2 5\n2 3 3 3 5\n2 5 3 4 0\nend\n";
+  CHECK(contains(errorOf([&] { io::readNative(hxd, "f.hxd"); }), "f.hxd: validate: "));
 }

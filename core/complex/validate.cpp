@@ -133,6 +133,7 @@ std::vector<LinkIssue> linkIssues(const Complex& cx, const std::vector<int32_t>&
         }
         std::pair<HexId, int> n{g.hex, cx.mappedCorner(h, f, c)};
         auto it = std::lower_bound(first, last, n);
+        if (it == last || *it != n) continue;  // a gluing that breaks vertex consistency (validate() names it)
         uf.unite(i - b, size_t(it - first));
       }
       for (int ed : edgesOfCorner(c)) edges.push_back(edgeClass[size_t(12) * h + ed]);

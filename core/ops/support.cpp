@@ -3,6 +3,7 @@
 #include "ops/op_table.hpp"
 
 #include "complex/manifold.hpp"
+#include "ops/op_table.hpp"
 
 namespace hexdual::ops {
 using namespace tables;
