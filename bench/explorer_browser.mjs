@@ -9,8 +9,8 @@ const server = await startServer();
 const context = await startBrowser();
 const page = await context.newPage();
 try {
-  console.log('| mesh | hexes | load to first frame (ms) | geometry build (ms) | select a sheet (ms) | camera frame (ms) | hover pick (ms) |');
-  console.log('| --- | ---: | ---: | ---: | ---: | ---: | ---: |');
+  console.log('| mesh | hexes | navigation to first frame (ms) | wasm init (ms) | mesh + all views (ms) | of which 3D geometry (ms) | select a sheet, to next frame (ms) | colour update, CPU (ms) | camera frame, CPU (ms) | pick (ms) |');
+  console.log('| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
   for (const dims of sizes) {
     await page.goto('about:blank');
     const t0 = Date.now();
@@ -22,8 +22,11 @@ try {
       const frame = () => new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(res)));
       await frame();
       const f0 = view.frames;
+      const tm = window.hexdual.timings;
       let t = performance.now();
+      const v0 = tm.view;
       actions.select({ kind: 'sheet', id: 1 });
+      const colours = tm.view - v0;
       await frame();
       const select = performance.now() - t;
       actions.select(null);
@@ -37,10 +40,11 @@ try {
       t = performance.now();
       view.pickAt(rect.left + rect.width / 2, rect.top + rect.height / 2);
       const pick = performance.now() - t;
-      return { hexes: store.get().mesh.counts.hexes, build: view.lastBuildMs, select, camera, pick, frames: view.frames - f0 };
+      return { hexes: store.get().mesh.counts.hexes, build: view.lastBuildMs, select, colours, camera, pick, frames: view.frames - f0,
+        init: tm.init - tm.start, loaded: tm.loaded - tm.urlStart };
     });
     const f = (x) => x.toFixed(0);
-    console.log(`| grid:${dims} | ${r.hexes} | ${load} | ${f(r.build)} | ${f(r.select)} | ${f(r.camera)} | ${f(r.pick)} |`);
+    console.log(`| grid:${dims} | ${r.hexes} | ${load} | ${f(r.init)} | ${f(r.loaded)} | ${f(r.build)} | ${f(r.select)} | ${f(r.colours)} | ${f(r.camera)} | ${f(r.pick)} |`);
   }
 } finally {
   await context.close();

@@ -11,6 +11,8 @@
 #include "layout/quality.hpp"
 #include "layout/render_buffers.hpp"
 #include "ops/candidates.hpp"
+#include "ops/op_table.hpp"
+#include "ops/oplog.hpp"
 
 using namespace emscripten;
 using namespace hexdual;
@@ -127,7 +129,9 @@ val viewCandidates(double complexAddress, const std::string& op) {
   return guardedObject([&] {
     val out = val::object();
     val steps = val::array();
-    for (const std::string& s : candidates(complexAt(complexAddress), op)) steps.call<void>("push", s);
+    const OpInfo* info = findOp(op);
+    if (!info) throw Error("unknown operation '" + op + "'");
+    for (const OpStep& s : candidates(complexAt(complexAddress), info->kind)) steps.call<void>("push", formatOpStep(s));
     out.set("steps", steps);
     return out;
   });

@@ -82,7 +82,9 @@ export function createEngine(store) {
     /** A fresh start mesh; file meshes keep their bytes so the timeline can replay. */
     start(spec, bytes = null) {
       if (spec.kind === 'file') fileBytes = bytes;
+      const t = performance.now();
       const mesh = build(spec);
+      engine.buildMs = performance.now() - t;
       serial++;
       setMesh(mesh, { spec, steps: [], at: 0, report: null });
     },

@@ -14,7 +14,9 @@ import { parseHash, formatHash } from './urlState.js';
 import { formatSelection, sameSelection, dualThrough } from './selection.js';
 import { createEngine } from './engine.js';
 
+const timings = { start: performance.now() };
 await init({ locateFile: (p) => (p.endsWith('.wasm') ? wasmUrl : p) });
+timings.init = performance.now();
 
 const store = createState({
   mesh: null, spec: null, meshKey: '', steps: [], at: 0, report: null, selection: null, diagrams: [],
@@ -150,13 +152,11 @@ function writeUrl(s) {
 }
 store.subscribe((s) => {
   document.body.dataset.view = s.view;
-  view.update(s);
-  panel.update(s);
-  diagrams.update(s);
-  timeline.update(s);
-  palette.update(s);
-  flipsView.update(s);
-  files.update(s);
+  for (const [name, v] of [['view', view], ['panel', panel], ['diagrams', diagrams], ['timeline', timeline], ['palette', palette], ['flips', flipsView], ['files', files]]) {
+    const t = performance.now();
+    v.update(s);
+    timings[name] = (timings[name] || 0) + performance.now() - t;
+  }
   clearTimeout(urlTimer);
   writeUrl(s);
 });
@@ -165,6 +165,8 @@ function loadFromUrl() {
   store.batch(loadFromUrlNow);
 }
 function loadFromUrlNow() {
+  const t0 = performance.now();
+  timings.urlStart = t0;
   const p = parseHash(location.hash);
   const errors = [...p.errors];
   if (p.mesh.kind === 'file') {
@@ -226,6 +228,7 @@ window.addEventListener('keydown', (e) => {
   if (e.key === 'Escape') actions.select(null);
 });
 loadFromUrl();
+timings.loaded = performance.now();
 
 // For tests and the console.
-window.hexdual = { store, actions, view, engine, pkg: { Mesh }, ready: true };
+window.hexdual = { store, actions, view, engine, pkg: { Mesh }, timings, ready: true };

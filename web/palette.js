@@ -42,7 +42,13 @@ export function createPalette(root, actions) {
 
   function enumerate(mesh) {
     const out = [];
-    for (const op of ALL_OPS) for (const step of mesh.candidateSteps(op)) out.push(step);
+    for (const op of ALL_OPS) {
+      try {
+        out.push(...mesh.candidateSteps(op));
+      } catch {
+        // an operation the engine does not enumerate: nothing to offer for it
+      }
+    }
     return out;
   }
 

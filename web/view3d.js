@@ -20,7 +20,7 @@ function rgb(css) {
  * receive {hex, face, edge, kind} or null; `options.onCamera()` fires after the user moves the camera.
  */
 export function createView3d(container, options = {}) {
-  const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  const renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
   renderer.setClearColor(0xffffff);
   renderer.localClippingEnabled = true;
@@ -461,7 +461,10 @@ export function createView3d(container, options = {}) {
         const at = box.min.getComponent(slice.axis) + slice.at * (box.max.getComponent(slice.axis) - box.min.getComponent(slice.axis));
         clipPlane.set(n, at);
       }
-      for (const obj of [solid, faint, edgeLines, ...overlay.children]) obj.material.clippingPlanes = planes;
+      for (const obj of [solid, faint, edgeLines, ...overlay.children]) {
+        obj.material.clippingPlanes = planes;
+        obj.material.needsUpdate = true;
+      }
       requestRender();
     },
     getCamera() {

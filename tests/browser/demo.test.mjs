@@ -184,7 +184,7 @@ test('a malformed URL says what it ignored, parameter by parameter', async () =>
   assert.match(err, /ignored at=x: expected a step number/);
   assert.match(err, /ignored foo=1: unknown parameter/);
   assert.match(err, /ignored cam=1,2: expected six numbers/);
-  assert.match(err, /ignored steps from step 2 \(hexpush h0f0\): hexPush: quad h0f0 is on the boundary/);
+  assert.match(err, /ignored steps from step 2 \(hexpush h0f0\): hexpush: quad h0f0 is on the boundary/i);
   assert.match(err, /ignored diag=77: there are \d+ sheets/);
   assert.equal((await shownCounts()).hexes, 29);
   await open('#mesh=cube:zz&sel=h999');
@@ -250,6 +250,19 @@ test('drop a file on the page: it loads, the URL says it is local, and .hxd + st
   assert.match(hash(), /mesh=file:cube8\.hxd/);
   assert.match(await page.locator('#notice').textContent(), /cube8\.hxd is a local file/);
   assert.ok(await page.locator('#exports button', { hasText: 'download .hxd + steps' }).isVisible());
+  // PNG export carries the page URL in a tEXt chunk.
+  const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#exports button', { hasText: 'PNG' }).click()]);
+  const png = readFileSync(await download.path());
+  assert.deepEqual([...png.subarray(1, 4)], [0x50, 0x4e, 0x47]);
+  const pngText = png.toString('latin1');
+  const at = pngText.indexOf('tEXthexdual-url\0');
+  assert.ok(at > 0, 'a tEXt chunk named hexdual-url');
+  assert.ok(pngText.slice(at + 16).startsWith(page.url()));
+  // Every writable format downloads.
+  for (const [label, head] of [['VTK', '# vtk DataFile'], ['Medit .mesh', 'MeshVersionFormatted']]) {
+    const [d] = await Promise.all([page.waitForEvent('download'), page.locator('#exports button', { hasText: label }).first().click()]);
+    assert.ok(readFileSync(await d.path(), 'latin1').startsWith(head), label);
+  }
 });
 
 test('flips view: step through the 3-5e decomposition with before and after', async () => {
