@@ -104,12 +104,15 @@ export function createView3d(container, options = {}) {
     for (let k = 0; k < n; k++) {
       hexSlot[rb.triangleHex[12 * k]] = k;
       let x = 0, y = 0, z = 0;
-      for (let v = 24 * k; v < 24 * k + 24; v++) (x += p[3 * v]), (y += p[3 * v + 1]), (z += p[3 * v + 2]);
+      for (let i = 72 * k, end = i + 72; i < end; i += 3) (x += p[i]), (y += p[i + 1]), (z += p[i + 2]);
       x /= 24, y /= 24, z /= 24;
-      let r = 0;
-      for (let v = 24 * k; v < 24 * k + 24; v++) r = Math.max(r, Math.hypot(p[3 * v] - x, p[3 * v + 1] - y, p[3 * v + 2] - z));
-      centres.set([x, y, z], 3 * k);
-      radii[k] = r;
+      let r2 = 0;
+      for (let i = 72 * k, end = i + 72; i < end; i += 3) {
+        const dx = p[i] - x, dy = p[i + 1] - y, dz = p[i + 2] - z;
+        r2 = Math.max(r2, dx * dx + dy * dy + dz * dz);
+      }
+      centres[3 * k] = x, centres[3 * k + 1] = y, centres[3 * k + 2] = z;
+      radii[k] = Math.sqrt(r2);
     }
     Object.assign(geometry, { hexSlot, centres, radii, hexCount: n });
   }
@@ -138,12 +141,16 @@ export function createView3d(container, options = {}) {
   // Writes one RGBA per hex into the colour attribute (24 vertices per hex).
   function paint(colorOf) {
     const attr = solid.geometry.getAttribute('color');
-    const a = attr.array, th = geometry.rb.triangleHex;
+    // One RGBA word per vertex: fill 24 words per hex.
+    const words = new Uint32Array(attr.array.buffer, attr.array.byteOffset, attr.array.length / 4);
+    const th = geometry.rb.triangleHex;
+    const word = new Uint32Array(1), bytes = new Uint8Array(word.buffer);
     hasFaint = false;
     for (let k = 0; k < geometry.hexCount; k++) {
       const c = colorOf(th[12 * k]);
       if (c[3] < 128) hasFaint = true;
-      for (let v = 24 * k; v < 24 * k + 24; v++) a.set(c, 4 * v);
+      bytes.set(c);
+      words.fill(word[0], 24 * k, 24 * k + 24);
     }
     attr.needsUpdate = true;
     faint.visible = hasFaint;
