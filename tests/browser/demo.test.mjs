@@ -135,6 +135,9 @@ test('click a hex on the canvas, pillow it from the palette: two hexes appear ap
   await page.click('#tl-back');
   assert.equal((await shownCounts()).hexes, 27);
   assert.equal((await state()).at, 0);
+  // Going back removed the pillow: its hexes are reported and drawn as fading ghosts.
+  assert.deepEqual((await state()).report.removed, [27, 28]);
+  assert.equal(await page.evaluate(() => window.hexdual.view.ghostCount), 1);
   assert.match(hash(), /at=0/);
   await page.keyboard.press('ArrowRight');
   assert.equal((await shownCounts()).hexes, 29);
