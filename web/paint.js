@@ -1,7 +1,7 @@
 // Hex colours from the app state: the selected sheet or chord in its colour with the rest faint,
 // the selected hex in the accent colour, hexes created by the last step in green, and optional
 // colouring by scaled Jacobian (inverted hexes magenta). Shared by every 3D view.
-import { colorFor } from './colors.js';
+import { sheetColor, chordColor } from './colors.js';
 
 const BASE = [184, 196, 214];
 const ACCENT = [255, 122, 0];
@@ -58,7 +58,7 @@ export function hexColors(s) {
   const created = s.report && s.report.key === s.meshKey ? new Set(s.report.created) : null;
   const closed = s.mesh.counts.boundaryQuads === 0;
   const quality = s.colorBy === 'quality' ? s.quality : null;
-  const selColor = members ? cssToRgb(colorFor(s.selection.kind === 'sheet' ? s.selection.id : s.selection.id + 1000)) : null;
+  const selColor = members ? cssToRgb(s.selection.kind === 'sheet' ? sheetColor(s.selection.id) : chordColor(s.selection.id)) : null;
   const selHex = s.selection?.kind === 'hex' ? s.selection.hex : -1;
   const fresh = created && created.size > 0 && s.focusChanges && !members;
   const dim = members || focus || closed || fresh;

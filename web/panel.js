@@ -1,7 +1,7 @@
 // The side panel: mesh chooser, selection info, view toggles, quality histogram, counts and the
 // sheet / chord lists (filterable, virtualized: only visible rows exist in the DOM). Also the
 // hover tip over the 3D view.
-import { colorFor } from './colors.js';
+import { sheetColor, chordColor } from './colors.js';
 import { formatSelection, dualThrough } from './selection.js';
 import { qualityRgb } from './paint.js';
 
@@ -43,7 +43,7 @@ function createList(box, filterInput, kind, actions) {
       div.dataset.id = item.id;
       const sw = document.createElement('span');
       sw.className = 'swatch';
-      sw.style.background = colorFor(kind === 'sheet' ? item.id : item.id + 1000);
+      sw.style.background = kind === 'sheet' ? sheetColor(item.id) : chordColor(item.id);
       const text = document.createElement('span');
       text.innerHTML = `${kind} ${item.id} <span class="tag">${describe(item)}</span>`;
       div.append(sw, text);

@@ -3,7 +3,7 @@
 // (level of detail for 1,000-crossing sheets). Click a crossing (hex), a chord, a cell (edge) or a
 // boundary mark (quad) to select it in 3D; the 3D selection is marked here. Local mode draws k rings
 // around the selected hex in a dotted circle.
-import { colorFor } from './colors.js';
+import { chordColor } from './colors.js';
 import { formatSelection } from './selection.js';
 
 const NS = 'http://www.w3.org/2000/svg';
@@ -87,7 +87,7 @@ function createPanel(host, actions, spec) {
       el('title', {}, r).textContent = `edge h${c.edge[0]}e${c.edge[1]}`;
     }
     for (const c of d.chords) {
-      const line = el('polyline', { points: c.points.map((p) => p.join(',')).join(' '), fill: 'none', stroke: colorFor(c.otherSheet), class: 'chord', 'data-chord': c.id }, g);
+      const line = el('polyline', { points: c.points.map((p) => p.join(',')).join(' '), fill: 'none', stroke: chordColor(c.id), class: 'chord', 'data-chord': c.id }, g);
       el('title', {}, line).textContent = `chord ${c.id} (with sheet ${c.otherSheet})${c.closed ? ', closed' : ''}`;
     }
     for (const b of d.boundary) {

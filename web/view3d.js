@@ -5,7 +5,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { hexTables } from '../wasm/index.js';
-import { colorFor } from './colors.js';
+import { sheetColor, chordColor } from './colors.js';
 import { hexColors, paintKeyOf } from './paint.js';
 
 const EDGE_LINES_MAX_HEXES = 8000;
@@ -315,7 +315,7 @@ export function createView3d(container, options = {}) {
     const cache = new Map();
     for (let t = 0; t < nTri; t += 2) {
       const id = o.sheetTriangle[t];
-      if (!cache.has(id)) cache.set(id, rgb(colorFor(id)));
+      if (!cache.has(id)) cache.set(id, rgb(sheetColor(id)));
       const c = cache.get(id);
       const quad = t >> 1;
       for (let q = 0; q < 4; q++) sheetColors.set([c.r, c.g, c.b], 3 * (4 * quad + q));
@@ -328,7 +328,7 @@ export function createView3d(container, options = {}) {
     sheets.renderOrder = 3;
     const chordColors = new Float32Array(o.chordPositions.length);
     for (let s = 0; s < o.chordSegment.length; s++) {
-      const c = rgb(colorFor(o.chordSegment[s] + 1000));
+      const c = rgb(chordColor(o.chordSegment[s]));
       chordColors.set([c.r, c.g, c.b, c.r, c.g, c.b], 6 * s);
     }
     const cg = new THREE.BufferGeometry();
