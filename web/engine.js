@@ -157,6 +157,12 @@ export function createEngine(store) {
       store.set(stop > 0 ? { steps: [...steps], at: stop, meshKey: key(s.mesh, stop) } : { steps: [...steps], at: 0 });
       return '';
     },
+    /** The mesh changed outside the timeline (a flip at a place): redraw; earlier steps are forgotten. */
+    touch() {
+      const s = store.get();
+      hd = null;
+      store.set({ steps: [], at: 0, meshKey: key(s.mesh, 0), report: null });
+    },
     fileBytes: () => fileBytes,
   };
   return engine;

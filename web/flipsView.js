@@ -37,7 +37,7 @@ export function createFlipsView(root, actions, store) {
     if (typeof s.mesh.flip !== 'function') return actions.set({ error: 'applying a flip at a place needs the package\'s mesh.flip(name, hexes); not available in this build' });
     try {
       s.mesh.flip(select.value, hexes, { viaAtomic: true });
-      actions.engine.start(s.spec); // the flip is not an op-log step: the timeline restarts from here
+      actions.engine.touch(); // the flip is not an op-log step: the timeline cannot replay it
     } catch (e) {
       actions.set({ error: `flip ${select.value}: ${e.message}` });
     }

@@ -38,6 +38,19 @@ function survivors(s, mesh) {
   return { selection: sel, diagrams };
 }
 
+// Runs a step or a move in time as one state change, keeping what survives; errors go to the panel.
+function changeMesh(change, errorPrefix) {
+  try {
+    store.batch(() => {
+      change();
+      const s = store.get();
+      store.set({ ...survivors(s, s.mesh), error: '' });
+    });
+  } catch (e) {
+    store.set({ error: errorPrefix + e.message });
+  }
+}
+
 const actions = {
   flips: flips(),
   engine,
@@ -70,28 +83,12 @@ const actions = {
   /** Applies a typed or palette step at the current position (later undone steps are dropped). */
   apply(step) {
     if (!step) return store.set({ error: 'type an operation step, e.g. pillow h13f5' });
-    try {
-      store.batch(() => {
-        engine.applyStep(step);
-        const s = store.get();
-        store.set({ ...survivors(s, s.mesh), error: '' });
-      });
-    } catch (e) {
-      store.set({ error: `${step}: ${e.message}` });
-    }
+    changeMesh(() => engine.applyStep(step), `${step}: `);
   },
   goTo(k) {
     const s = store.get();
     if (k < 0 || k > s.steps.length || k === s.at) return;
-    try {
-      store.batch(() => {
-        engine.goTo(k);
-        const t = store.get();
-        store.set({ ...survivors(t, t.mesh), error: '' });
-      });
-    } catch (e) {
-      store.set({ error: e.message });
-    }
+    changeMesh(() => engine.goTo(k), '');
   },
   back() {
     actions.goTo(store.get().at - 1);
