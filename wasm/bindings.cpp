@@ -384,6 +384,9 @@ class WasmMesh {
       return true;
     }, false);
   }
+  // For wasm/bindings_view.cpp (same module): where the complex and its current dual live.
+  double complexAddress() const { return double(uintptr_t(&cx_)); }
+  double dualAddress() { return guarded([&] { return double(uintptr_t(&dual())); }, 0.0); }
   val positions() const { return val(typed_memory_view(rb_.positions.size(), rb_.positions.data())); }
   val normals() const { return val(typed_memory_view(rb_.normals.size(), rb_.normals.data())); }
   val indices() const { return val(typed_memory_view(rb_.indices.size(), rb_.indices.data())); }
@@ -579,5 +582,7 @@ EMSCRIPTEN_BINDINGS(hexdual) {
       .function("positions", &WasmMesh::positions)
       .function("normals", &WasmMesh::normals)
       .function("indices", &WasmMesh::indices)
-      .function("triangleHex", &WasmMesh::triangleHex);
+      .function("triangleHex", &WasmMesh::triangleHex)
+      .function("complexAddress", &WasmMesh::complexAddress)
+      .function("dualAddress", &WasmMesh::dualAddress);
 }

@@ -58,12 +58,38 @@ export interface Info extends Counts {
   sheets: SheetInfo[];
   chords: ChordInfo[];
 }
+// ---- view data (explorer) ----
 export interface RenderBuffers {
   positions: Float32Array;
   normals: Float32Array;
   indices: Uint32Array;
   triangleHex: Int32Array;
+  triangleFace: Uint8Array;
+  edgePositions?: Float32Array;
+  edgeHex?: Int32Array;
+  edgeLocal?: Uint8Array;
 }
+export interface DualOverlay {
+  sheetPositions: Float32Array;
+  sheetIndices: Uint32Array;
+  sheetTriangle: Int32Array;
+  chordPositions: Float32Array;
+  chordSegment: Int32Array;
+  dualVertices: Float32Array;
+  dualVertexHex: Int32Array;
+}
+export interface Quality {
+  scaledJacobian: Float32Array;
+  inverted: Int32Array;
+  min: number;
+  max: number;
+}
+export interface HexDual {
+  sheetOf: Int32Array;
+  chordOf: Int32Array;
+}
+export function hexTables(): { faceCorners: Int32Array; edgeCorners: Int32Array };
+// ---- end of view data (explorer) ----
 export type Format = 'vtk' | 'mesh' | 'hxd';
 export type OpName =
   | 'pillow' | 'unpillow' | 'chordpush' | 'chordpull' | 'hexpush' | 'hexpull' | 'ringcollapse' | 'facecollapse' | 'facesplit';
@@ -195,6 +221,13 @@ export class Mesh {
   memoryBytes(): number;
   validate(): void;
   save(format: Format, options?: { binary?: boolean }): Uint8Array;
-  renderBuffers(options?: { shrink?: number }): RenderBuffers;
+  // ---- view data (explorer) ----
+  renderBuffers(options?: { shrink?: number; edges?: boolean }): RenderBuffers;
+  dualPoints(): Float32Array;
+  dualOverlay(): DualOverlay;
+  quality(): Quality;
+  hexDual(): HexDual;
+  candidateSteps(op: string): string[];
+  // ---- end of view data (explorer) ----
   delete(): void;
 }

@@ -149,6 +149,17 @@ function toReport({ flip, report: r }) {
 const OPS = ['pillow', 'unpillow', 'chordpush', 'chordpull', 'hexpush', 'hexpull', 'ringcollapse', 'facecollapse', 'facesplit'];
 const FORMATS = ['vtk', 'mesh', 'hxd'];
 
+// ---- view data (explorer) ----
+function viewCall(result) {
+  if (result.error !== undefined) throw new HexdualError(result.code ?? 'PRECONDITION', result.error);
+  return result;
+}
+/** Local numbering: the 4 corners of each face (buffer order) and the 2 of each edge, flattened. */
+export function hexTables() {
+  return module().viewTables();
+}
+// ---- end of view data (explorer) ----
+
 export class Mesh {
   #raw;
   #info = null;
@@ -355,19 +366,46 @@ export class Mesh {
     if (!FORMATS.includes(format)) throw new HexdualError('PRECONDITION', `unknown format ${describe(format)} (vtk, mesh or hxd)`);
     return check(this.#live().saveBytes(format, !!binary));
   }
-  /** Triangles of every hex shrunk toward its centre; copied out of the wasm heap. */
-  renderBuffers({ shrink = 0.15 } = {}) {
+  // ---- view data (explorer) ----
+  // Geometry for drawing and picking (wasm/bindings_view.cpp). Every array is a copy.
+
+  /**
+   * Triangles of every hex shrunk toward its own dual point (a pillow pair draws apart), with the
+   * hex id and local face of each triangle (face k of the buffer: triangles 2k, 2k+1, vertices
+   * 4k..4k+3 in `faceCorners` order); with `edges`, line segments of every hex edge too.
+   */
+  renderBuffers({ shrink = 0.15, edges = false } = {}) {
     finite('renderBuffers: shrink', shrink);
     if (shrink < 0 || shrink >= 1) throw new HexdualError('PRECONDITION', `renderBuffers: shrink must be in [0, 1), not ${shrink}`);
-    const raw = this.#live();
-    check(raw.buildRender(shrink));
-    return {
-      positions: new Float32Array(raw.positions()),
-      normals: new Float32Array(raw.normals()),
-      indices: new Uint32Array(raw.indices()),
-      triangleHex: new Int32Array(raw.triangleHex()),
-    };
+    return viewCall(module().viewRenderBuffers(this.#live().complexAddress(), shrink, edges));
   }
+  /** Each hex's dual point (3 floats per hex id; tombstones hold 0): where the explorer shrinks it to. */
+  dualPoints() {
+    return viewCall(module().viewDualPoints(this.#live().complexAddress())).points;
+  }
+  /** Sheet mid-surfaces (triangles with sheet ids), chord polylines (segments with chord ids), dual vertices. */
+  dualOverlay() {
+    const raw = this.#live();
+    const dual = raw.dualAddress();
+    if (!dual) check(null);
+    return viewCall(module().viewDualOverlay(raw.complexAddress(), dual));
+  }
+  /** Scaled Jacobian per hex id, the inverted hexes (<= 0), and the range over live hexes. */
+  quality() {
+    return viewCall(module().viewQuality(this.#live().complexAddress()));
+  }
+  /** Sheet and chord ids through each hex: `sheetOf[3*h+axis]`, `chordOf[3*h+axis]` (-1 for removed hexes). */
+  hexDual() {
+    const dual = this.#live().dualAddress();
+    if (!dual) check(null);
+    return viewCall(module().viewHexDual(dual));
+  }
+  /** Every step of one operation that applies anywhere in the mesh (each tried on a copy). */
+  candidateSteps(op) {
+    return viewCall(module().viewCandidates(this.#live().complexAddress(), op)).steps;
+  }
+  // ---- end of view data (explorer) ----
+
   /** Frees the wasm memory of this mesh. */
   delete() {
     if (this.#raw) {

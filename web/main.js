@@ -1,147 +1,231 @@
-// hexdual demo: wires the wasm module, the app state, the panel, the 3D view and the URL.
+// hexdual explorer: wires the wasm package, the single app state, and the views that subscribe to it
+// (3D view, sheet diagrams, timeline, palette, lists, flips view). The URL mirrors the state.
 import { init, Mesh, flips } from '../wasm/index.js';
 import wasmUrl from '../wasm/dist/hexdual.wasm?url';
 import { createState } from './state.js';
 import { createPanel } from './panel.js';
 import { createView3d } from './view3d.js';
-import { createSheetDiagram } from './sheetDiagram.js';
+import { createDiagrams } from './sheetDiagram.js';
+import { createTimeline } from './timeline.js';
+import { createPalette } from './palette.js';
+import { createFlipsView } from './flipsView.js';
+import { createFiles } from './files.js';
 import { parseHash, formatHash } from './urlState.js';
+import { formatSelection, sameSelection, dualThrough } from './selection.js';
+import { createEngine } from './engine.js';
 
-const MAX_HEXES = 200000;
-
+const timings = { start: performance.now() };
 await init({ locateFile: (p) => (p.endsWith('.wasm') ? wasmUrl : p) });
+timings.init = performance.now();
 
 const store = createState({
-  mesh: null, meshSpec: null, meshKey: '', shrink: 0.15, selection: null, diagramSheet: null, ops: [], error: '',
-  flipQueue: null,
+  mesh: null, spec: null, meshKey: '', steps: [], at: 0, report: null, selection: null, diagrams: [],
+  shrink: 0.15, overlay: false, ghosts: true, focusChanges: true, colorBy: 'plain', quality: null, slice: null, camera: null,
+  error: '', notice: '', view: 'explore', flip: null, focus: null, busy: false,
 });
-let meshSerial = 0;
+const engine = createEngine(store);
 
-function replaceMesh(mesh, spec, selection = null, error = '', ops = []) {
-  const old = store.get().mesh;
-  const diagramSheet = selection && selection.kind === 'sheet' ? selection.id : null;
-  store.set({ mesh, meshSpec: spec, meshKey: `${++meshSerial}`, selection, diagramSheet, ops, error, flipQueue: null });
-  if (old) old.delete();
+// Keeps the selection and diagrams whose hex / sheet still exist after the mesh changed.
+function survivors(s, mesh) {
+  const hd = engine.hexDual();
+  const alive = (h) => h >= 0 && 3 * h < hd.sheetOf.length && hd.sheetOf[3 * h] >= 0;
+  const sizes = mesh.dualSizes();
+  let sel = s.selection;
+  if (sel && 'hex' in sel && !alive(sel.hex)) sel = null;
+  if (sel && sel.kind === 'sheet' && sel.id >= sizes.sheets) sel = null;
+  if (sel && sel.kind === 'chord' && sel.id >= sizes.chords) sel = null;
+  const diagrams = s.diagrams.filter((d) => d.sheet < sizes.sheets && (!d.local || alive(d.local.hex)));
+  return { selection: sel, diagrams };
 }
 
-// Applies steps in order; returns the applied ones (with their inverses) and the first error.
-function applySteps(mesh, steps) {
-  const applied = [];
-  for (const step of steps) {
-    try {
-      applied.push({ step, inverse: mesh.apply(step).inverse });
-    } catch (e) {
-      return { applied, error: `step ${applied.length + 1} (${step}): ${e.message}` };
-    }
+// Runs a step or a move in time as one state change, keeping what survives; errors go to the panel.
+function changeMesh(change, errorPrefix) {
+  try {
+    store.batch(() => {
+      change();
+      const s = store.get();
+      store.set({ ...survivors(s, s.mesh), error: '' });
+    });
+  } catch (e) {
+    store.set({ error: errorPrefix + e.message });
   }
-  return { applied, error: '' };
-}
-
-function buildFromSpec(spec) {
-  if (spec.kind === 'fourcube') return Mesh.fourCube();
-  const [a, b, c] = spec.dims;
-  if (a * b * c > MAX_HEXES) throw new Error(`${a}x${b}x${c} is more than ${MAX_HEXES} hexes; try a smaller mesh`);
-  return spec.kind === 'ring' ? Mesh.ring(a, b, c) : Mesh.grid(a, b, c);
-}
-
-function validSelection(mesh, sel) {
-  if (!sel) return null;
-  const list = sel.kind === 'sheet' ? mesh.sheets : mesh.chords;
-  return sel.id < list.length ? sel : null;
 }
 
 const actions = {
   flips: flips(),
-  loadFlip(name) {
-    const f = actions.flips.find((x) => x.name === name);
-    if (!f || !f.steps) return store.set({ error: `no stored decomposition for ${name}` });
-    const spec = { kind: 'fourcube', dims: [] };
-    replaceMesh(buildFromSpec(spec), spec);
-    store.set({ flipQueue: { name, steps: f.steps, done: 0 } });
-  },
-  stepFlip() {
-    const s = store.get(), fq = s.flipQueue;
-    if (!fq || fq.done >= fq.steps.length) return;
-    actions.apply(fq.steps[fq.done]);
-    if (!store.get().error) store.set({ flipQueue: { ...fq, done: fq.done + 1 } });
-  },
+  engine,
+  /** Builds a grid, ring or the 4-cube boundary (`dims` like 3x3x3). */
   build(kind, dimsText) {
-    if (kind === 'fourcube') {
-      const spec = { kind, dims: [] };
-      return replaceMesh(buildFromSpec(spec), spec);
+    let spec = { kind: 'fourcube', dims: [] };
+    if (kind !== 'fourcube') {
+      const m = /^\s*(\d+)\s*x\s*(\d+)\s*x\s*(\d+)\s*$/.exec(dimsText);
+      if (!m) return store.set({ error: `dimensions must look like 3x3x3, not '${dimsText}'` });
+      spec = { kind, dims: [+m[1], +m[2], +m[3]] };
     }
-    const m = /^\s*(\d+)\s*x\s*(\d+)\s*x\s*(\d+)\s*$/.exec(dimsText);
-    if (!m) return store.set({ error: `dimensions must look like 3x3x3, not '${dimsText}'` });
-    const spec = { kind, dims: [Number(m[1]), Number(m[2]), Number(m[3])] };
     try {
-      replaceMesh(buildFromSpec(spec), spec);
+      store.batch(() => {
+        engine.start(spec);
+        store.set({ selection: null, diagrams: [], camera: null, error: '', notice: '', focus: null });
+      });
     } catch (e) {
       store.set({ error: e.message });
     }
   },
   open(bytes, name) {
     try {
-      replaceMesh(Mesh.load(bytes, name), { kind: 'file', name });
+      store.batch(() => engine.start({ kind: 'file', name }, bytes));
+      store.set({ selection: null, diagrams: [], camera: null, error: '', focus: null,
+        notice: `${name} is a local file: the URL cannot carry it. Share it with "download .hxd + steps".` });
     } catch (e) {
-      store.set({ error: e.message });
+      store.set({ error: `${name}: ${e.message}` });
     }
   },
-  shrink(value) {
-    store.set({ shrink: value });
-  },
-  select(selection, { keepDiagram = false } = {}) {
-    const cur = store.get().selection;
-    const same = cur && cur.kind === selection.kind && cur.id === selection.id;
-    const next = same ? null : selection;
-    const diagramSheet = keepDiagram ? store.get().diagramSheet : next && next.kind === 'sheet' ? next.id : null;
-    store.set({ selection: next, diagramSheet });
-  },
+  /** Applies a typed or palette step at the current position (later undone steps are dropped). */
   apply(step) {
-    const s = store.get();
     if (!step) return store.set({ error: 'type an operation step, e.g. pillow h13f5' });
-    const { applied, error } = applySteps(s.mesh, [step]);
-    store.set({ ops: [...s.ops, ...applied], error, selection: null, diagramSheet: null, meshKey: s.meshKey });
+    changeMesh(() => engine.applyStep(step), `${step}: `);
   },
-  undo() {
+  goTo(k) {
     const s = store.get();
-    const last = s.ops[s.ops.length - 1];
-    if (!last) return;
-    if (!last.inverse) return store.set({ error: `${last.step} has no inverse step` });
-    const { error } = applySteps(s.mesh, [last.inverse]);
-    store.set({ ops: error ? s.ops : s.ops.slice(0, -1), error, selection: null, diagramSheet: null });
+    if (k < 0 || k > s.steps.length || k === s.at) return;
+    changeMesh(() => engine.goTo(k), '');
+  },
+  back() {
+    actions.goTo(store.get().at - 1);
+  },
+  forward() {
+    actions.goTo(store.get().at + 1);
+  },
+  select(sel) {
+    const cur = store.get().selection;
+    store.set({ selection: sel && !sameSelection(sel, cur) ? sel : null });
+  },
+  /** Opens (or closes) the diagram of a sheet; `local` = { hex, rings } draws k rings around a hex. */
+  toggleDiagram(sheet, local = null) {
+    const ds = store.get().diagrams;
+    const open = ds.find((d) => d.sheet === sheet);
+    if (open && !local) return store.set({ diagrams: ds.filter((d) => d !== open) });
+    store.set({ diagrams: [...ds.filter((d) => d.sheet !== sheet), { sheet, local }].slice(-4) });
+  },
+  closeDiagram(sheet) {
+    store.set({ diagrams: store.get().diagrams.filter((d) => d.sheet !== sheet) });
+  },
+  /** Opens the diagrams of the sheets through the selection (e.g. the two sheets of a chord's quad). */
+  openSheetsOfSelection() {
+    const s = store.get();
+    let sheets = [];
+    if (s.selection?.kind === 'sheet') sheets = [s.selection.id];
+    else if (s.selection?.kind === 'chord') {
+      const hexes = s.mesh.chordHexes(s.selection.id);
+      const hd = engine.hexDual();
+      const h = hexes[0];
+      const axis = [0, 1, 2].find((a) => hd.chordOf[3 * h + a] === s.selection.id);
+      sheets = [0, 1, 2].filter((a) => a !== axis).map((a) => hd.sheetOf[3 * h + a]);
+    } else if (s.selection) sheets = dualThrough(s.selection, engine.hexDual()).sheets;
+    const ds = s.diagrams.filter((d) => !sheets.includes(d.sheet));
+    store.set({ diagrams: [...ds, ...[...new Set(sheets)].map((sheet) => ({ sheet, local: null }))].slice(-4) });
+  },
+  set(patch) {
+    store.set(patch);
   },
 };
 
-const panel = createPanel(document.getElementById('panel'), actions);
-const view = createView3d(document.getElementById('view'));
-const diagram = createSheetDiagram(document.getElementById('view'), actions);
+const view = createView3d(document.getElementById('view3d'), {
+  onPick: (pick) => actions.select(pick),
+  onHover: (pick, e) => panel.hover(pick, e),
+  onCamera: () => store.set({ camera: view.getCamera() }),
+});
+const panel = createPanel(document.getElementById('panel'), actions, view);
+const diagrams = createDiagrams(document.getElementById('diagrams'), actions);
+const timeline = createTimeline(document.getElementById('timeline'), actions);
+const palette = createPalette(document.getElementById('palette'), actions);
+const flipsView = createFlipsView(document.getElementById('flips'), actions, store);
+const files = createFiles(document.body, actions, store, view);
+
+let urlTimer = 0;
+function writeUrl(s) {
+  const hash = formatHash(s);
+  if (location.hash !== hash) history.replaceState(null, '', hash);
+}
 store.subscribe((s) => {
-  panel.update(s);
-  view.update(s);
-  diagram.update(s);
-  const hash = formatHash({ mesh: s.meshSpec, selection: s.selection, ops: s.ops.map((o) => o.step) });
-  if (s.meshSpec && s.meshSpec.kind !== 'file' && location.hash !== hash) history.replaceState(null, '', hash);
+  document.body.dataset.view = s.view;
+  for (const [name, v] of [['view', view], ['panel', panel], ['diagrams', diagrams], ['timeline', timeline], ['palette', palette], ['flips', flipsView], ['files', files]]) {
+    const t = performance.now();
+    v.update(s);
+    timings[name] = (timings[name] || 0) + performance.now() - t;
+  }
+  clearTimeout(urlTimer);
+  writeUrl(s);
 });
 
 function loadFromUrl() {
-  const parsed = parseHash(location.hash);
-  let error = parsed.errors.join('; ');
-  try {
-    const mesh = buildFromSpec(parsed.mesh);
-    const { applied, error: opError } = applySteps(mesh, parsed.ops);
-    error = [error, opError].filter(Boolean).join('; ');
-    replaceMesh(mesh, parsed.mesh, validSelection(mesh, parsed.selection), error, applied);
-  } catch (e) {
-    error = [error, e.message].filter(Boolean).join('; ');
-    const spec = { kind: 'grid', dims: [3, 3, 3] };
-    replaceMesh(buildFromSpec(spec), spec, null, error);
-  }
+  store.batch(loadFromUrlNow);
 }
-window.addEventListener('hashchange', () => {
+function loadFromUrlNow() {
+  const t0 = performance.now();
+  timings.urlStart = t0;
+  const p = parseHash(location.hash);
+  const errors = [...p.errors];
+  if (p.mesh.kind === 'file') {
+    errors.push(`mesh=file:${p.mesh.name} is a local file that the URL cannot carry: drop it on the page (its steps will replay)`);
+    p.mesh = { kind: 'grid', dims: [3, 3, 3] };
+    pendingFileSteps = p;
+  }
+  try {
+    engine.start(p.mesh);
+  } catch (e) {
+    errors.push(`ignored mesh: ${e.message}`);
+    engine.start({ kind: 'grid', dims: [3, 3, 3] });
+    p.steps = [];
+  }
+  const stepError = engine.replay(p.mesh.kind === 'file' ? [] : p.steps, p.at);
+  if (stepError) errors.push(stepError);
+  if (p.at !== null && p.at > p.steps.length) errors.push(`ignored at=${p.at}: there are only ${p.steps.length} steps`);
   const s = store.get();
-  if (location.hash !== formatHash({ mesh: s.meshSpec, selection: s.selection, ops: s.ops.map((o) => o.step) })) loadFromUrl();
+  const sizes = s.mesh.dualSizes();
+  const hd = engine.hexDual();
+  let sel = p.selection;
+  if (sel && 'hex' in sel && !(3 * sel.hex < hd.sheetOf.length && hd.sheetOf[3 * sel.hex] >= 0)) {
+    errors.push(`ignored sel=${formatSelection(sel)}: hex ${sel.hex} does not exist`);
+    sel = null;
+  }
+  for (const kind of ['sheet', 'chord']) {
+    const n = kind === 'sheet' ? sizes.sheets : sizes.chords;
+    if (sel && sel.kind === kind && sel.id >= n) {
+      errors.push(`ignored ${kind}=${sel.id}: there are ${n} ${kind}s (0..${n - 1})`);
+      sel = null;
+    }
+  }
+  const diags = [];
+  for (const d of p.diagrams) {
+    if (d < sizes.sheets) diags.push({ sheet: d, local: null });
+    else errors.push(`ignored diag=${d}: there are ${sizes.sheets} sheets`);
+  }
+  store.set({
+    selection: sel, diagrams: diags, camera: p.camera, overlay: p.overlay, colorBy: p.colorBy, ghosts: p.ghosts,
+    shrink: p.shrink ?? 0.15, slice: p.slice, view: p.view, flip: p.flip, error: errors.join('\n'), notice: '',
+    quality: p.colorBy === 'quality' ? s.mesh.quality() : null,
+  });
+  if (p.camera) view.setCamera(p.camera);
+}
+let pendingFileSteps = null;
+actions.pendingFileSteps = () => {
+  const p = pendingFileSteps;
+  pendingFileSteps = null;
+  return p;
+};
+
+window.addEventListener('hashchange', () => {
+  if (location.hash !== formatHash(store.get())) loadFromUrl();
+});
+window.addEventListener('keydown', (e) => {
+  if (e.target.closest('input, textarea, select')) return;
+  if (e.key === 'ArrowLeft') actions.back();
+  if (e.key === 'ArrowRight') actions.forward();
+  if (e.key === 'Escape') actions.select(null);
 });
 loadFromUrl();
+timings.loaded = performance.now();
 
 // For tests and the console.
-window.hexdual = { store, actions, view, ready: true };
+window.hexdual = { store, actions, view, engine, pkg: { Mesh }, timings, ready: true };

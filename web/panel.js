@@ -1,92 +1,213 @@
-// The side panel: mesh chooser, counts, and the sheet / chord pickers.
+// The side panel: mesh chooser, selection info, view toggles, quality histogram, counts and the
+// sheet / chord lists (filterable, virtualized: only visible rows exist in the DOM). Also the
+// hover tip over the 3D view.
 import { sheetColor, chordColor } from './colors.js';
+import { formatSelection, dualThrough } from './selection.js';
+import { qualityRgb } from './paint.js';
 
-export function createPanel(root, actions) {
-  const $ = (sel) => root.querySelector(sel);
-  $('#mesh-build').addEventListener('click', () => actions.build($('#mesh-kind').value, $('#mesh-dims').value));
-  $('#mesh-dims').addEventListener('keydown', (e) => {
-    if (e.key === 'Enter') actions.build($('#mesh-kind').value, $('#mesh-dims').value);
+const ROW = 22;
+
+function describeSheet(s) {
+  return `${s.hexes} hexes · ${s.topology}${s.boundaryLoops ? ` · ${s.boundaryLoops} loop${s.boundaryLoops > 1 ? 's' : ''}` : ''}${s.selfIntersecting ? ' · self-intersecting' : ''}`;
+}
+function describeChord(c) {
+  return `${c.hexes} hexes · ${c.closed ? 'closed' : 'open'}${c.selfIntersecting ? ' · self-intersecting' : ''}`;
+}
+
+/** A virtualized, filterable list of sheets or chords. */
+function createList(box, filterInput, kind, actions) {
+  let items = [], shown = [], changed = new Set(), selected = -1;
+  const spacer = document.createElement('div');
+  box.appendChild(spacer);
+  const describe = kind === 'sheet' ? describeSheet : describeChord;
+
+  function matches(item, q) {
+    if (!q) return true;
+    if (/^\d+$/.test(q)) return String(item.id).startsWith(q);
+    if (q === 'changed') return changed.has(item.id);
+    return describe(item).includes(q);
+  }
+  function draw() {
+    const top = box.scrollTop, h = box.clientHeight || 200;
+    const first = Math.max(0, Math.floor(top / ROW) - 5), last = Math.min(shown.length, Math.ceil((top + h) / ROW) + 5);
+    spacer.style.height = `${shown.length * ROW}px`;
+    const rows = [];
+    for (let i = first; i < last; i++) {
+      const item = shown[i];
+      const div = document.createElement('div');
+      div.className = 'row-item';
+      if (item.id === selected) div.classList.add('selected');
+      if (changed.has(item.id)) div.classList.add('changed');
+      div.style.top = `${i * ROW}px`;
+      div.dataset.kind = kind;
+      div.dataset.id = item.id;
+      const sw = document.createElement('span');
+      sw.className = 'swatch';
+      sw.style.background = kind === 'sheet' ? sheetColor(item.id) : chordColor(item.id);
+      const text = document.createElement('span');
+      text.innerHTML = `${kind} ${item.id} <span class="tag">${describe(item)}</span>`;
+      div.append(sw, text);
+      rows.push(div);
+    }
+    box.replaceChildren(spacer, ...rows);
+  }
+  box.addEventListener('scroll', draw);
+  box.addEventListener('click', (e) => {
+    const row = e.target.closest('.row-item');
+    if (!row) return;
+    const id = Number(row.dataset.id);
+    actions.select({ kind, id });
+    if (kind === 'sheet') actions.toggleDiagram(id);
   });
+  filterInput.addEventListener('input', () => {
+    refilter();
+    draw();
+  });
+  function refilter() {
+    const q = filterInput.value.trim();
+    shown = items.filter((it) => matches(it, q));
+  }
+  return {
+    set(newItems, newChanged, sel) {
+      items = newItems;
+      changed = newChanged;
+      selected = sel;
+      refilter();
+      draw();
+      // Bring the selected row into view.
+      const i = shown.findIndex((x) => x.id === sel);
+      if (i >= 0 && (i * ROW < box.scrollTop || (i + 1) * ROW > box.scrollTop + box.clientHeight)) {
+        box.scrollTop = Math.max(0, i * ROW - 60);
+        draw();
+      }
+    },
+    get rendered() {
+      return box.querySelectorAll('.row-item').length;
+    },
+  };
+}
+
+function histogram(root, quality, mesh) {
+  if (!quality) return root.replaceChildren();
+  const bins = new Array(20).fill(0);
+  let inverted = 0, n = 0;
+  const sj = quality.scaledJacobian;
+  const hd = mesh.hexDual();
+  for (let h = 0; h < sj.length; h++) {
+    if (hd.sheetOf[3 * h] < 0) continue;
+    n++;
+    if (sj[h] <= 0) inverted++;
+    bins[Math.min(19, Math.max(0, Math.floor(((sj[h] + 1) / 2) * 20)))]++;
+  }
+  const max = Math.max(1, ...bins);
+  const w = 290, hgt = 60;
+  const bars = bins
+    .map((b, i) => {
+      const x = (i * w) / 20, bh = (b / max) * (hgt - 14);
+      const c = qualityRgb(-1 + (i + 0.5) / 10);
+      return `<rect x="${x}" y="${hgt - 12 - bh}" width="${w / 20 - 1}" height="${bh}" fill="rgb(${c})"><title>${(-1 + i / 10).toFixed(1)}..${(-0.9 + i / 10).toFixed(1)}: ${b}</title></rect>`;
+    })
+    .join('');
+  root.innerHTML = `<svg width="${w}" height="${hgt}" role="img" aria-label="scaled Jacobian histogram">${bars}<text x="0" y="${hgt - 1}" font-size="10">-1</text><text x="${w / 2 - 4}" y="${hgt - 1}" font-size="10">0</text><text x="${w - 8}" y="${hgt - 1}" font-size="10">1</text></svg>
+    <div class="mono" id="quality-summary">min ${quality.min.toFixed(3)} · max ${quality.max.toFixed(3)} · ${n} hexes · <b style="color:${inverted ? '#d600aa' : '#2b7'}">${inverted} inverted</b>${inverted ? `: ${[...quality.inverted.slice(0, 8)].map((h) => 'h' + h).join(' ')}${quality.inverted.length > 8 ? ' …' : ''}` : ''}</div>`;
+}
+
+export function createPanel(root, actions, view) {
+  const $ = (sel) => document.querySelector(sel);
+  const build = () => actions.build($('#mesh-kind').value, $('#mesh-dims').value);
+  $('#mesh-build').addEventListener('click', build);
+  $('#mesh-dims').addEventListener('keydown', (e) => e.key === 'Enter' && build());
   $('#mesh-file').addEventListener('change', async (e) => {
     const file = e.target.files[0];
     if (file) actions.open(new Uint8Array(await file.arrayBuffer()), file.name);
   });
-  $('#shrink').addEventListener('input', (e) => actions.shrink(Number(e.target.value)));
-  $('#op-apply').addEventListener('click', () => actions.apply($('#op-step').value.trim()));
-  $('#op-step').addEventListener('keydown', (e) => {
-    if (e.key === 'Enter') actions.apply($('#op-step').value.trim());
+  $('#shrink').addEventListener('input', (e) => actions.set({ shrink: Number(e.target.value) }));
+  $('#overlay').addEventListener('change', (e) => actions.set({ overlay: e.target.checked }));
+  $('#ghosts').addEventListener('change', (e) => actions.set({ ghosts: e.target.checked }));
+  $('#focus-changes').addEventListener('change', (e) => actions.set({ focusChanges: e.target.checked }));
+  $('#quality').addEventListener('change', (e) => {
+    const on = e.target.checked;
+    const mesh = window.hexdual.store.get().mesh;
+    actions.set({ colorBy: on ? 'quality' : 'plain', quality: on ? mesh.quality() : null });
   });
-  $('#op-undo').addEventListener('click', () => actions.undo());
-  $('#flip-load').addEventListener('click', () => actions.loadFlip($('#flip-name').value));
-  $('#flip-step').addEventListener('click', () => actions.stepFlip());
-  const flipSelect = $('#flip-name');
-  for (const f of actions.flips) {
-    const o = document.createElement('option');
-    o.value = f.name;
-    o.textContent = f.steps ? `${f.name} (${f.steps.length} steps)` : `${f.name} (none found)`;
-    o.disabled = !f.steps;
-    flipSelect.appendChild(o);
+  const slice = () => {
+    const axis = $('#slice-axis').value;
+    actions.set({ slice: axis === '' ? null : { axis: Number(axis), at: Number($('#slice-at').value) } });
+  };
+  $('#slice-axis').addEventListener('change', slice);
+  $('#slice-at').addEventListener('input', slice);
+  $('#pick-mode').addEventListener('change', (e) => (view.pickMode = e.target.value));
+  $('#open-sheets').addEventListener('click', () => actions.openSheetsOfSelection());
+  $('#clear-sel').addEventListener('click', () => actions.select(null));
+  for (const b of document.querySelectorAll('.tabs button')) b.addEventListener('click', () => actions.set({ view: b.dataset.view }));
+
+  const sheets = createList($('#sheets'), $('#sheet-filter'), 'sheet', actions);
+  const chords = createList($('#chords'), $('#chord-filter'), 'chord', actions);
+  const tip = $('#tip');
+  let shownKey = null, qualityKey = null;
+
+  function describeSelection(s, sel) {
+    if (!sel) return `${s.mesh.counts.hexes} hexes — click a quad, an edge, or a sheet`;
+    const id = formatSelection(sel);
+    if (sel.kind === 'sheet') {
+      const it = s.mesh.sheets[sel.id];
+      return it ? `sheet ${sel.id}: ${it.hexes} hexes` : id;
+    }
+    if (sel.kind === 'chord') {
+      const it = s.mesh.chords[sel.id];
+      return it ? `chord ${sel.id}: ${it.hexes} hexes` : id;
+    }
+    const d = dualThrough(sel, actions.engine.hexDual());
+    const what = sel.kind === 'quad' ? 'quad' : sel.kind === 'edge' ? 'edge' : 'hex';
+    return `${what} ${id} · sheets ${d.sheets.join(', ') || '–'} · chords ${d.chords.join(', ') || '–'}`;
   }
 
-  function fillPicker(list, items, kind, selection, describe) {
-    list.replaceChildren(
-      ...items.map((item) => {
-        const li = document.createElement('li');
-        li.dataset.kind = kind;
-        li.dataset.id = item.id;
-        if (selection && selection.kind === kind && selection.id === item.id) li.classList.add('selected');
-        const sw = document.createElement('span');
-        sw.className = 'swatch';
-        sw.style.background = kind === 'sheet' ? sheetColor(item.id) : chordColor(item.id);
-        const text = document.createElement('span');
-        text.innerHTML = `${kind} ${item.id} <span class="tag">${describe(item)}</span>`;
-        li.append(sw, text);
-        li.addEventListener('click', () => actions.select({ kind, id: item.id }));
-        return li;
-      }),
-    );
-  }
-
-  let shownMesh = null;
   return {
-    update(state) {
-      $('#error').textContent = state.error || '';
-      if (state.meshSpec && state.meshSpec.kind !== 'file') {
-        $('#mesh-kind').value = state.meshSpec.kind;
-        $('#mesh-dims').value = state.meshSpec.dims.join('x');
+    hover(pick, e) {
+      view.setHover(pick);
+      if (!pick || !e) return (tip.hidden = true);
+      const s = window.hexdual.store.get();
+      tip.hidden = false;
+      tip.textContent = describeSelection(s, pick);
+      tip.style.left = `${e.clientX + 14}px`;
+      tip.style.top = `${e.clientY + 12}px`;
+    },
+    update(s) {
+      if (!s.mesh) return;
+      $('#error').textContent = s.error || '';
+      $('#notice').textContent = s.notice || '';
+      for (const b of document.querySelectorAll('.tabs button')) b.classList.toggle('on', b.dataset.view === s.view);
+      if (s.spec && s.spec.kind !== 'file') {
+        $('#mesh-kind').value = s.spec.kind;
+        if (s.spec.dims.length) $('#mesh-dims').value = s.spec.dims.join('x');
       }
-      const fq = state.flipQueue;
-      $('#flip-status').textContent = fq
-        ? `${fq.name}: ${fq.done} of ${fq.steps.length} steps applied` + (fq.done < fq.steps.length ? ` — next: ${fq.steps[fq.done]}` : ' — the after side')
-        : 'Load a flip to step through its atomic decomposition on the 4-cube boundary.';
-      $('#flip-step').disabled = !fq || fq.done >= fq.steps.length;
-      $('#shrink').value = String(state.shrink);
-      if (!state.mesh) return;
-      $('#ops-log').replaceChildren(
-        ...state.ops.map((o) => Object.assign(document.createElement('li'), { textContent: o.step })),
-      );
-      $('#op-undo').disabled = state.ops.length === 0;
-      const info = state.mesh.info();
+      $('#shrink').value = String(s.shrink);
+      $('#overlay').checked = s.overlay;
+      $('#ghosts').checked = s.ghosts;
+      $('#focus-changes').checked = s.focusChanges;
+      $('#quality').checked = s.colorBy === 'quality';
+      $('#slice-axis').value = s.slice ? String(s.slice.axis) : '';
+      if (s.slice) $('#slice-at').value = String(s.slice.at);
+      const label = describeSelection(s, s.selection);
+      $('#selection-info').textContent = label;
+      $('#selection-label').textContent = label;
+      $('#open-sheets').disabled = !s.selection;
+      const qk = s.colorBy === 'quality' ? s.meshKey : null;
+      if (qualityKey !== qk) {
+        qualityKey = qk;
+        histogram($('#histogram'), s.colorBy === 'quality' ? s.quality : null, s.mesh);
+      }
+      const info = s.mesh.info();
+      const key = `${s.meshKey}|${formatSelection(s.selection)}`;
+      if (shownKey === key) return;
+      shownKey = key;
       for (const td of root.querySelectorAll('[data-count]')) td.textContent = String(info[td.dataset.count]);
       $('#sheet-count').textContent = `(${info.sheets.length})`;
       $('#chord-count').textContent = `(${info.chords.length})`;
-      {
-        fillPicker($('#sheets'), info.sheets, 'sheet', state.selection, (s) =>
-          `${s.hexes} hexes · ${s.topology}${s.boundaryLoops ? ` · ${s.boundaryLoops} loop${s.boundaryLoops > 1 ? 's' : ''}` : ''}${s.selfIntersecting ? ' · self-intersecting' : ''}`,
-        );
-        fillPicker($('#chords'), info.chords, 'chord', state.selection, (c) =>
-          `${c.hexes} hexes · ${c.closed ? 'closed' : 'open'}${c.selfIntersecting ? ' · self-intersecting' : ''}`,
-        );
-        shownMesh = state.mesh;
-      }
-      const label = document.getElementById('selection-label');
-      if (state.selection) {
-        const { kind, id } = state.selection;
-        const item = (kind === 'sheet' ? info.sheets : info.chords)[id];
-        label.textContent = item ? `${kind} ${id}: ${item.hexes} hexes` : '';
-      } else {
-        label.textContent = `${info.hexes} hexes — pick a sheet or chord`;
-      }
+      const rep = s.report && s.report.key === s.meshKey ? s.report : null;
+      sheets.set(info.sheets, new Set(rep ? rep.changedSheets : []), s.selection?.kind === 'sheet' ? s.selection.id : -1);
+      chords.set(info.chords, new Set(rep ? rep.changedChords : []), s.selection?.kind === 'chord' ? s.selection.id : -1);
     },
+    lists: { sheets, chords },
   };
 }

@@ -1,8 +1,13 @@
-// The sheet diagram of the selected sheet, drawn as SVG from the engine's JSON. Clicking a chord
-// selects it (and highlights its hexes in 3D); the selected chord is drawn thicker.
+// Sheet diagrams (TK03 §2): one resizable panel per open sheet, side by side. Wheel zooms, drag
+// pans; labels keep a readable screen size and appear only when crossings are far enough apart
+// (level of detail for 1,000-crossing sheets). Click a crossing (hex), a chord, a cell (edge) or a
+// boundary mark (quad) to select it in 3D; the 3D selection is marked here. Local mode draws k rings
+// around the selected hex in a dotted circle.
 import { chordColor } from './colors.js';
+import { formatSelection } from './selection.js';
 
 const NS = 'http://www.w3.org/2000/svg';
+const LABEL_PX = 11;
 
 function el(name, attrs, parent) {
   const e = document.createElementNS(NS, name);
@@ -11,68 +16,223 @@ function el(name, attrs, parent) {
   return e;
 }
 
-export function createSheetDiagram(container, actions) {
-  const box = document.createElement('div');
-  box.id = 'diagram';
-  container.appendChild(box);
+function layout(mesh, d, selection) {
+  if (d.local) {
+    const hex = d.local.hex;
+    if (typeof mesh.localSheetDiagram === 'function') return mesh.localSheetDiagram(d.sheet, [hex], d.local.rings);
+    return mesh.sheetDiagramJSON(d.sheet, { local: [hex], rings: d.local.rings });
+  }
+  return mesh.sheetDiagramJSON(d.sheet);
+}
 
-  function draw(d, selection) {
-    box.replaceChildren();
-    const title = document.createElement('div');
-    title.className = 'diagram-title';
-    title.textContent = `sheet ${d.sheet} · ${d.topology}${d.method !== d.topology ? ` · ${d.method}` : ''}`;
-    box.appendChild(title);
-    const m = d.openedHex !== null ? 1.6 : 1.15;
-    const svg = el('svg', { viewBox: `${-m} ${-m} ${2 * m} ${2 * m}`, width: 300, height: 300, 'data-sheet': d.sheet }, box);
-    const g = el('g', { transform: 'scale(1,-1)' }, svg);
+/** One diagram panel: draws once per mesh state; zoom, pan and selection only touch attributes. */
+function createPanel(host, actions, spec) {
+  const box = document.createElement('div');
+  box.className = 'diagram';
+  box.dataset.sheet = spec.sheet;
+  box.innerHTML = `<div class="title"><b></b></div><div class="bar"><button data-act="local" title="k rings around the selected hex">local</button>
+    <input data-act="rings" type="number" min="1" max="9" value="2" style="width:36px" title="rings" aria-label="rings" />
+    <button data-act="fit" title="fit">fit</button><button data-act="svg" title="download SVG">svg</button><button data-act="close" title="close">✕</button></div>`;
+  host.appendChild(box);
+  const svg = el('svg', { 'data-sheet': spec.sheet }, box);
+  const note = Object.assign(document.createElement('div'), { className: 'diagram-note' });
+  box.appendChild(note);
+  const root = el('g', {}, svg);
+  let diagram = null, extent = 1.2, spacing = 0.1;
+  let vb = { x: -1.2, y: -1.2, w: 2.4, h: 2.4 };
+  let drawnKey = null;
+
+  function pxPerUnit() {
+    const r = svg.getBoundingClientRect();
+    return Math.min(r.width / vb.w, r.height / vb.h) || 100;
+  }
+  function applyView() {
+    svg.setAttribute('viewBox', `${vb.x} ${vb.y} ${vb.w} ${vb.h}`);
+    const s = pxPerUnit();
+    const labels = root.querySelector('.labels');
+    if (labels) {
+      labels.setAttribute('font-size', String(LABEL_PX / s));
+      // Level of detail: labels only when neighbouring crossings are at least ~2 labels apart.
+      labels.style.display = spacing * s >= 22 ? '' : 'none';
+    }
+    for (const c of root.querySelectorAll('.crossing')) {
+      c.setAttribute('r', String(Math.min(0.32 * spacing, 6 / s)));
+      c.setAttribute('stroke-width', String(1.2 / s));
+    }
+    for (const l of root.querySelectorAll('.chord')) l.setAttribute('stroke-width', String((l.classList.contains('sel') ? 5 : 2) / s));
+    for (const l of root.querySelectorAll('.loop')) l.setAttribute('stroke-width', String(1.5 / s));
+    for (const t of root.querySelectorAll('.labels text')) {
+      t.setAttribute('x', String(Number(t.dataset.x) + 7 / s));
+      t.setAttribute('y', String(-Number(t.dataset.y) - 5 / s));
+    }
+    box.dataset.zoom = String((2 * extent) / vb.w);
+    box.dataset.labels = labels && labels.style.display !== 'none' ? 'shown' : 'hidden';
+  }
+  function fit() {
+    vb = { x: -extent, y: -extent, w: 2 * extent, h: 2 * extent };
+    applyView();
+  }
+
+  function draw(d) {
+    diagram = d;
+    root.replaceChildren();
+    const g = el('g', { transform: 'scale(1,-1)' }, root);
+    extent = d.openedHex !== null && d.openedHex !== undefined ? 1.6 : 1.15;
+    spacing = Math.max(0.004, Math.sqrt((Math.PI * extent * extent) / Math.max(1, d.crossings.length)) * 0.55);
     if (d.local) el('circle', { cx: 0, cy: 0, r: 1, fill: 'none', stroke: '#666', 'stroke-width': 0.01, 'stroke-dasharray': '0.04 0.03' }, g);
-    d.loops.forEach((loop, i) =>
-      el('polygon', {
-        points: loop.map((p) => p.join(',')).join(' '),
-        fill: i === 0 ? '#f4f6fa' : 'white',
-        stroke: '#222',
-        'stroke-width': d.local ? 0.006 : 0.012,
-      }, g),
-    );
+    d.loops.forEach((loop, i) => el('polygon', { points: loop.map((p) => p.join(',')).join(' '), fill: i === 0 ? '#f4f6fa' : 'white', stroke: '#222', class: 'loop' }, g));
+    const cells = el('g', { class: 'cells' }, g);
+    for (const c of d.cells || []) {
+      const r = el('rect', { x: c.x - spacing * 0.18, y: c.y - spacing * 0.18, width: spacing * 0.36, height: spacing * 0.36, fill: 'transparent', class: 'cell', 'data-edge': `h${c.edge[0]}e${c.edge[1]}` }, cells);
+      el('title', {}, r).textContent = `edge h${c.edge[0]}e${c.edge[1]}`;
+    }
     for (const c of d.chords) {
-      const selected = selection && selection.kind === 'chord' && selection.id === c.id;
-      const line = el('polyline', {
-        points: c.points.map((p) => p.join(',')).join(' '),
-        fill: 'none',
-        stroke: chordColor(c.id),
-        'stroke-width': selected ? 0.05 : 0.022,
-        'data-chord': c.id,
-        class: 'chord',
-      }, g);
-      line.addEventListener('click', () => actions.select({ kind: 'chord', id: c.id }, { keepDiagram: true }));
+      const line = el('polyline', { points: c.points.map((p) => p.join(',')).join(' '), fill: 'none', stroke: chordColor(c.id), class: 'chord', 'data-chord': c.id }, g);
       el('title', {}, line).textContent = `chord ${c.id} (with sheet ${c.otherSheet})${c.closed ? ', closed' : ''}`;
     }
-    for (const b of d.boundary) el('rect', { x: b.x - 0.015, y: b.y - 0.015, width: 0.03, height: 0.03, fill: '#222' }, g);
+    for (const b of d.boundary) {
+      const r = el('rect', { x: b.x - spacing * 0.12, y: b.y - spacing * 0.12, width: spacing * 0.24, height: spacing * 0.24, fill: '#222', class: 'bquad', 'data-quad': `h${b.hex}f${b.face}` }, g);
+      el('title', {}, r).textContent = `boundary quad h${b.hex}f${b.face}`;
+    }
+    const crossings = el('g', {}, g);
     for (const c of d.crossings) {
-      el('circle', { cx: c.x, cy: c.y, r: 0.028, fill: c.outside ? '#fc6' : 'white', stroke: '#111', 'stroke-width': 0.008, 'data-hex': c.hex }, g);
-      const t = el('text', { x: c.x + 0.035, y: -(c.y + 0.03), 'font-size': 0.075, transform: 'scale(1,-1)' }, g);
+      const dot = el('circle', { cx: c.x, cy: c.y, r: 0.02, fill: c.outside ? '#fc6' : 'white', stroke: '#111', class: 'crossing', 'data-hex': c.hex }, crossings);
+      el('title', {}, dot).textContent = `hex h${c.hex} (chords ${c.chords.join(', ')})`;
+    }
+    const labels = el('g', { class: 'labels', transform: 'scale(1,-1)' }, root.firstChild);
+    for (const c of d.crossings) {
+      const t = el('text', { 'data-x': c.x, 'data-y': c.y }, labels);
       t.textContent = String(c.hex);
     }
-    if (d.note) {
-      const note = document.createElement('div');
-      note.className = 'diagram-note';
-      note.textContent = d.note;
-      box.appendChild(note);
+    box.querySelector('.title b').textContent = `sheet ${d.sheet} · ${d.topology}${d.method !== d.topology ? ` · ${d.method}` : ''} · ${d.crossings.length} crossings`;
+    note.textContent = d.note || '';
+    fit();
+  }
+
+  // ---- zoom and pan ----
+  svg.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    const r = svg.getBoundingClientRect();
+    const s = pxPerUnit();
+    const ux = vb.x + (e.clientX - r.left - (r.width - vb.w * s) / 2) / s;
+    const uy = vb.y + (e.clientY - r.top - (r.height - vb.h * s) / 2) / s;
+    const k = Math.exp(Math.sign(e.deltaY) * 0.18);
+    const w = Math.min(8 * extent, Math.max(extent / 200, vb.w * k));
+    const f = w / vb.w;
+    vb = { x: ux - (ux - vb.x) * f, y: uy - (uy - vb.y) * f, w, h: w };
+    applyView();
+  }, { passive: false });
+  let drag = null;
+  svg.addEventListener('pointerdown', (e) => {
+    drag = { x: e.clientX, y: e.clientY, vx: vb.x, vy: vb.y, moved: false };
+    svg.setPointerCapture(e.pointerId);
+  });
+  svg.addEventListener('pointermove', (e) => {
+    if (!drag) return;
+    const s = pxPerUnit();
+    if (Math.hypot(e.clientX - drag.x, e.clientY - drag.y) > 3) drag.moved = true;
+    vb.x = drag.vx - (e.clientX - drag.x) / s;
+    vb.y = drag.vy - (e.clientY - drag.y) / s;
+    if (drag.moved) applyView();
+  });
+  svg.addEventListener('pointerup', (e) => {
+    const d = drag;
+    drag = null;
+    if (d && d.moved) return;
+    const target = document.elementFromPoint(e.clientX, e.clientY);
+    const t = target?.closest?.('[data-hex], [data-chord], [data-edge], [data-quad]');
+    if (!t) return;
+    if (t.dataset.hex) actions.select({ kind: 'hex', hex: Number(t.dataset.hex) });
+    else if (t.dataset.chord) actions.select({ kind: 'chord', id: Number(t.dataset.chord) });
+    else if (t.dataset.edge) {
+      const m = /^h(\d+)e(\d+)$/.exec(t.dataset.edge);
+      actions.select({ kind: 'edge', hex: +m[1], edge: +m[2] });
+    } else if (t.dataset.quad) {
+      const m = /^h(\d+)f(\d+)$/.exec(t.dataset.quad);
+      actions.select({ kind: 'quad', hex: +m[1], face: +m[2] });
     }
+  });
+  new ResizeObserver(() => diagram && applyView()).observe(svg);
+
+  box.querySelector('.bar').addEventListener('click', (e) => {
+    const act = e.target.dataset.act;
+    const s = window.hexdual.store.get();
+    if (act === 'close') actions.closeDiagram(spec.sheet);
+    if (act === 'fit') fit();
+    if (act === 'svg') downloadSvg();
+    if (act === 'local') {
+      const hex = s.selection && 'hex' in s.selection ? s.selection.hex : null;
+      if (spec.local) actions.toggleDiagram(spec.sheet, null), actions.toggleDiagram(spec.sheet);
+      else if (hex !== null) actions.toggleDiagram(spec.sheet, { hex, rings: Number(box.querySelector('[data-act=rings]').value) || 2 });
+      else actions.set({ error: 'local diagram: select a hex, quad or edge on the sheet first' });
+    }
+  });
+
+  function downloadSvg() {
+    const copy = svg.cloneNode(true);
+    copy.setAttribute('xmlns', NS);
+    const r = svg.getBoundingClientRect();
+    copy.setAttribute('width', String(Math.round(r.width)));
+    copy.setAttribute('height', String(Math.round(r.height)));
+    const blob = new Blob([new XMLSerializer().serializeToString(copy)], { type: 'image/svg+xml' });
+    const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(blob), download: `sheet-${spec.sheet}.svg` });
+    a.click();
+    setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+  }
+
+  function mark(selection) {
+    for (const x of root.querySelectorAll('.sel')) x.classList.remove('sel');
+    if (!selection) return applyView();
+    const id = formatSelection(selection);
+    if (selection.kind === 'chord') root.querySelector(`[data-chord="${selection.id}"]`)?.classList.add('sel');
+    if ('hex' in selection) root.querySelectorAll(`.crossing[data-hex="${selection.hex}"]`).forEach((c) => c.classList.add('sel'));
+    if (selection.kind === 'edge') root.querySelector(`[data-edge="${id}"]`)?.classList.add('sel');
+    if (selection.kind === 'quad') root.querySelector(`[data-quad="${id}"]`)?.classList.add('sel');
+    applyView();
   }
 
   return {
-    update(state) {
-      if (!state.mesh || state.diagramSheet === null || state.diagramSheet === undefined) {
-        box.hidden = true;
-        return;
+    box,
+    spec,
+    update(s, specNow) {
+      spec = specNow;
+      const key = `${s.meshKey}|${JSON.stringify(spec)}`;
+      if (key !== drawnKey) {
+        drawnKey = key;
+        try {
+          draw(layout(s.mesh, spec, s.selection));
+        } catch (e) {
+          root.replaceChildren();
+          box.querySelector('.title b').textContent = `sheet ${spec.sheet}`;
+          note.textContent = e.message;
+        }
+        box.querySelector('[data-act=local]').classList.toggle('on', !!spec.local);
       }
-      box.hidden = false;
-      try {
-        draw(state.mesh.sheetDiagramJSON(state.diagramSheet), state.selection);
-      } catch (e) {
-        box.replaceChildren(Object.assign(document.createElement('div'), { className: 'diagram-note', textContent: e.message }));
+      mark(s.selection);
+    },
+    get diagram() {
+      return diagram;
+    },
+  };
+}
+
+export function createDiagrams(host, actions) {
+  const panels = new Map();
+  const style = document.createElement('style');
+  style.textContent = `.diagram .sel.crossing { fill: #ff7a00; } .diagram .sel.cell { fill: rgba(255,122,0,0.6); }
+    .diagram .sel.bquad { fill: #ff7a00; } .diagram .chord.sel { filter: drop-shadow(0 0 1px #000); }
+    .diagram .labels text { pointer-events: none; fill: #111; } .diagram [data-act=local].on { background: #223; color: #fff; }`;
+  document.head.appendChild(style);
+  return {
+    update(s) {
+      if (!s.mesh) return;
+      const want = new Map(s.diagrams.map((d) => [d.sheet, d]));
+      for (const [sheet, p] of panels) if (!want.has(sheet)) (p.box.remove(), panels.delete(sheet));
+      for (const [sheet, d] of want) {
+        if (!panels.has(sheet)) panels.set(sheet, createPanel(host, actions, d));
+        panels.get(sheet).update(s, d);
       }
     },
+    panels,
   };
 }

@@ -1,8 +1,10 @@
-// The demo page in headless Chromium: counts equal the native CLI's, a sheet can be picked,
-// garbage URLs fall back with a message. Screenshots land in build/screenshots/.
+// The explorer in headless Chromium, used as a student would: click in 3D, apply from the palette,
+// step through time, share the URL, drop a file, zoom a diagram, step through a flip.
+// Screenshots land in build/screenshots/ (desktop 1200 px and phone 375 px wide).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { startServer, startBrowser, root, screenshotDir } from './harness.mjs';
 
@@ -20,136 +22,279 @@ after(async () => {
   server?.stop();
 });
 
+function cli(...args) {
+  return execFileSync(join(root, 'build/native/hexdual'), args).toString();
+}
 function nativeInfo(kind, dims) {
-  const cli = join(root, 'build/native/hexdual');
   const file = `/tmp/hexdual_browser_${kind}_${dims}.hxd`;
-  execFileSync(cli, [kind, dims, '-o', file]);
-  return JSON.parse(execFileSync(cli, ['info', file, '--json']).toString());
+  cli(kind, dims, '-o', file);
+  return JSON.parse(cli('info', file, '--json'));
 }
 
 async function open(hash) {
+  await page.goto('about:blank');
   await page.goto(server.url + hash);
-  await page.waitForFunction(() => window.hexdual?.ready === true, null, { timeout: 20000 });
+  await page.waitForFunction(() => window.hexdual?.ready === true, null, { timeout: 30000 });
+  await settle();
+}
+// Two animation frames: the view has drawn what the state says.
+const settle = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+const shownCounts = () => page.$$eval('[data-count]', (tds) => Object.fromEntries(tds.map((td) => [td.dataset.count, Number(td.textContent)])));
+const state = () => page.evaluate(() => {
+  const s = window.hexdual.store.get();
+  return { steps: s.steps, at: s.at, selection: s.selection, report: s.report, diagrams: s.diagrams.map((d) => d.sheet), hexes: s.mesh.counts.hexes };
+});
+const project = (hex, face) => page.evaluate(([h, f]) => window.hexdual.view.project(h, f), [hex, face]);
+const hash = () => decodeURIComponent(new URL(page.url()).hash).replace(/\+/g, ' ');
+
+// RGBA pixels of a canvas region (page coordinates, CSS px).
+async function pixels(x, y, w, h) {
+  return page.evaluate(([x, y, w, h]) => {
+    const c = window.hexdual.view.canvas;
+    const r = c.getBoundingClientRect();
+    const sx = c.width / r.width;
+    const tmp = document.createElement('canvas');
+    tmp.width = Math.round(w * sx);
+    tmp.height = Math.round(h * sx);
+    const g = tmp.getContext('2d');
+    g.drawImage(c, (x - r.left) * sx, (y - r.top) * sx, w * sx, h * sx, 0, 0, tmp.width, tmp.height);
+    return Array.from(g.getImageData(0, 0, tmp.width, tmp.height).data);
+  }, [x, y, w, h]);
+}
+function differing(a, b) {
+  let n = 0;
+  for (let i = 0; i < a.length; i += 4) if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 40) n++;
+  return n;
 }
 
-async function shownCounts() {
-  return page.$$eval('[data-count]', (tds) => Object.fromEntries(tds.map((td) => [td.dataset.count, Number(td.textContent)])));
-}
-
-test('default page shows the 3x3x3 grid with the native counts', async () => {
+test('default page: the 3x3x3 grid with the native counts, lists and a hover id', async () => {
   await open('');
   const native = nativeInfo('grid', '3x3x3');
   const { vertices, edges, quads, hexes, boundaryQuads } = native;
   assert.deepEqual(await shownCounts(), { vertices, edges, quads, hexes, boundaryQuads });
-  assert.equal(await page.locator('#sheets li').count(), native.sheets.length);
-  assert.equal(await page.locator('#chords li').count(), native.chords.length);
+  assert.equal(await page.locator('#sheet-count').textContent(), `(${native.sheets.length})`);
+  assert.equal(await page.locator('#chord-count').textContent(), `(${native.chords.length})`);
   assert.equal(await page.evaluate(() => window.hexdual.view.triangleCount), 27 * 12);
-  await page.screenshot({ path: join(screenshotDir, 'demo-grid.png') });
+  // The chord list is virtualized: fewer rows in the DOM than chords.
+  assert.ok((await page.locator('#chords .row-item').count()) < native.chords.length);
+  await page.fill('#chord-filter', '26');
+  assert.equal(await page.locator('#chords .row-item').count(), 1);
+  // Hovering hex 20's front face shows its quad id and the sheets and chords through it.
+  const p = await project(20, 2);
+  await page.mouse.move(p.x, p.y);
+  await page.waitForSelector('#tip:not([hidden])');
+  assert.match(await page.locator('#tip').textContent(), /^quad h20f2 · sheets \d, \d · chords \d+$/);
+  await page.screenshot({ path: join(screenshotDir, 'explorer-grid.png') });
 });
 
-test('picking a sheet highlights its hexes and goes into the URL', async () => {
-  await open('');
-  await page.locator('#sheets li[data-id="4"]').click();
-  assert.equal(await page.locator('#selection-label').textContent(), 'sheet 4: 9 hexes');
-  assert.equal(await page.locator('#sheets li.selected').getAttribute('data-id'), '4');
-  assert.match(page.url(), /#mesh=grid%3A3x3x3&sheet=4$/);
-  await page.waitForTimeout(300);
-  // Pixels: the highlighted sheet is drawn in colour (not only the faint grey-blue).
-  const png = await page.locator('#view canvas').screenshot({ path: join(screenshotDir, 'demo-grid-sheet.png') });
-  assert.ok(png.length > 10000);
-});
-
-test('ring mesh from the URL: closed chords and annuli, counts equal the native CLI', async () => {
-  await open('#mesh=ring:8x2x2&chord=1');
-  const native = nativeInfo('ring', '8x2x2');
-  assert.equal((await shownCounts()).hexes, native.hexes);
-  assert.equal((await shownCounts()).edges, native.edges);
-  const text = await page.locator('#chords li[data-id="1"]').textContent();
-  assert.match(text, /chord 1 8 hexes · closed/);
-  const sheetText = await page.locator('#sheets').textContent();
-  assert.equal((sheetText.match(/annulus/g) || []).length, 4);
-  assert.equal(await page.locator('#selection-label').textContent(), 'chord 1: 8 hexes');
-  await page.waitForTimeout(300);
-  await page.screenshot({ path: join(screenshotDir, 'demo-ring-chord.png') });
-});
-
-test('a garbage URL falls back to the default mesh with a message', async () => {
-  await open('#mesh=cube:zz&sheet=abc');
-  assert.equal((await shownCounts()).hexes, 27);
-  const err = await page.locator('#error').textContent();
-  assert.match(err, /ignored mesh=cube:zz/);
-  assert.match(err, /ignored sheet=abc/);
-});
-
-test('a bad file upload shows the reader error and keeps the mesh', async () => {
-  await open('#mesh=grid:2x2x2');
-  await page.setInputFiles('#mesh-file', { name: 'bad.vtk', mimeType: 'text/plain', buffer: Buffer.from('# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 float\n0 0 0\n') });
-  await page.waitForFunction(() => document.querySelector('#error').textContent.length > 0);
-  assert.match(await page.locator('#error').textContent(), /bad\.vtk:\d+: unexpected end of file/);
-  assert.equal((await shownCounts()).hexes, 8);
-  assert.deepEqual(errors, []);
-});
-
-test('picking a sheet shows its diagram; clicking a chord there selects it in 3D', async () => {
-  await open('');
-  await page.locator('#sheets li[data-id="2"]').click();
-  await page.waitForSelector('#diagram svg[data-sheet="2"]');
-  assert.equal(await page.locator('#diagram svg circle[data-hex]').count(), 9);
-  assert.equal(await page.locator('#diagram svg .chord').count(), 6);
-  assert.match(await page.locator('#diagram .diagram-title').textContent(), /sheet 2 · disk/);
-  const chord = page.locator('#diagram svg .chord').first();
-  const id = await chord.getAttribute('data-chord');
-  await chord.dispatchEvent('click');
-  assert.equal(await page.locator('#selection-label').textContent(), `chord ${id}: 3 hexes`);
-  assert.equal(await page.locator('#diagram svg[data-sheet="2"]').count(), 1);  // the diagram stays
-  await page.waitForTimeout(300);
-  await page.screenshot({ path: join(screenshotDir, 'demo-diagram.png') });
-});
-
-test('operations: apply a step, see the counts change, share it in the URL, undo', async () => {
-  await open('');
-  await page.fill('#op-step', 'pillow h13f5');
-  await page.click('#op-apply');
+test('click a hex on the canvas, pillow it from the palette: two hexes appear apart; URL reloads to the same state; back and forward', async () => {
+  await open('#mesh=grid:3x3x3');
+  await page.selectOption('#pick-mode', 'hex');
+  const p = await project(20);
+  await page.mouse.click(p.x, p.y);
+  assert.deepEqual((await state()).selection, { kind: 'hex', hex: 20 });
+  assert.match(hash(), /sel=h20(&|$)/);
+  assert.match(await page.locator('#selection-info').textContent(), /^hex h20 · sheets/);
+  // The palette lists what applies at hex 20 (from the engine), each with Δ.
+  const pillow = page.locator('#candidates li[data-step^="pillow"]').first();
+  const step = await pillow.getAttribute('data-step');
+  assert.match(step, /^pillow h(20f\d|\d+f\d)$/);
+  assert.match(await pillow.textContent(), /Δ\(\+4,\+8,\+6,\+2\)/);
+  const [, qh, qf] = /h(\d+)f(\d)/.exec(step).map(Number);
+  await page.selectOption('#pick-mode', 'auto');
+  await settle();
+  const q = await project(qh, qf);
+  const region = [q.x - 40, q.y - 40, 80, 80];
+  const beforePixels = await pixels(...region);
+  await page.screenshot({ path: join(screenshotDir, 'explorer-before-pillow.png') });
+  await pillow.click();
+  await settle();
   assert.equal((await shownCounts()).hexes, 29);
-  assert.equal((await shownCounts()).vertices, 68);
-  assert.equal(await page.locator('#ops-log li').count(), 1);
-  assert.match(decodeURIComponent(page.url()), /ops=v1;pillow[+ ]h13f5/);
-  assert.match(await page.locator('#sheets').textContent(), /sphere/);
-  // A rejected step leaves the mesh as it was and says why.
-  await page.fill('#op-step', 'hexpush h0f0');
-  await page.click('#op-apply');
-  assert.match(await page.locator('#error').textContent(), /hexpush: quad h0f0 is on the boundary/);
-  assert.equal((await shownCounts()).hexes, 29);
-  // The shared URL rebuilds the same state.
+  const s1 = await state();
+  assert.deepEqual(s1.steps, [step]);
+  assert.deepEqual(s1.report.created, [27, 28]);
+  assert.deepEqual(s1.report.removed, []);
+  assert.ok(s1.report.changedSheets.length >= 1);
+  // The new sphere sheet is marked as changed in the list.
+  assert.ok((await page.locator('#sheets .row-item.changed').count()) >= 1);
+  // The two new hexes are drawn apart: different drawn centres, and the picture changed there.
+  const [x, y] = [await project(27), await project(28)];
+  assert.ok(Math.hypot(x.x - y.x, x.y - y.y) > 3, `pillow hexes drawn at ${JSON.stringify([x, y])}`);
+  const afterPixels = await pixels(...region);
+  assert.ok(differing(beforePixels, afterPixels) > 50, 'the pillow changed the picture around its quad');
+  await page.screenshot({ path: join(screenshotDir, 'explorer-after-pillow.png') });
+  assert.match(hash(), new RegExp(`steps=v1;${step}`));
+  // Reload: the same state.
   const url = page.url();
   await page.goto('about:blank');
   await page.goto(url);
   await page.waitForFunction(() => window.hexdual?.ready === true);
   assert.equal((await shownCounts()).hexes, 29);
-  await page.click('#op-undo');
+  assert.deepEqual((await state()).steps, [step]);
+  // Back (the timeline button) and forward (→): exact, and the URL keeps the steps with at=K.
+  await page.click('#tl-back');
   assert.equal((await shownCounts()).hexes, 27);
-  assert.equal(await page.locator('#ops-log li').count(), 0);
-  // A log that cannot apply is reported, and the steps before it are kept.
-  await open('#mesh=grid:3x3x3&ops=v1;pillow%20h13f5;hexpush%20h0f0');
+  assert.equal((await state()).at, 0);
+  // Going back removed the pillow: its hexes are reported and drawn as fading ghosts.
+  assert.deepEqual((await state()).report.removed, [27, 28]);
+  assert.equal(await page.evaluate(() => window.hexdual.view.ghostCount), 1);
+  assert.match(hash(), /at=0/);
+  await page.keyboard.press('ArrowRight');
   assert.equal((await shownCounts()).hexes, 29);
-  assert.match(await page.locator('#error').textContent(), /step 2 \(hexpush h0f0\)/);
+  assert.deepEqual((await state()).report.created, [27, 28]);
+  assert.doesNotMatch(hash(), /at=/);
+  // Undo, then a different step: the URL's steps are the remaining ones and replay to the same ids.
+  await page.click('#tl-back');
+  await page.evaluate(() => window.hexdual.actions.apply('pillow h13f5'));
+  assert.deepEqual((await state()).steps, ['pillow h13f5']);
+  assert.deepEqual((await state()).report.created, [27, 28]);
+  const url2 = page.url();
+  await page.goto('about:blank');
+  await page.goto(url2);
+  await page.waitForFunction(() => window.hexdual?.ready === true);
+  assert.deepEqual((await state()).steps, ['pillow h13f5']);
+  assert.deepEqual(errors, []);
 });
 
-test('flips: load the 4-cube and step through the 1-7 decomposition', async () => {
-  await open('');
-  await page.selectOption('#flip-name', '1-7');
+test('picking a quad and an edge on the canvas; the selection is in the URL and survives a step', async () => {
+  await open('#mesh=grid:3x3x3');
+  const p = await project(20, 2);
+  await page.mouse.click(p.x, p.y);
+  assert.deepEqual((await state()).selection, { kind: 'quad', hex: 20, face: 2 });
+  assert.match(hash(), /sel=h20f2/);
+  // Near a side of the face: an edge.
+  const edgePick = await page.evaluate(([x, y]) => {
+    const v = window.hexdual.view;
+    for (let dx = 0; dx < 60; dx++) {
+      const pick = v.pickAt(x + dx, y);
+      if (pick && pick.kind === 'edge') return { pick, x: x + dx, y };
+    }
+    return null;
+  }, [p.x, p.y]);
+  assert.ok(edgePick, 'an edge is pickable near the side of a face');
+  await page.mouse.click(edgePick.x, edgePick.y);
+  const sel = (await state()).selection;
+  assert.equal(sel.kind, 'edge');
+  assert.match(hash(), new RegExp(`sel=h${sel.hex}e${sel.edge}`));
+  await page.evaluate(() => window.hexdual.actions.apply('pillow h13f5'));
+  assert.deepEqual((await state()).selection, sel);
+});
+
+test('a malformed URL says what it ignored, parameter by parameter', async () => {
+  await open('#mesh=grid:3x3x3&sheet=999&at=x&foo=1&cam=1,2&steps=v1;pillow%20h13f5;hexpush%20h0f0&diag=77');
+  const err = await page.locator('#error').textContent();
+  assert.match(err, /ignored sheet=999: there are 10 sheets \(0\.\.9\)/);
+  assert.match(err, /ignored at=x: expected a step number/);
+  assert.match(err, /ignored foo=1: unknown parameter/);
+  assert.match(err, /ignored cam=1,2: expected six numbers/);
+  assert.match(err, /ignored steps from step 2 \(hexpush h0f0\): hexpush: quad h0f0 is on the boundary/i);
+  assert.match(err, /ignored diag=77: there are \d+ sheets/);
+  assert.equal((await shownCounts()).hexes, 29);
+  await open('#mesh=cube:zz&sel=h999');
+  assert.match(await page.locator('#error').textContent(), /ignored mesh=cube:zz/);
+  assert.match(await page.locator('#error').textContent(), /ignored sel=h999: hex 999 does not exist/);
+});
+
+test('a sheet diagram: opens from the list, zooms with the wheel, labels appear, a crossing selects its hex in 3D', async () => {
+  await open('#mesh=grid:6x6x3');
+  await page.locator('#sheets .row-item[data-id="0"]').click();
+  const svg = page.locator('.diagram[data-sheet="0"] svg');
+  await svg.waitFor();
+  const n = await svg.locator('.crossing').count();
+  assert.ok(n >= 18);
+  const zoom0 = Number(await page.locator('.diagram[data-sheet="0"]').getAttribute('data-zoom'));
+  const box = await svg.boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  for (let i = 0; i < 6; i++) await page.mouse.wheel(0, -200);
+  await settle();
+  const zoom1 = Number(await page.locator('.diagram[data-sheet="0"]').getAttribute('data-zoom'));
+  assert.ok(zoom1 > 2 * zoom0, `zoomed from ${zoom0} to ${zoom1}`);
+  assert.equal(await page.locator('.diagram[data-sheet="0"]').getAttribute('data-labels'), 'shown');
+  // The crossing nearest the panel's centre (the wheel zoomed in there).
+  const { hex, x, y } = await page.evaluate(() => {
+    const svg = document.querySelector('.diagram[data-sheet="0"] svg').getBoundingClientRect();
+    let best = null;
+    for (const c of document.querySelectorAll('.diagram[data-sheet="0"] .crossing')) {
+      const r = c.getBoundingClientRect();
+      const x = r.x + r.width / 2, y = r.y + r.height / 2;
+      const d = Math.hypot(x - (svg.x + svg.width / 2), y - (svg.y + svg.height / 2));
+      if (!best || d < best.d) best = { d, x, y, hex: Number(c.dataset.hex) };
+    }
+    return best;
+  });
+  await page.mouse.click(x, y);
+  assert.deepEqual((await state()).selection, { kind: 'hex', hex });
+  assert.match(hash(), new RegExp(`sel=h${hex}&diag=0`));
+  await page.screenshot({ path: join(screenshotDir, 'explorer-diagram.png') });
+  // Two diagrams side by side: the sheets through the selected hex.
+  await page.click('#open-sheets');
+  assert.ok((await page.locator('.diagram').count()) >= 2);
+  await page.screenshot({ path: join(screenshotDir, 'explorer-diagrams.png') });
+});
+
+test('dual overlay, quality colouring with a histogram, slicing plane', async () => {
+  await open('#mesh=grid:3x3x3&steps=v1;pillow%20h13f5&overlay=1&color=quality&slice=y:0.5');
+  assert.equal(await page.evaluate(() => window.hexdual.view.overlayShown), true);
+  assert.match(await page.locator('#quality-summary').textContent(), /29 hexes · 1 inverted: h28/);
+  await page.screenshot({ path: join(screenshotDir, 'explorer-overlay.png') });
+});
+
+test('drop a file on the page: it loads, the URL says it is local, and .hxd + steps is offered', async () => {
+  await open('#mesh=grid:3x3x3');
+  const file = '/tmp/hexdual_browser_drop.hxd';
+  cli('grid', '2x2x2', '-o', file);
+  const text = readFileSync(file, 'utf8');
+  await page.evaluate((text) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([text], 'cube8.hxd'));
+    for (const type of ['dragenter', 'dragover', 'drop']) document.body.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true }));
+  }, text);
+  await page.waitForFunction(() => window.hexdual.store.get().mesh.counts.hexes === 8);
+  assert.match(hash(), /mesh=file:cube8\.hxd/);
+  assert.match(await page.locator('#notice').textContent(), /cube8\.hxd is a local file/);
+  assert.ok(await page.locator('#exports button', { hasText: 'download .hxd + steps' }).isVisible());
+  // PNG export carries the page URL in a tEXt chunk.
+  const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#exports button', { hasText: 'PNG' }).click()]);
+  const png = readFileSync(await download.path());
+  assert.deepEqual([...png.subarray(1, 4)], [0x50, 0x4e, 0x47]);
+  const pngText = png.toString('latin1');
+  const at = pngText.indexOf('tEXthexdual-url\0');
+  assert.ok(at > 0, 'a tEXt chunk named hexdual-url');
+  assert.ok(pngText.slice(at + 16).startsWith(page.url()));
+  // Every writable format downloads.
+  for (const [label, head] of [['VTK', '# vtk DataFile'], ['Medit .mesh', 'MeshVersionFormatted']]) {
+    const [d] = await Promise.all([page.waitForEvent('download'), page.locator('#exports button', { hasText: label }).first().click()]);
+    assert.ok(readFileSync(await d.path(), 'latin1').startsWith(head), label);
+  }
+});
+
+test('flips view: step through the 3-5e decomposition with before and after', async () => {
+  await open('#view=flips');
+  const flips = await page.evaluate(() => window.hexdual.actions.flips.filter((f) => f.steps).map((f) => f.name));
+  const name = flips.includes('3-5e') ? '3-5e' : flips[0];
+  await page.selectOption('#flip-name', name);
   await page.click('#flip-load');
-  assert.equal((await shownCounts()).hexes, 8);
-  assert.equal((await shownCounts()).boundaryQuads, 0);
-  assert.match(await page.locator('#flip-status').textContent(), /1-7: 0 of 2 steps applied — next: pillow h0f1/);
-  await page.click('#flip-step');
-  assert.equal((await shownCounts()).hexes, 10);
-  await page.click('#flip-step');
-  assert.equal((await shownCounts()).hexes, 14);  // 7 host cubes + the 7 that replace cube 0
-  assert.match(await page.locator('#flip-status').textContent(), /2 of 2 steps applied — the after side/);
-  assert.ok(await page.locator('#flip-step').isDisabled());
-  assert.match(decodeURIComponent(page.url()), /mesh=fourcube&ops=v1;pillow[+ ]h0f1;hexpush[+ ]h0f1/);
-  assert.ok(await page.locator('#flip-name option[value="4-4v"]').isDisabled());
-  await page.waitForTimeout(300);
-  await page.screenshot({ path: join(screenshotDir, 'demo-flip.png') });
+  const total = (await state()).steps.length;
+  assert.ok(total >= 1);
+  assert.match(await page.locator('#flip-status').textContent(), new RegExp(`before side; ${total} steps`));
+  await page.screenshot({ path: join(screenshotDir, 'explorer-flip-before.png') });
+  for (let i = 1; i <= total; i++) {
+    await page.keyboard.press('ArrowRight');
+    assert.equal((await state()).at, i);
+    assert.match(await page.locator('#flip-status').textContent(), new RegExp(`step ${i} of ${total}`));
+  }
+  assert.match(await page.locator('#flip-status').textContent(), /the after side/);
+  await settle();
+  await page.screenshot({ path: join(screenshotDir, 'explorer-flip-after.png') });
+  await page.keyboard.press('ArrowLeft');
+  assert.equal((await state()).at, total - 1);
+});
+
+test('phone width: the page stacks and still shows the mesh', async () => {
+  await page.setViewportSize({ width: 375, height: 812 });
+  await open('#mesh=grid:3x3x3&steps=v1;pillow%20h13f5&sel=s9&diag=9');
+  await page.screenshot({ path: join(screenshotDir, 'explorer-phone.png'), fullPage: true });
+  assert.equal((await shownCounts()).hexes, 29);
+  await page.setViewportSize({ width: 1200, height: 760 });
+  assert.deepEqual(errors, []);
 });

@@ -1,0 +1,52 @@
+// Explorer load and frame times in headless Chromium (software GL, SwiftShader): time from
+// navigation to the first drawn frame, the time to select a sheet (colours only, no geometry), a
+// camera-move frame, and a hover pick. Usage: node bench/explorer_browser.mjs [grid dims ...]
+// (needs the web build: npx vite build web).
+import { startServer, startBrowser } from '../tests/browser/harness.mjs';
+
+const sizes = process.argv.slice(2).length ? process.argv.slice(2) : ['10x10x10', '30x30x30', '47x47x47'];
+const server = await startServer();
+const context = await startBrowser();
+const page = await context.newPage();
+try {
+  console.log('| mesh | hexes | navigation to first frame (ms) | wasm init (ms) | mesh + all views (ms) | of which 3D geometry (ms) | select a sheet, to next frame (ms) | colour update, CPU (ms) | camera frame, CPU (ms) | pick (ms) |');
+  console.log('| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
+  for (const dims of sizes) {
+    await page.goto('about:blank');
+    const t0 = Date.now();
+    await page.goto(`${server.url}#mesh=grid:${dims}`);
+    await page.waitForFunction(() => window.hexdual?.ready === true && window.hexdual.view.frames > 0, null, { timeout: 120000 });
+    const load = Date.now() - t0;
+    const r = await page.evaluate(async () => {
+      const { view, actions, store } = window.hexdual;
+      const frame = () => new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(res)));
+      await frame();
+      const f0 = view.frames;
+      const tm = window.hexdual.timings;
+      let t = performance.now();
+      const v0 = tm.view;
+      actions.select({ kind: 'sheet', id: 1 });
+      const colours = tm.view - v0;
+      await frame();
+      const select = performance.now() - t;
+      actions.select(null);
+      await frame();
+      const c = view.getCamera();
+      t = performance.now();
+      view.setCamera([c[0] * 1.01, c[1], c[2], c[3], c[4], c[5]]);
+      await frame();
+      const camera = view.lastFrameMs;
+      const rect = view.canvas.getBoundingClientRect();
+      t = performance.now();
+      view.pickAt(rect.left + rect.width / 2, rect.top + rect.height / 2);
+      const pick = performance.now() - t;
+      return { hexes: store.get().mesh.counts.hexes, build: view.lastBuildMs, select, colours, camera, pick, frames: view.frames - f0,
+        init: tm.init - tm.start, loaded: tm.loaded - tm.urlStart };
+    });
+    const f = (x) => x.toFixed(0);
+    console.log(`| grid:${dims} | ${r.hexes} | ${load} | ${f(r.init)} | ${f(r.loaded)} | ${f(r.build)} | ${f(r.select)} | ${f(r.colours)} | ${f(r.camera)} | ${f(r.pick)} |`);
+  }
+} finally {
+  await context.close();
+  server.stop();
+}
