@@ -46,6 +46,7 @@ export function createDiagram(container, { onHover } = {}) {
       const t = el('text', { x: c.x + r + 0.01, y: -(c.y + r), 'font-size': font, transform: 'scale(1,-1)' }, g);
       t.textContent = String(c.hex);
     }
+    if (d.note) box.append(Object.assign(document.createElement('p'), { className: 'diagram-note', textContent: d.note }));
   }
 
   return {

@@ -56,13 +56,17 @@ startPage(() => {
     caption: 'A twisted O-grid (the mesh of docs/sheet-diagrams.md): one sheet through every hex twice.',
     onUpdate(f) {
       live('twisted-hexes', f.mesh.counts.hexes);
-      const self = f.mesh.sheets.filter((s) => s.selfIntersecting);
+      const self = f.mesh.sheets.find((s) => s.selfIntersecting);
+      if (!self) return live('self-sheets', 'no self-crossing sheet');
       const m = meshAfter(TWISTED, []);
-      const d = self.length ? m.sheetDiagram(self[0].id) : { crossings: [] };
+      const d = m.sheetDiagram(self.id);
+      const distinct = new Set(m.sheetHexes(self.id)).size;
       m.delete();
       const labels = d.crossings.map((c) => c.hex);
       const twice = new Set(labels.filter((h, k) => labels.indexOf(h) !== k)).size;
-      live('self-sheets', self.length ? `sheet ${self[0].id} has ${labels.length} crossings for ${twice} hexes drawn twice (of ${f.mesh.counts.hexes})` : 'no self-crossing sheet');
+      live('self-sheets', `sheet ${self.id} has ${self.hexes} slots on ${distinct} hexes; its diagram shows ${labels.length} crossings, ${twice} hexes twice`);
+      live('self-topology', self.topology);
+      live('self-method', d.method);
     },
   });
 });

@@ -124,7 +124,10 @@ export function createView(container, { onHover, onPick } = {}) {
       if (closed && pts.length) pts.push(pts[0].clone());
       if (pts.length < 2) continue;
       const g = new THREE.BufferGeometry().setFromPoints(pts);
-      group.add(new THREE.Line(g, new THREE.LineBasicMaterial({ color, linewidth: 2 })));
+      // Drawn over the hexes: chords and dual points live inside them.
+      const line = new THREE.Line(g, new THREE.LineBasicMaterial({ color, depthTest: false, transparent: true }));
+      line.renderOrder = 2;
+      group.add(line);
     }
   }
 
@@ -132,7 +135,9 @@ export function createView(container, { onHover, onPick } = {}) {
     const pos = hexes.flatMap((h) => [model.dual[3 * h], model.dual[3 * h + 1], model.dual[3 * h + 2]]);
     const g = new THREE.BufferGeometry();
     g.setAttribute('position', new THREE.Float32BufferAttribute(pos, 3));
-    group.add(new THREE.Points(g, new THREE.PointsMaterial({ color: 0x111111, size: 7, sizeAttenuation: false })));
+    const points = new THREE.Points(g, new THREE.PointsMaterial({ color: 0x111111, size: 7, sizeAttenuation: false, depthTest: false, transparent: true }));
+    points.renderOrder = 3;
+    group.add(points);
   }
 
   let pickables = [];
