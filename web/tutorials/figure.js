@@ -98,10 +98,19 @@ export function createFigure(root, opts) {
   const state = { stage: opts.start || 0, sheet: null, hot: -1, picked: opts.picked ?? null, mesh: null, model: null };
   let startCounts = null, startMaxId = -1, dual = null;
 
-  const view = createView(view3d, {
-    onHover: (h) => hover(h >= 0 ? state.model.ids[h] : -1),
-    onPick: (h) => opts.pickable && pick(state.model.ids[h]),
+  // The 3D view (a WebGL context) is made when the figure first scrolls into sight: pages with
+  // several figures become interactive sooner.
+  let view = null;
+  const seen = new IntersectionObserver((entries) => {
+    if (!entries.some((e) => e.isIntersecting) || view) return;
+    seen.disconnect();
+    view = createView(view3d, {
+      onHover: (h) => hover(h >= 0 ? state.model.ids[h] : -1),
+      onPick: (h) => opts.pickable && pick(state.model.ids[h]),
+    });
+    if (state.model) draw3d();
   });
+  seen.observe(view3d);
   const diagram = createDiagram(diagramBox, { onHover: (id) => hover(id) });
 
   function created(id) {
@@ -138,9 +147,9 @@ export function createFigure(root, opts) {
     const id = state.model.ids[h];
     if (id === state.hot) return HOT;
     if (id === state.picked) return PICKED;
-    if (state.sheet !== null && dual.bySheet.get(state.sheet)?.includes(id)) return colorFor(state.sheet);
     const extra = opts.emphasis?.(api, id);
     if (extra) return extra;
+    if (state.sheet !== null && dual.bySheet.get(state.sheet)?.includes(id)) return colorFor(state.sheet);
     if (created(id)) return NEW;
     return null;
   }
@@ -172,6 +181,7 @@ export function createFigure(root, opts) {
   }
 
   function draw3d() {
+    if (!view) return;
     view.draw(state.model, {
       colorOf,
       chords: opts.chords === 'none' ? [] : sheetChords(lastDiagram),
@@ -297,7 +307,7 @@ export function createFigure(root, opts) {
     get dual() { return dual; },
     get startCounts() { return startCounts; },
     get diagram() { return lastDiagram; },
-    get canvas() { return view.canvas; },
+    get canvas() { return view?.canvas ?? null; },
     isCreated: created,
     counts() { return { ...state.mesh.counts, ...state.mesh.dualSizes() }; },
     delta() {
@@ -317,7 +327,8 @@ export function createFigure(root, opts) {
       update();
     },
     destroy() {
-      view.destroy();
+      seen.disconnect();
+      view?.destroy();
       state.mesh?.delete();
       state.mesh = null;
       const list = window.tutorial.figures;

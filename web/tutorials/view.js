@@ -109,8 +109,8 @@ export function createView(container, { onHover, onPick } = {}) {
     if (!hexes.length) return [];
     const { g, faces } = hexTriangles(hexes);
     const faint = opacity < 1;
-    const mesh = new THREE.Mesh(g, new THREE.MeshStandardMaterial({
-      vertexColors: true, roughness: 0.75, side: THREE.DoubleSide, transparent: faint, opacity, depthWrite: !faint,
+    const mesh = new THREE.Mesh(g, new THREE.MeshLambertMaterial({
+      vertexColors: true, side: THREE.DoubleSide, transparent: faint, opacity, depthWrite: !faint,
     }));
     group.add(mesh);
     group.add(new THREE.LineSegments(hexEdges(hexes), new THREE.LineBasicMaterial({ color: 0x334455, transparent: true, opacity: faint ? 0.25 : 0.6 })));
