@@ -16,6 +16,7 @@
 #include "dual/dual.hpp"
 #include "dual/dual_tracker.hpp"
 #include "layout/sheet_diagram.hpp"
+#include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
 
 using namespace hexdual;
@@ -94,7 +95,7 @@ static int benchOps(int n, int reps) {
     Complex::EditLog setupLog;
     if (!k.setup.empty()) {
       OpResult s = applyStep(cx, k.setup);
-      tracker.update(cx, s);
+      tracker.update(cx, s.edits, keepsSheetTopology(s));
       setupLog = s.edits;
     }
     std::string step = k.step;
@@ -115,10 +116,10 @@ static int benchOps(int n, int reps) {
     for (int r = 0; r < reps; ++r) {  // the operation and the incremental dual update (then both undone)
       auto t2 = Clock::now();
       OpResult res = applyStep(cx, step);
-      tracker.update(cx, res);
+      tracker.update(cx, res.edits, keepsSheetTopology(res));
       auto t3 = Clock::now();
       cx.undo(res.edits);
-      tracker.update(cx, touchedHexes(cx, res.edits), DualTracker::keepsSheetTopology(res.op));
+      tracker.update(cx, touchedHexes(cx, res.edits), keepsSheetTopology(res));
       withDual.push_back(ms(t3 - t2));
     }
     if (!k.setup.empty()) {
@@ -153,7 +154,7 @@ static int benchThroughput(int n, int steps) {
     ++attempted;
     try {
       OpResult r = applyStep(cx, text);
-      tracker.update(cx, r);
+      tracker.update(cx, r.edits, keepsSheetTopology(r));
       ++applied;
     } catch (const Error&) {
     }

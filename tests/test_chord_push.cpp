@@ -3,6 +3,7 @@
 #include "complex/builders.hpp"
 #include "complex/canonical.hpp"
 #include "helpers.hpp"
+#include "ops/oplog.hpp"
 #include "ops/ops.hpp"
 
 using namespace hexdual;
@@ -57,19 +58,19 @@ TEST_CASE("chord push on opposite quads of the cycle (f, g not consecutive)") {
   cx.validate();
   CHECK(r.createdHexes.size() == 2);
   // The inverse text replays.
-  CHECK(r.inverse == "chordpull h27");
+  CHECK(formatOpStep(r.inverse.value()) == "chordpull h27");
 }
 
 TEST_CASE("chord push rejects boundary edges, quads off the cycle and equal quads, untouched") {
   Complex cx = makeGrid(3, 3, 3);
   std::string before = stateDump(cx);
   CHECK(errorOf([&] { chordPush(cx, {0, 0}, {0, 1}, {0, 3}); }) ==
-        "chordPush: edge h0e0 is on the boundary; it needs a closed cycle of hexes");
+        "chordpush: edge h0e0 is on the boundary; it needs a closed cycle of hexes");
   CHECK(errorOf([&] { chordPush(cx, kCentreEdge, {13, 1}, {0, 1}); }) ==
-        "chordPush: quad h0f1 is not in the cycle around edge h13e11");
+        "chordpush: quad h0f1 is not in the cycle around edge h13e11");
   CHECK(errorOf([&] { chordPush(cx, kCentreEdge, {13, 1}, {14, 0}); }) ==
-        "chordPush: f and g are the same quad; chord push needs two distinct quads");
-  CHECK(errorOf([&] { chordPull(cx, 13); }) == "chordPull: hex 13 is not half of a blind chord (no hex shares exactly 4 quads with it)");
+        "chordpush: f and g are the same quad; chord push needs two distinct quads");
+  CHECK(errorOf([&] { chordPull(cx, 13); }) == "chordpull: hex 13 is not half of a blind chord (no hex shares exactly 4 quads with it)");
   CHECK(stateDump(cx) == before);
 }
 
@@ -94,7 +95,7 @@ TEST_CASE("hex push at the centre of a 3x3x3 grid: the 2-6 flip") {
   int ring4 = 0;
   for (const Chord& c : d1.chords) ring4 += c.closed && c.slots.size() == 4;
   CHECK(ring4 == 1);
-  CHECK(r.inverse == "hexpull h27f5");
+  CHECK(formatOpStep(r.inverse.value()) == "hexpull h27f5");
   OpResult u = hexPull(cx, {27, 5});
   cx.validate();
   CHECK(u.dV == -4);
@@ -133,8 +134,8 @@ TEST_CASE("hex push rejects hexes sharing more than one quad, untouched") {
   Complex cx = makeGrid(3, 3, 3);
   pillow(cx, {13, 5});
   std::string before = stateDump(cx);
-  CHECK(errorOf([&] { hexPush(cx, {27, 5}); }) == "hexPush: hexes 27 and 28 share 5 quads; hex push needs exactly one");
-  CHECK(errorOf([&] { hexPush(cx, {0, 0}); }) == "hexPush: quad h0f0 is on the boundary; hex push needs an interior quad");
-  CHECK(errorOf([&] { hexPull(cx, {13, 5}); }).rfind("hexPull: ", 0) == 0);
+  CHECK(errorOf([&] { hexPush(cx, {27, 5}); }) == "hexpush: hexes 27 and 28 share 5 quads; hex push needs exactly one");
+  CHECK(errorOf([&] { hexPush(cx, {0, 0}); }) == "hexpush: quad h0f0 is on the boundary; hex push needs an interior quad");
+  CHECK(errorOf([&] { hexPull(cx, {13, 5}); }).rfind("hexpull: ", 0) == 0);
   CHECK(stateDump(cx) == before);
 }

@@ -180,15 +180,15 @@ TEST_CASE("search finds the paper's decompositions: 2-6 is one hex push, 1-7 is 
   o.maxDepth = 3;
   SearchResult r26 = searchDecomposition(flipProblem("2-6"), o);
   CHECK(r26.found);
-  CHECK(r26.steps == std::vector<std::string>{"hexpush h0f0"});
+  CHECK(formatOpLog({1, r26.steps}) == "v1;hexpush h0f0");
   SearchResult r17 = searchDecomposition(flipProblem("1-7"), o);
   CHECK(r17.found);
   REQUIRE(r17.steps.size() == 2);
-  CHECK(r17.steps[0].rfind("pillow ", 0) == 0);
-  CHECK(r17.steps[1].rfind("hexpush ", 0) == 0);
+  CHECK(r17.steps[0].op == OpKind::Pillow);
+  CHECK(r17.steps[1].op == OpKind::HexPush);
   // A search that cannot succeed stops at its depth and says so.
   o.maxDepth = 2;
-  o.ops = {"chordpush", "chordpull"};
+  o.ops = {OpKind::ChordPush, OpKind::ChordPull};
   SearchResult none = searchDecomposition(flipProblem("2-6"), o);
   CHECK_FALSE(none.found);
   CHECK(none.depthSearched == 2);
@@ -198,9 +198,9 @@ TEST_CASE("search finds the paper's decompositions: 2-6 is one hex push, 1-7 is 
 
 TEST_CASE("a wrong decomposition is caught by verification") {
   SearchProblem pb = flipProblem("1-7");
-  CHECK(contains(errorOf([&] { verifyDecomposition(pb, {"pillow h0f1"}); }),
+  CHECK(contains(errorOf([&] { verifyDecomposition(pb, {parseOpStep("pillow h0f1")}); }),
                  "verify 1-7: the result is not isomorphic to the flip's after side"));
-  CHECK(contains(errorOf([&] { verifyDecomposition(pb, {"hexpush h0f1"}); }), "verify 1-7: step 1 is not local: host hex"));
+  CHECK(contains(errorOf([&] { verifyDecomposition(pb, {parseOpStep("hexpush h0f1")}); }), "verify 1-7: step 1 is not local: host hex"));
 }
 
 TEST_CASE("the (2,1)-(1,2) flip by the paper's recipe: two hex pushes, a ring collapse; 5 region sheets become 4") {

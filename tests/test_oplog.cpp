@@ -3,6 +3,7 @@
 #include "complex/builders.hpp"
 #include "complex/canonical.hpp"
 #include "helpers.hpp"
+#include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
 
 using namespace hexdual;
@@ -49,7 +50,7 @@ TEST_CASE("apply: all steps, or stop at step k with the complex as after k-1") {
   dumpAfterStep1 = stateDump(probe);
   ApplyReport bad = applyLog(cx, "v1;pillow h0f1;hexpush h0f0;pillow h1f1");
   CHECK(bad.failedStep == 2);
-  CHECK(bad.error == "hexPush: quad h0f0 is on the boundary; hex push needs an interior quad");
+  CHECK(bad.error == "hexpush: quad h0f0 is on the boundary; hex push needs an interior quad");
   CHECK(bad.results.size() == 1);
   CHECK(stateDump(cx) == dumpAfterStep1);
   ApplyReport parse = applyLog(cx, "v1;pillow h0");
@@ -80,4 +81,32 @@ TEST_CASE("replaying a log is deterministic: same ids, same canonical hash, ever
         "undo: the complex has changed since that operation; undo the later ones first");
   for (auto it = r.results.rbegin(); it != r.results.rend(); ++it) cx.undo(it->edits);
   CHECK(stateDump(cx) == grid);
+}
+
+TEST_CASE("op table: one row per operation; typed steps with a wrong argument count or kind are errors, not UB") {
+  // The table is in OpKind order and every name and URL letter maps back to its row.
+  for (size_t k = 0; k < allOps().size(); ++k) {
+    const OpInfo& op = allOps()[k];
+    CHECK(op.kind == OpKind(k));
+    CHECK(findOp(op.name) == &op);
+    CHECK(findOpByUrlCode(op.urlCode) == &op);
+  }
+  CHECK(allOps().size() == 10);
+  Complex cx = makeGrid(3, 3, 3);
+  const std::string grid = stateDump(cx);
+  CHECK(errorOf([&] { applyStep(cx, OpStep{OpKind::Pillow, {}}); }) == "pillow: takes 1 argument(s), not 0");
+  CHECK(errorOf([&] { applyStep(cx, makeStep(OpKind::ChordPush, EdgeRef{13, 11}, QuadSide{13, 1})); }) ==
+        "chordpush: takes 3 argument(s), not 2");
+  CHECK(errorOf([&] { applyStep(cx, makeStep(OpKind::Unpillow, QuadSide{13, 1})); }) ==
+        "unpillow: argument 1 must be a hex (h12), not 'h13f1'");
+  CHECK(errorOf([&] { applyStep(cx, OpStep{OpKind::RingSplit, {}}); }) == "ringsplit: takes one or more argument(s), not 0");
+  CHECK(errorOf([&] { applyStep(cx, makeStep(OpKind::RingSplit, QuadSide{13, 1})); }) ==
+        "ringsplit: argument 1 must be a quad pair (h1f2/h3f4), not 'h13f1'");
+  CHECK(errorOf([&] { applyStep(cx, OpStep{OpKind(200), {}}); }) == "oplog: unknown operation (kind 200)");
+  CHECK(stateDump(cx) == grid);
+  // An unknown operation in a typed log is an error in the URL encoder too.
+  CHECK(errorOf([] { encodeOpLogUrl({1, {OpStep{OpKind(99), {}}}}); }) == "oplog: unknown operation (kind 99)");
+  // Typed steps format with the one entity spelling.
+  CHECK(formatOpStep(makeStep(OpKind::ChordPush, EdgeRef{4, 7}, QuadSide{4, 2}, QuadSide{9, 0})) == "chordpush h4e7 h4f2 h9f0");
+  CHECK(parseOpStep("ringsplit h1f2/h3f4") == OpStep{OpKind::RingSplit, {OpArg::of(QuadSide{1, 2}, QuadSide{3, 4})}});
 }

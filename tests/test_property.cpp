@@ -13,6 +13,7 @@
 #include "complex/canonical.hpp"
 #include "dual/dual_tracker.hpp"
 #include "helpers.hpp"
+#include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
 #include "ops/support.hpp"
 
@@ -81,16 +82,18 @@ void runSequence(const Complex& start, uint32_t seed, Stats& stats) {
       continue;
     }
     ++stats.applied;
-    ++stats.perOp[r.op];
-    if (std::getenv("HEXDUAL_PROPERTY_TRACE")) std::fprintf(stderr, "seed %u step %d: %s -> %s\n", seed, step, text.c_str(), r.inverse.c_str());
+    ++stats.perOp[opName(r.op.value())];
+    const std::string inverse = r.inverse ? formatOpStep(*r.inverse) : "(none: " + r.noInverse + ")";
+    if (std::getenv("HEXDUAL_PROPERTY_TRACE")) std::fprintf(stderr, "seed %u step %d: %s -> %s\n", seed, step, text.c_str(), inverse.c_str());
     cx.validate();
-    tracker.update(cx, r);
+    tracker.update(cx, r.edits, keepsSheetTopology(r));
     validateDual(cx, tracker.dual());
     compareDuals(cx, tracker.dual(), extractDual(cx));
     // The inverse operation, on a copy, gives back an isomorphic complex.
-    if (!r.inverse.empty()) {
+    if (r.inverse) {
+      CAPTURE(inverse);
       Complex back = cx;
-      applyStep(back, r.inverse);
+      applyStep(back, *r.inverse);
       back.validate();
       REQUIRE(isomorphic(back, before));
       ++stats.inverses;
@@ -101,7 +104,7 @@ void runSequence(const Complex& start, uint32_t seed, Stats& stats) {
   std::string startDump = stateDump(start);
   for (auto it = done.rbegin(); it != done.rend(); ++it) {
     cx.undo(it->edits);
-    tracker.update(cx, touchedHexes(cx, it->edits), DualTracker::keepsSheetTopology(it->op));
+    tracker.update(cx, it->edits, keepsSheetTopology(*it));
   }
   CAPTURE(seed);
   REQUIRE(stateDump(cx) == startDump);
@@ -125,7 +128,7 @@ TEST_CASE("property: random operation sequences on grids and rings") {
                        << ": " << stats.applied << " steps applied, " << stats.rejected << " rejected, " << stats.inverses
                        << " inverses checked;" << perOp);
   CHECK(stats.applied > sequences);
-  for (const char* op : {"pillow", "unpillow", "chordPush", "chordPull", "hexPush", "hexPull", "ringCollapse", "faceCollapse"}) {
+  for (const char* op : {"pillow", "unpillow", "chordpush", "chordpull", "hexpush", "hexpull", "ringcollapse", "facecollapse"}) {
     CAPTURE(op);
     CHECK(stats.perOp[op] > 0);
   }

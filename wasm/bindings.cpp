@@ -78,7 +78,7 @@ class WasmMesh {
     return guarded(
         [&] {
           OpResult r = hexdual::applyStep(cx_, step);
-          return r.inverse.empty() ? std::string("-") : r.inverse;
+          return r.inverse ? formatOpStep(*r.inverse) : std::string("-");
         },
         std::string());
   }
@@ -159,7 +159,7 @@ std::string flipsJson() {
             if (d.problem == fc.name && d.found) found = &d;
           if (found) {
             w.beginArray();
-            for (const auto& s : found->steps) w.value(s);
+            for (const auto& s : found->steps) w.value(formatOpStep(s));
             w.endArray();
           } else {
             w.raw("null");

@@ -16,7 +16,9 @@
 #include "flips/fourcube.hpp"
 #include "flips/search.hpp"
 #include "ops/candidates.hpp"
+#include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
+#include "ops/report.hpp"
 #include "io/io.hpp"
 #include "io/json.hpp"
 #include "layout/sheet_diagram.hpp"
@@ -135,13 +137,6 @@ OpLog readLog(const std::string& arg) {
   return parseOpLog(text);
 }
 
-std::string idList(const std::vector<int32_t>& v) {
-  std::string s = "[";
-  for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + std::to_string(v[i]);
-  return s + "]";
-}
-std::string signedNum(int64_t x) { return (x > 0 ? "+" : "") + std::to_string(x); }
-
 int runApply(const Args& a) {
   need(a, 1, "one input file");
   if (a.ops.empty()) throw Error("apply needs --ops LOG");
@@ -149,46 +144,19 @@ int runApply(const Args& a) {
   Complex cx = io::readFile(a.positional[0]);
   OpLog log = readLog(a.ops);
   DualTracker tracker(cx);
-  io::JsonWriter w;
-  w.beginObject().key("steps").beginArray();
+  std::vector<StepReport> reports;
   std::string text;
   for (size_t k = 0; k < log.steps.size(); ++k) {
-    Counts before = cx.counts();
-    OpResult r;
     try {
-      r = applyStep(cx, log.steps[k]);
+      reports.push_back(applyStepTracked(cx, tracker, log.steps[k]));
     } catch (const Error& e) {
       throw Error("step " + std::to_string(k + 1) + " (" + formatOpStep(log.steps[k]) + "): " + e.what() +
                   "; nothing was written");
     }
-    Counts after = cx.counts();
-    DualChange ch = tracker.update(cx, r);
-    int64_t dV = after.vertices - before.vertices, dE = after.edges - before.edges, dF = after.quads - before.quads,
-            dH = after.hexes - before.hexes;
-    std::string stepText = formatOpStep(log.steps[k]);
-    w.beginObject().key("step").value(int64_t(k + 1)).key("op").value(log.steps[k].op).key("text").value(stepText);
-    w.key("createdHexes").raw(idList(r.createdHexes)).key("removedHexes").raw(idList(r.removedHexes));
-    w.key("createdVertices").raw(idList(r.createdVertices)).key("removedVertices").raw(idList(r.removedVertices));
-    w.key("delta").beginObject().key("V").value(dV).key("E").value(dE).key("F").value(dF).key("H").value(dH).endObject();
-    w.key("sheets").beginObject().key("created").raw(idList(ch.sheetsCreated)).key("removed").raw(idList(ch.sheetsRemoved));
-    w.key("changed").raw(idList(ch.sheetsChanged)).endObject();
-    w.key("chords").beginObject().key("created").raw(idList(ch.chordsCreated)).key("removed").raw(idList(ch.chordsRemoved));
-    w.key("changed").raw(idList(ch.chordsChanged)).endObject();
-    w.key("inverse").value(r.inverse).endObject();
-    text += "step " + std::to_string(k + 1) + ": " + stepText + "\n";
-    text += "  hexes created " + idList(r.createdHexes) + " removed " + idList(r.removedHexes) + "; vertices created " +
-            idList(r.createdVertices) + " removed " + idList(r.removedVertices) + "\n";
-    text += "  delta (V,E,F,H) = (" + signedNum(dV) + "," + signedNum(dE) + "," + signedNum(dF) + "," + signedNum(dH) + ")\n";
-    text += "  sheets created " + idList(ch.sheetsCreated) + " removed " + idList(ch.sheetsRemoved) + " changed " +
-            idList(ch.sheetsChanged) + "; chords created " + idList(ch.chordsCreated) + " removed " +
-            idList(ch.chordsRemoved) + " changed " + idList(ch.chordsChanged) + "\n";
-    text += "  inverse: " + (r.inverse.empty() ? std::string("(none; use undo)") : r.inverse) + "\n";
+    text += io::stepReportText(reports.back(), k + 1);
   }
-  Counts c = cx.counts();
-  w.endArray().key("counts").beginObject().key("vertices").value(c.vertices).key("edges").value(c.edges);
-  w.key("quads").value(c.quads).key("hexes").value(c.hexes).endObject().endObject();
   io::writeFile(cx, a.output, a.binary);
-  std::cout << (a.json ? w.str() + "\n" : text);
+  std::cout << (a.json ? io::applyReportJson(reports, cx) + "\n" : text);
   return 0;
 }
 
@@ -200,51 +168,34 @@ std::vector<std::string> splitList(const std::string& s) {
   return out;
 }
 
-std::string countsText(const Counts& c) {
-  return "(" + std::to_string(c.vertices) + "," + std::to_string(c.edges) + "," + std::to_string(c.quads) + "," +
-         std::to_string(c.hexes) + ")";
+// Hex ids from "12,13" or "h12,h13" (option `what` names the option in the error).
+std::vector<HexId> parseHexList(const std::string& s, const std::string& what) {
+  std::vector<HexId> out;
+  for (const std::string& x : splitList(s)) {
+    try {
+      size_t used = 0;
+      std::string t = !x.empty() && x[0] == 'h' ? x.substr(1) : x;
+      out.push_back(std::stoi(t, &used));
+      if (used != t.size()) throw Error("");
+    } catch (const std::exception&) {
+      throw Error(what + " takes hex ids like 12,13 or h12,h13, not '" + x + "'");
+    }
+  }
+  return out;
 }
 
-const StoredDecomposition* storedFor(const std::string& name) {
-  for (const auto& d : storedDecompositions())
-    if (d.problem == name) return &d;
-  return nullptr;
+OpKind opNamed(const std::string& name, const std::string& context) {
+  const OpInfo* op = findOp(name);
+  if (!op) throw Error(context + ": unknown operation '" + name + "'");
+  return op->kind;
 }
 
 int runFlip(const Args& a) {
   if (a.positional.empty()) throw Error("flip needs a subcommand or a flip name (see --help)");
   const std::string sub = a.positional[0];
   if (sub == "list") {
-    io::JsonWriter w;
-    w.beginArray();
-    for (const FlipClass& fc : enumerateFlipClasses()) {
-      const StoredDecomposition* d = storedFor(fc.name);
-      Counts b = fc.interiorBefore, f = fc.interiorAfter;
-      Counts dl{f.vertices - b.vertices, f.edges - b.edges, f.quads - b.quads, f.hexes - b.hexes, 0, 0, 0};
-      if (a.json) {
-        w.beginObject().key("name").value(fc.name).key("inverse").value(fc.inverse);
-        w.key("before").raw("[" + std::to_string(b.vertices) + "," + std::to_string(b.edges) + "," + std::to_string(b.quads) + "," + std::to_string(b.hexes) + "]");
-        w.key("after").raw("[" + std::to_string(f.vertices) + "," + std::to_string(f.edges) + "," + std::to_string(f.quads) + "," + std::to_string(f.hexes) + "]");
-        w.key("geometric").value(fc.geometric).key("decomposition");
-        if (d && d->found) {
-          std::string log = "v1";
-          for (const auto& s : d->steps) log += ";" + s;
-          w.value(log);
-        } else {
-          w.raw("null");
-        }
-        w.endObject();
-      } else {
-        std::cout << fc.name << "  before " << countsText(b) << " -> after " << countsText(f) << "  delta " << countsText(dl)
-                  << "  " << (fc.geometric ? "geometric" : "not geometric") << "  ";
-        if (d && d->found) std::cout << d->steps.size() << " atomic steps";
-        else if (d) std::cout << "no decomposition up to depth " << d->depthSearched << " (" << d->states << " states)";
-        else std::cout << "not searched";
-        std::cout << "\n";
-      }
-    }
-    w.endArray();
-    if (a.json) std::cout << w.str() << "\n";
+    std::vector<FlipSummary> flips = flipSummaries();
+    std::cout << (a.json ? io::flipListJson(flips) + "\n" : io::flipListText(flips));
     return 0;
   }
   if (sub == "verify") {
@@ -291,7 +242,7 @@ int runFlip(const Args& a) {
     o.maxDepth = a.maxDepth;
     o.maxSeconds = a.maxSeconds;
     o.maxStates = a.maxStates;
-    if (!a.ops.empty()) o.ops = splitList(a.ops);
+    for (const std::string& op : splitList(a.ops)) o.ops.push_back(opNamed(op, "flip search --ops"));
     std::string name = a.positional[1];
     SearchProblem pb = problemFor(name);
     SearchResult r = searchDecomposition(pb, o);
@@ -306,15 +257,7 @@ int runFlip(const Args& a) {
   need(a, 2, "flip NAME --at H1,H2,... FILE -o OUT");
   if (a.at.empty()) throw Error("flip needs --at H1,H2,...");
   if (a.output.empty()) throw Error("flip needs -o OUT");
-  std::vector<HexId> hexes;
-  for (const std::string& x : splitList(a.at)) {
-    std::string t = x[0] == 'h' ? x.substr(1) : x;
-    try {
-      hexes.push_back(std::stoi(t));
-    } catch (const std::exception&) {
-      throw Error("--at takes hex ids like 12,13 or h12,h13, not '" + x + "'");
-    }
-  }
+  std::vector<HexId> hexes = parseHexList(a.at, "--at");
   Complex cx = io::readFile(a.positional[1]);
   const std::string name = a.positional[0];
   flipClass(name);
@@ -322,12 +265,10 @@ int runFlip(const Args& a) {
     const StoredDecomposition* d = storedFor(name);
     if (!d || !d->found) throw Error("flip " + name + " has no stored atomic decomposition (see hexdual flip list)");
     auto steps = replayInEmbedding(problemFor(name), d->steps, cx, hexes, "the mesh");
-    std::string log = "v1";
-    for (const auto& s : steps) log += ";" + s;
-    std::cout << log << "\n";
+    std::cout << formatOpLog({1, steps}) << "\n";
   } else {
     OpResult r = flip(cx, name, hexes);
-    std::cout << "flip " << name << ": hexes created " << idList(r.createdHexes) << " removed " << idList(r.removedHexes) << "\n";
+    std::cout << "flip " << name << ": hexes created " << io::idList(r.createdHexes) << " removed " << io::idList(r.removedHexes) << "\n";
   }
   io::writeFile(cx, a.output, a.binary);
   return 0;
@@ -339,14 +280,7 @@ int runSheets(const Args& a) {
   if (a.sheet < 0 && !a.all) throw Error("sheets needs --sheet ID or --all");
   Complex cx = io::readFile(a.positional[0]);
   Dual dual = extractDual(cx);
-  std::vector<HexId> around;
-  for (const std::string& x : splitList(a.local)) {
-    try {
-      around.push_back(std::stoi(x[0] == 'h' ? x.substr(1) : x));
-    } catch (const std::exception&) {
-      throw Error("--local takes hex ids like 12,13, not '" + x + "'");
-    }
-  }
+  std::vector<HexId> around = parseHexList(a.local, "--local");
   std::vector<int> ids;
   if (a.all) {
     for (const Sheet& s : dual.sheets)
@@ -419,7 +353,7 @@ int run(int argc, char** argv) {
   if (cmd == "candidates") {
     need(a, 2, "an input file and an operation name");
     Complex cx = io::readFile(a.positional[0]);
-    for (const std::string& step : candidates(cx, a.positional[1])) std::cout << step << "\n";
+    for (const OpStep& step : candidates(cx, opNamed(a.positional[1], "candidates"))) std::cout << formatOpStep(step) << "\n";
     return 0;
   }
   throw Error("unknown command '" + cmd + "'\n" + kUsage);

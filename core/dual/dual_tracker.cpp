@@ -45,12 +45,8 @@ DualTracker::DualTracker(const Complex& cx) : dual_(extractDual(cx)) {
   }
 }
 
-bool DualTracker::keepsSheetTopology(const std::string& op) {
-  return op == "pillow" || op == "unpillow" || op == "chordPush" || op == "chordPull" || op == "hexPush" || op == "hexPull";
-}
-
-DualChange DualTracker::update(const Complex& cx, const OpResult& result) {
-  return update(cx, touchedHexes(cx, result.edits), keepsSheetTopology(result.op));
+DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology) {
+  return update(cx, touchedHexes(cx, edits), sheetsKeepTopology);
 }
 
 bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {

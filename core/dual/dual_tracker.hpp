@@ -8,7 +8,6 @@
 
 #include "complex/complex.hpp"
 #include "dual/dual.hpp"
-#include "ops/ops.hpp"
 
 namespace hexdual {
 
@@ -21,16 +20,14 @@ class DualTracker {
  public:
   explicit DualTracker(const Complex& cx);
   const Dual& dual() const { return dual_; }
-  // Brings the dual up to date after `result` was applied to cx.
-  DualChange update(const Complex& cx, const OpResult& result);
+  // Brings the dual up to date after an edit of cx: an operation's OpResult::edits, or the undo
+  // of one. sheetsKeepTopology: the operation never cuts, merges or re-shapes a sheet (the
+  // operation table's flag, keepsSheetTopology(result) in ops/op_table.hpp).
+  DualChange update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology);
   // The same after an arbitrary set of edited hexes (ids of live or removed hexes). With
-  // sheetsKeepTopology (pillow, chord push, hex push, their inverses, and undoing them) new slots
-  // join the sheet they touch and no sheet is re-flooded: the cost is local. A merge of two
-  // sheets, if one is ever found, falls back to re-flooding the sheets involved.
+  // sheetsKeepTopology new slots join the sheet they touch and no sheet is re-flooded: the cost
+  // is local. A merge of two sheets, if one is ever found, falls back to re-flooding the sheets involved.
   DualChange update(const Complex& cx, std::vector<HexId> touched, bool sheetsKeepTopology = false);
-
-  // True for the operations that never cut, merge or re-shape an existing sheet.
-  static bool keepsSheetTopology(const std::string& op);
 
  private:
   bool updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);

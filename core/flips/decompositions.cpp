@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
 
 namespace hexdual {
@@ -33,8 +34,10 @@ std::vector<StoredDecomposition> parseDecompositions(const std::string& text) {
     if (f[1] != "found" && f[1] != "none") throw bad("second field must be 'found' or 'none'");
     d.found = f[1] == "found";
     if (d.found) {
-      OpLog log = parseOpLog(f[2]);
-      for (const OpStep& s : log.steps) d.steps.push_back(formatOpStep(s));
+      for (OpStep& s : parseOpLog(f[2]).steps) {
+        s.position = 0;
+        d.steps.push_back(s);
+      }
     }
     d.maxDepth = std::stoi(f[3]);
     d.depthSearched = std::stoi(f[4]);
@@ -52,17 +55,31 @@ const std::vector<StoredDecomposition>& storedDecompositions() {
 }
 
 std::string formatDecomposition(const std::string& problem, const SearchResult& r, const SearchOptions& o) {
-  std::string steps = "v1";
-  for (const std::string& s : r.steps) steps += ";" + s;
+  const std::string steps = formatOpLog({1, r.steps});
   std::string ops = "all";
   if (!o.ops.empty()) {
     ops.clear();
-    for (const std::string& s : o.ops) ops += (ops.empty() ? "" : ",") + s;
+    for (OpKind k : o.ops) ops += (ops.empty() ? "" : ",") + std::string(opName(k));
   }
   char secs[32];
   std::snprintf(secs, sizeof secs, "%.2f", r.seconds);
   return problem + "|" + (r.found ? "found" : "none") + "|" + (r.found ? steps : "-") + "|" + std::to_string(o.maxDepth) + "|" +
          std::to_string(r.depthSearched) + "|" + std::to_string(r.statesExplored) + "|" + secs + "|" + ops;
+}
+
+const StoredDecomposition* storedFor(const std::string& problem) {
+  for (const auto& d : storedDecompositions())
+    if (d.problem == problem) return &d;
+  return nullptr;
+}
+
+std::vector<FlipSummary> flipSummaries() {
+  std::vector<FlipSummary> out;
+  for (FlipClass& fc : enumerateFlipClasses()) {
+    const StoredDecomposition* d = storedFor(fc.name);
+    out.push_back({std::move(fc), d});
+  }
+  return out;
 }
 
 SearchProblem problemFor(const std::string& name) {

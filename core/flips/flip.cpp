@@ -127,7 +127,6 @@ OpResult flip(Complex& cx, const std::string& name, const std::vector<HexId>& he
   for (HexId h : region) centre = centre + (1.0 / double(region.size())) * cx.hexCentroid(h);
   Transaction tx(cx);
   OpResult res;
-  res.op = "flip";
   std::vector<VertexId> newPattern;
   for (HexId p : after)
     for (VertexId v : pattern.hexVertices(p))
@@ -162,12 +161,8 @@ OpResult flip(Complex& cx, const std::string& name, const std::vector<HexId>& he
   res.removedHexes = region;
   for (VertexId v : oldInterior)
     if (!cx.isVertex(v)) res.removedVertices.push_back(v);
-  std::vector<HexId> touched = res.createdHexes;
-  for (HexId h : res.createdHexes)
-    for (int f = 0; f < 6; ++f)
-      if (!cx.gluing(h, f).boundary()) touched.push_back(cx.gluing(h, f).hex);
-  res.inverse = "flip " + fc.inverse;
-  tx.commit(res, touched);
+  res.noInverse = "a flip, not an atomic step: its inverse is the " + fc.inverse + " flip of the created hexes";
+  tx.commit(res, withNeighbours(cx, res.createdHexes));
   return res;
 }
 
@@ -195,14 +190,13 @@ OpResult pillowRegion(Complex& cx, const std::vector<HexId>& hexes) {
     if (!cx.isHex(h)) reject(op, hexName(h) + " does not exist");
     for (int f = 0; f < 6; ++f) {
       Gluing g = cx.gluing(h, f);
-      if (g.boundary()) reject(op, "quad " + sideName({h, f}) + " of the set is on the mesh boundary");
+      if (g.boundary()) reject(op, "quad " + entityName(QuadSide{h, f}) + " of the set is on the mesh boundary");
       if (!inS(g.hex)) surface.push_back({h, f});
     }
   }
   if (surface.empty()) reject(op, "the set has no outer surface");
   Transaction tx(cx);
   OpResult res;
-  res.op = op;
   std::map<VertexId, VertexId> inner;
   Vec3 centre;
   for (HexId h : S) centre = centre + (1.0 / double(S.size())) * cx.hexCentroid(h);
@@ -232,15 +226,8 @@ OpResult pillowRegion(Complex& cx, const std::vector<HexId>& hexes) {
   }
   res.removedHexes = S;
   res.createdHexes = replaceHexes(cx, op, S, added);
-  std::vector<HexId> touched = res.createdHexes;
-  for (HexId h : res.createdHexes)
-    for (int f = 0; f < 6; ++f)
-      if (!cx.gluing(h, f).boundary()) touched.push_back(cx.gluing(h, f).hex);
-  try {
-    tx.commit(res, touched);
-  } catch (const Error& e) {
-    reject(op, std::string("the set's outer surface is not a manifold (") + e.what() + ")");
-  }
+  std::vector<HexId> touched = withNeighbours(cx, res.createdHexes);
+  tx.commitIfValid(res, touched, op, "the set's outer surface is not a manifold");
   return res;
 }
 
@@ -253,11 +240,11 @@ OpResult tripleChordPush(Complex& cx, HexId hex, int corner, QuadSide q1, QuadSi
   std::array<std::array<VertexId, 4>, 3> qv;
   for (int i = 0; i < 3; ++i) {
     if (!cx.isHex(q[size_t(i)].hex) || q[size_t(i)].face < 0 || q[size_t(i)].face > 5)
-      reject(op, "quad " + sideName(q[size_t(i)]) + " does not exist");
-    if (cx.isBoundary(q[size_t(i)])) reject(op, "quad " + sideName(q[size_t(i)]) + " is on the boundary");
+      reject(op, "quad " + entityName(q[size_t(i)]) + " does not exist");
+    if (cx.isBoundary(q[size_t(i)])) reject(op, "quad " + entityName(q[size_t(i)]) + " is on the boundary");
     qv[size_t(i)] = faceVertexSet(cx, q[size_t(i)].hex, q[size_t(i)].face);
     if (!std::binary_search(qv[size_t(i)].begin(), qv[size_t(i)].end(), v))
-      reject(op, "quad " + sideName(q[size_t(i)]) + " does not contain vertex " + std::to_string(v));
+      reject(op, "quad " + entityName(q[size_t(i)]) + " does not contain vertex " + std::to_string(v));
   }
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < i; ++j)
@@ -268,7 +255,7 @@ OpResult tripleChordPush(Complex& cx, HexId hex, int corner, QuadSide q1, QuadSi
     for (VertexId x : qv[size_t(i)])
       if (x != v && std::binary_search(qv[size_t(j)].begin(), qv[size_t(j)].end(), x)) c.push_back(x);
     if (c.size() != 1)
-      reject(op, "quads " + sideName(q[size_t(i)]) + " and " + sideName(q[size_t(j)]) + " must share exactly one edge at v");
+      reject(op, "quads " + entityName(q[size_t(i)]) + " and " + entityName(q[size_t(j)]) + " must share exactly one edge at v");
     return c[0];
   };
   VertexId p12 = common(0, 1), p13 = common(0, 2), p23 = common(1, 2);
@@ -312,7 +299,6 @@ OpResult tripleChordPush(Complex& cx, HexId hex, int corner, QuadSide q1, QuadSi
   }
   Transaction tx(cx);
   OpResult res;
-  res.op = op;
   Vec3 cIn, cOut;
   for (auto [h, c] : in) cIn = cIn + (1.0 / double(in.size())) * cx.hexCentroid(h);
   Vec3 pv = cx.position(v);
@@ -346,11 +332,7 @@ OpResult tripleChordPush(Complex& cx, HexId hex, int corner, QuadSide q1, QuadSi
   std::vector<HexId> touched{X, Y};
   for (int i = 0; i < 3; ++i) touched.insert(touched.end(), {inSide[size_t(i)].hex, outSide[size_t(i)].hex});
   for (auto [h, c] : all) touched.push_back(h);
-  try {
-    tx.commit(res, touched);
-  } catch (const Error& e) {
-    reject(op, std::string("the result would not be a valid complex (") + e.what() + ")");
-  }
+  tx.commitIfValid(res, touched, op, "the result would not be a valid complex");
   return res;
 }
 

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <deque>
 #include <map>
+#include <optional>
 #include <unordered_map>
 
 #include "complex/builders.hpp"
@@ -121,34 +122,33 @@ struct Node {
   std::vector<int64_t> key;
   Complex cx;
   int parent = -1;      // index in the same side's node list
-  std::string step;     // the step from the parent (ids of the parent's complex)
+  OpStep step;          // the step from the parent (ids of the parent's complex)
   int depth = 0;
 };
 
 // Candidate steps on region hexes (many are rejected by the operation itself).
-std::vector<std::string> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<std::string>& ops) {
-  auto use = [&](const char* op) { return ops.empty() || std::find(ops.begin(), ops.end(), op) != ops.end(); };
-  auto H = [](HexId h) { return "h" + std::to_string(h); };
-  auto Q = [](QuadSide s) { return "h" + std::to_string(s.hex) + "f" + std::to_string(s.face); };
-  std::vector<std::string> out;
+std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<OpKind>& ops) {
+  using K = OpKind;
+  auto use = [&](OpKind op) { return ops.empty() || std::find(ops.begin(), ops.end(), op) != ops.end(); };
+  std::vector<OpStep> out;
   auto region = regionOf(cx, host);
   auto inRegion = [&](HexId h) { return !isHost(host, h); };
   std::vector<QuadSide> seenQuads;
   std::vector<EdgeRef> seenEdges;
   for (HexId h : region) {
-    if (use("unpillow")) out.push_back("unpillow " + H(h));
-    if (use("chordpull")) out.push_back("chordpull " + H(h));
+    if (use(K::Unpillow)) out.push_back(makeStep(K::Unpillow, h));
+    if (use(K::ChordPull)) out.push_back(makeStep(K::ChordPull, h));
     for (int f = 0; f < 6; ++f) {
       Gluing g = cx.gluing(h, f);
       if (g.boundary()) continue;
       QuadSide c = cx.canonical(QuadSide{h, f});
       bool fresh = std::find(seenQuads.begin(), seenQuads.end(), c) == seenQuads.end();
       if (fresh) seenQuads.push_back(c);
-      if (fresh && use("pillow")) out.push_back("pillow " + Q({h, f}));
-      if (fresh && use("hexpush") && inRegion(g.hex)) out.push_back("hexpush " + Q({h, f}));
-      if (use("hexpull") && inRegion(g.hex)) out.push_back("hexpull " + Q({h, f}));
+      if (fresh && use(K::Pillow)) out.push_back(makeStep(K::Pillow, QuadSide{h, f}));
+      if (fresh && use(K::HexPush) && inRegion(g.hex)) out.push_back(makeStep(K::HexPush, QuadSide{h, f}));
+      if (use(K::HexPull) && inRegion(g.hex)) out.push_back(makeStep(K::HexPull, QuadSide{h, f}));
     }
-    if (use("facesplit"))
+    if (use(K::FaceSplit))
       for (int f = 0; f < 6; ++f) {
         Gluing g = cx.gluing(h, f);
         if (g.boundary()) continue;
@@ -160,12 +160,12 @@ std::vector<std::string> moves(const Complex& cx, const std::vector<HexId>& host
             Gluing g2 = cx.gluing(h2, f2);
             // Every choice of sides: the side of sL keeps the vertex ids (host sides must keep theirs).
             for (QuadSide a : {QuadSide{h, f}, QuadSide{g.hex, g.face}})
-              for (QuadSide b : {QuadSide{h2, f2}, QuadSide{g2.hex, g2.face}}) out.push_back("facesplit " + Q(a) + " " + Q(b));
+              for (QuadSide b : {QuadSide{h2, f2}, QuadSide{g2.hex, g2.face}}) out.push_back(makeStep(K::FaceSplit, a, b));
           }
       }
     for (int e = 0; e < 12; ++e) {
-      if (use("ringcollapse") && (e & 2) == 0) out.push_back("ringcollapse " + H(h) + "e" + std::to_string(e));
-      if (!use("chordpush") && !use("facecollapse")) continue;
+      if (use(K::RingCollapse) && (e & 2) == 0) out.push_back(makeStep(K::RingCollapse, EdgeRef{h, e}));
+      if (!use(K::ChordPush) && !use(K::FaceCollapse)) continue;
       EdgeRef ce = cx.canonical(EdgeRef{h, e});
       if (std::find(seenEdges.begin(), seenEdges.end(), ce) != seenEdges.end()) continue;
       seenEdges.push_back(ce);
@@ -178,10 +178,9 @@ std::vector<std::string> moves(const Complex& cx, const std::vector<HexId>& host
       for (size_t i = 0; i < n; ++i)
         for (size_t j = i + 1; j < n; ++j) {
           if (!touches(i) || !touches(j)) continue;
-          std::string args = " " + H(ce.hex) + "e" + std::to_string(ce.edge) + " " + Q({st.inc[i].hex, st.exitFace[i]}) + " " +
-                             Q({st.inc[j].hex, st.exitFace[j]});
-          if (use("chordpush")) out.push_back("chordpush" + args);
-          if (use("facecollapse")) out.push_back("facecollapse" + args);
+          QuadSide fi{st.inc[i].hex, st.exitFace[i]}, fj{st.inc[j].hex, st.exitFace[j]};
+          if (use(K::ChordPush)) out.push_back(makeStep(K::ChordPush, ce, fi, fj));
+          if (use(K::FaceCollapse)) out.push_back(makeStep(K::FaceCollapse, ce, fi, fj));
         }
     }
   }
@@ -189,9 +188,7 @@ std::vector<std::string> moves(const Complex& cx, const std::vector<HexId>& host
 }
 
 // Rewrites a step's hex ids and local indices from complex `from` to the isomorphic `to`.
-std::string translateStep(const std::string& step, const CanonicalLabelling& from, const CanonicalLabelling& to,
-                          const std::vector<HexId>& host) {
-  OpStep st = parseOpStep(step);
+OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalLabelling& to, const std::vector<HexId>& host) {
   auto indexOf = [&](HexId h) {
     for (size_t i = 0; i < from.order.size(); ++i)
       if (from.order[i] == h) return int(i);
@@ -236,7 +233,7 @@ std::string translateStep(const std::string& step, const CanonicalLabelling& fro
       a.hex = to.order[size_t(indexOf(a.hex))];
     }
   }
-  return formatOpStep(st);
+  return st;
 }
 
 }  // namespace
@@ -264,7 +261,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
   };
   // Joins the forward path to node fi with the backward path from the goal to node bi (same key).
   auto finish = [&](int fi, int bi) {
-    std::vector<std::string> steps;
+    std::vector<OpStep> steps;
     auto fchain = pathTo(0, fi);
     for (size_t k = 1; k < fchain.size(); ++k) steps.push_back(side[0][size_t(fchain[k])].step);
     Complex cur = side[0][size_t(fi)].cx;
@@ -274,8 +271,8 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
       const Node& prev = side[1][size_t(bchain[k - 1])];
       // A local move from cur reaching prev's state: first among the generated moves (this also
       // picks the side that keeps host vertex ids for splits), else the translated inverse.
-      std::string chosen;
-      for (const std::string& m : moves(cur, host, {})) {
+      std::optional<OpStep> chosen;
+      for (const OpStep& m : moves(cur, host, {})) {
         OpResult r;
         try {
           r = applyStep(cur, m);
@@ -289,13 +286,14 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
           break;
         }
       }
-      if (chosen.empty()) {
+      if (!chosen) {
         Complex tmp = prev.cx;
         OpResult r = applyStep(tmp, here.step);
-        chosen = translateStep(r.inverse, regionLabelling(tmp, host), regionLabelling(cur, host), host);
+        if (!r.inverse) throw Error("search: " + formatOpStep(here.step) + " has no inverse step (" + r.noInverse + ")");
+        chosen = translateStep(*r.inverse, regionLabelling(tmp, host), regionLabelling(cur, host), host);
       }
-      applyStep(cur, chosen);
-      steps.push_back(chosen);
+      applyStep(cur, *chosen);
+      steps.push_back(*chosen);
     }
     res.found = true;
     res.steps = steps;
@@ -313,7 +311,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     std::vector<int> next;
     for (int i : frontier[s]) {
       Complex& cx = side[s][size_t(i)].cx;
-      for (const std::string& m : moves(cx, host, opt.ops)) {
+      for (const OpStep& m : moves(cx, host, opt.ops)) {
         if (elapsed() > opt.maxSeconds) {
           res.stoppedBy = "time";
           goto done;
@@ -325,7 +323,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
           continue;
         }
         std::string why = localityViolation(cx, hs);
-        if (std::getenv("HEXDUAL_SEARCH_TRACE")) std::fprintf(stderr, "%s -> %s\n", m.c_str(), why.c_str());
+        if (std::getenv("HEXDUAL_SEARCH_TRACE")) std::fprintf(stderr, "%s -> %s\n", formatOpStep(m).c_str(), why.c_str());
         bool ok = why.empty() && int(regionOf(cx, host).size()) <= opt.maxRegionHexes;
         std::vector<int64_t> key;
         if (ok) key = regionLabelling(cx, host).form;
@@ -368,14 +366,14 @@ done:
   return res;
 }
 
-void verifyDecomposition(const SearchProblem& pb, const std::vector<std::string>& steps) {
+void verifyDecomposition(const SearchProblem& pb, const std::vector<OpStep>& steps) {
   HostSnapshot hs = snapshot(pb.start, pb.host);
   Complex cx = pb.start;
   for (size_t k = 0; k < steps.size(); ++k) {
     try {
       applyStep(cx, steps[k]);
     } catch (const Error& e) {
-      throw Error("verify " + pb.name + ": step " + std::to_string(k + 1) + " (" + steps[k] + "): " + e.what());
+      throw Error("verify " + pb.name + ": step " + std::to_string(k + 1) + " (" + formatOpStep(steps[k]) + "): " + e.what());
     }
     std::string why = localityViolation(cx, hs);
     if (!why.empty()) throw Error("verify " + pb.name + ": step " + std::to_string(k + 1) + " is not local: " + why);
@@ -482,7 +480,7 @@ grids:
   return out;
 }
 
-std::vector<std::string> replayInEmbedding(const SearchProblem& pb, const std::vector<std::string>& steps, Complex& mesh,
+std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector<OpStep>& steps, Complex& mesh,
                                            const std::vector<HexId>& beforeHexes, const std::string& placeName) {
   const std::string what = pb.name + " in " + placeName;
   Embedding where{placeName, mesh, beforeHexes};
@@ -507,7 +505,7 @@ std::vector<std::string> replayInEmbedding(const SearchProblem& pb, const std::v
   HostSnapshot snapE = snapshot(where.mesh, hostE);
   Complex cp = pb.start;
   Complex& ce = mesh;
-  std::vector<std::string> applied;
+  std::vector<OpStep> applied;
   // Boundary (host) vertices keep shared names: problem ids on both sides; others get fresh ids.
   std::map<VertexId, VertexId> idP, toProblemHost;
   for (HexId h : hostP)
@@ -521,7 +519,7 @@ std::vector<std::string> replayInEmbedding(const SearchProblem& pb, const std::v
     if (a.form != b.form) throw Error(what + ": before step " + std::to_string(k + 1) + " the regions differ");
     // Arguments named through a host hex are re-expressed through the region side of the same
     // quad or edge (host hexes may differ between hosts); `partner` remembers a side to swap back.
-    OpStep src = parseOpStep(steps[k]);
+    OpStep src = steps[k];
     std::vector<bool> partner(src.args.size(), false), partner2(src.args.size(), false);
     for (size_t i = 0; i < src.args.size(); ++i) {
       OpArg& arg = src.args[i];
@@ -552,8 +550,7 @@ std::vector<std::string> replayInEmbedding(const SearchProblem& pb, const std::v
         throw Error(what + ": step " + std::to_string(k + 1) + " names host hex " + std::to_string(arg.hex));
       }
     }
-    std::string t = translateStep(formatOpStep(src), a, b, hostP);
-    OpStep st = parseOpStep(t);
+    OpStep st = translateStep(src, a, b, hostP);
     for (size_t i = 0; i < st.args.size(); ++i) {
       if (partner[i]) {
         Gluing g = ce.gluing(st.args[i].hex, st.args[i].local);
@@ -565,21 +562,20 @@ std::vector<std::string> replayInEmbedding(const SearchProblem& pb, const std::v
         st.args[i].second = {g.hex, g.face};
       }
     }
-    t = formatOpStep(st);
     try {
       applyStep(cp, steps[k]);
-      applyStep(ce, t);
+      applyStep(ce, st);
     } catch (const Error& e) {
-      throw Error(what + ": step " + std::to_string(k + 1) + " (" + t + "): " + e.what());
+      throw Error(what + ": step " + std::to_string(k + 1) + " (" + formatOpStep(st) + "): " + e.what());
     }
     std::string why = localityViolation(ce, snapE);
     if (!why.empty()) throw Error(what + ": step " + std::to_string(k + 1) + " is not local: " + why);
-    applied.push_back(t);
+    applied.push_back(st);
   }
   return applied;
 }
 
-void verifyInEmbedding(const SearchProblem& pb, const std::vector<std::string>& steps, const Embedding& where) {
+void verifyInEmbedding(const SearchProblem& pb, const std::vector<OpStep>& steps, const Embedding& where) {
   const std::string what = "verify " + pb.name + " in " + where.name;
   Complex direct = where.mesh, viaSteps = where.mesh;
   flip(direct, pb.name, where.before);

@@ -2,7 +2,7 @@
 // inverses) that stay local to a region, from a "before" complex to an "after" complex, states
 // deduplicated by the canonical form of the region with its boundary fixed.
 //
-// Local (issue 4): every hex removed is a region hex or one the sequence created, every new hex
+// Local: every hex removed is a region hex or one the sequence created, every new hex
 // joins the region, and every host hex keeps its vertices, its gluings to other host hexes and
 // its edges — only which region hex it touches across a region boundary quad may change.
 #pragma once
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "ops/op_step.hpp"
 
 namespace hexdual {
 
@@ -29,13 +30,13 @@ struct SearchOptions {
   int maxDepth = 4;              // total steps (split between the two directions)
   int64_t maxStates = 200000;    // stop when this many distinct states were stored
   double maxSeconds = 60;
-  std::vector<std::string> ops;  // op-log names to use; empty = all atomic operations and inverses
+  std::vector<OpKind> ops;       // operations to use; empty = all atomic operations and inverses
   int maxRegionHexes = 16;       // prune states whose region grows beyond this
 };
 
 struct SearchResult {
   bool found = false;
-  std::vector<std::string> steps;  // op-log steps from start (replay with applyLog)
+  std::vector<OpStep> steps;       // steps from start (replay with applyStep)
   int depthSearched = 0;           // every sequence up to this length was examined (if not found)
   int64_t statesExplored = 0;
   double seconds = 0;
@@ -46,7 +47,7 @@ SearchResult searchDecomposition(const SearchProblem& problem, const SearchOptio
 
 // Whether applying `steps` to the problem's start gives a complex isomorphic to its goal with the
 // region boundary fixed, every step local. Throws Error naming the failing step otherwise.
-void verifyDecomposition(const SearchProblem& problem, const std::vector<std::string>& steps);
+void verifyDecomposition(const SearchProblem& problem, const std::vector<OpStep>& steps);
 
 }  // namespace hexdual
 
@@ -64,9 +65,9 @@ std::vector<Embedding> flipEmbeddings(const std::string& flipName);
 // Replays the problem's steps inside the embedding (translated step by step through the
 // canonical labellings of the two regions) and checks the result against the flip applied
 // directly there, every step local, region boundary fixed. Throws Error naming what failed.
-void verifyInEmbedding(const SearchProblem& problem, const std::vector<std::string>& steps, const Embedding& where);
+void verifyInEmbedding(const SearchProblem& problem, const std::vector<OpStep>& steps, const Embedding& where);
 // Applies the problem's steps to `mesh`, where `beforeHexes` form the problem's before side;
 // returns the steps as applied there (ids of `mesh`). Throws Error when a step cannot be placed.
-std::vector<std::string> replayInEmbedding(const SearchProblem& problem, const std::vector<std::string>& steps, Complex& mesh,
-                                           const std::vector<HexId>& beforeHexes, const std::string& placeName);
+std::vector<OpStep> replayInEmbedding(const SearchProblem& problem, const std::vector<OpStep>& steps, Complex& mesh,
+                                      const std::vector<HexId>& beforeHexes, const std::string& placeName);
 }  // namespace hexdual

@@ -1,9 +1,13 @@
-// Minimal JSON writing, and the `info` report shared by the CLI and the wasm module.
+// Minimal JSON writing, and the reports shared by the CLI and the wasm module: `info`, the
+// per-step report of `apply`, and the flips list.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "complex/complex.hpp"
 #include "dual/dual.hpp"
+#include "flips/decompositions.hpp"
+#include "ops/report.hpp"
 
 namespace hexdual::io {
 
@@ -57,9 +61,27 @@ class JsonWriter {
   bool first_ = true, afterKey_ = false;
 };
 
+// "[1,2,3]": ids as a JSON array (also the text reports' spelling).
+std::string idList(const std::vector<int32_t>& ids);
+
 // {"vertices":..,"edges":..,"quads":..,"hexes":..,"boundaryQuads":..,"sheets":[..],"chords":[..]}
 std::string infoJson(const Complex& cx, const Dual& dual);
 // The same facts as readable text.
 std::string infoText(const Complex& cx, const Dual& dual);
+
+// One applied step (number `index`, from 1) as a JSON object: {"step","op","text","createdHexes",
+// "removedHexes","createdVertices","removedVertices","delta":{V,E,F,H},"sheets":{created,removed,
+// changed},"chords":{..},"inverse": step text or null, "noInverse": why (only when null)}.
+void writeStepReport(JsonWriter& w, const StepReport& r, size_t index);
+std::string stepReportJson(const StepReport& r, size_t index);
+// The same as four lines of text ("step 1: pillow h13f5\n  hexes created ...").
+std::string stepReportText(const StepReport& r, size_t index);
+// {"steps":[..],"counts":{"vertices","edges","quads","hexes"}}: the report of a whole log.
+std::string applyReportJson(const std::vector<StepReport>& steps, const Complex& after);
+
+// The flips list: [{"name","inverse","before":[V,E,F,H],"after":[..],"geometric","decomposition":
+// op log or null}], and one line of text per flip.
+std::string flipListJson(const std::vector<FlipSummary>& flips);
+std::string flipListText(const std::vector<FlipSummary>& flips);
 
 }  // namespace hexdual::io

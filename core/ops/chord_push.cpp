@@ -6,7 +6,8 @@ using namespace tables;
 using namespace ops;
 
 OpResult chordPush(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
-  const std::string op = "chordPush";
+  const OpKind kind = OpKind::ChordPush;
+  const std::string op = opName(kind);
   const ArcSplit sp = arcSplit(cx, e, f, g, op, "chord push");
   const QuadSide fL = sp.fL, fR = sp.fR, gL = sp.gL, gR = sp.gR;
   const VertexId a = sp.a, b = sp.b, fa = sp.fa, fb = sp.fb, ga = sp.ga, gb = sp.gb;
@@ -36,16 +37,17 @@ OpResult chordPush(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
   glueByVertices(cx, Y, 4, gR.hex, gR.face);
   for (int k : {0, 1, 3, 5}) glueByVertices(cx, X, k, Y, k);
   OpResult r;
-  r.op = op;
+  r.op = kind;
   r.createdHexes = {X, Y};
   r.createdVertices = {na, nb};
-  r.inverse = "chordpull h" + std::to_string(X);
+  r.inverse = makeStep(OpKind::ChordPull, X);
   tx.commit(r, {X, Y, fL.hex, fR.hex, gL.hex, gR.hex});
   return r;
 }
 
 OpResult chordPull(Complex& cx, HexId x) {
-  const std::string op = "chordPull";
+  const OpKind kind = OpKind::ChordPull;
+  const std::string op = opName(kind);
   if (!cx.isHex(x)) reject(op, hexName(x) + " does not exist");
   HexId y = -1;
   std::vector<int> freeX;
@@ -101,10 +103,10 @@ OpResult chordPull(Complex& cx, HexId x) {
   glueByVertices(cx, f1.hex, f1.face, f2.hex, f2.face);
   glueByVertices(cx, g1.hex, g1.face, g2.hex, g2.face);
   OpResult r;
-  r.op = op;
+  r.op = kind;
   r.removedHexes = {x, y};
   r.removedVertices = inner;
-  r.inverse = "chordpush " + edgeName({f1.hex, e1}) + " " + sideName(f1) + " " + sideName(g1);
+  r.inverse = makeStep(OpKind::ChordPush, EdgeRef{f1.hex, e1}, f1, g1);
   tx.commit(r, {f1.hex, f2.hex, g1.hex, g2.hex});
   return r;
 }

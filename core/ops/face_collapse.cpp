@@ -14,7 +14,8 @@ int cornerWithVertex(const Complex& cx, HexId h, VertexId v) {
 }  // namespace
 
 OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
-  const std::string op = "faceCollapse";
+  const OpKind kind = OpKind::FaceCollapse;
+  const std::string op = opName(kind);
   const ArcSplit sp = arcSplit(cx, e, f, g, op, "face collapse");
   const QuadSide fL = sp.fL, fR = sp.fR, gL = sp.gL, gR = sp.gR;
   const EdgeRef li = sp.li, lj = sp.lj;
@@ -44,7 +45,7 @@ OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
       touched.push_back(h);
     }
   OpResult r;
-  r.op = op;
+  r.op = kind;
   r.removedVertices = {std::max(c, c2), std::max(d, d2)};
   if (fL == gL || fR == gR) reject(op, "the collapse would glue a quad to itself");
   int o1 = orientByVertices(cx, fL.hex, fL.face, gL.hex, gL.face), o2 = orientByVertices(cx, fR.hex, fR.face, gR.hex, gR.face);
@@ -52,25 +53,22 @@ OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
   cx.glue(fL.hex, fL.face, gL.hex, gL.face, o1);
   cx.glue(fR.hex, fR.face, gR.hex, gR.face, o2);
   for (QuadSide s : {fL, fR, gL, gR}) touched.push_back(s.hex);
-  r.inverse = "facesplit " + sideName(fL) + " " + sideName(fR);
-  try {
-    tx.commit(r, touched);
-  } catch (const Error& err) {
-    reject(op, std::string("the result would not be a valid complex (") + err.what() + ")");
-  }
+  r.inverse = makeStep(OpKind::FaceSplit, fL, fR);
+  tx.commitIfValid(r, touched, op, "the result would not be a valid complex");
   return r;
 }
 
 OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
-  const std::string op = "faceSplit";
+  const OpKind kind = OpKind::FaceSplit;
+  const std::string op = opName(kind);
   for (QuadSide s : {sL, sR}) {
     if (!cx.isHex(s.hex)) reject(op, hexName(s.hex) + " does not exist");
     if (s.face < 0 || s.face > 5) reject(op, "local face " + std::to_string(s.face) + " is not 0..5");
-    if (cx.gluing(s).boundary()) reject(op, "quad " + sideName(s) + " is on the boundary");
+    if (cx.gluing(s).boundary()) reject(op, "quad " + entityName(s) + " is on the boundary");
   }
   if (cx.canonical(sL) == cx.canonical(sR)) reject(op, "the two sides belong to the same quad");
   if (faceVertexSet(cx, sL.hex, sL.face) != faceVertexSet(cx, sR.hex, sR.face))
-    reject(op, "quads " + sideName(sL) + " and " + sideName(sR) + " are not on the same 4 vertices");
+    reject(op, "quads " + entityName(sL) + " and " + entityName(sR) + " are not on the same 4 vertices");
   const QuadSide gL{cx.gluing(sL).hex, cx.gluing(sL).face}, gR{cx.gluing(sR).hex, cx.gluing(sR).face};
   // The quads share 3 of their 4 edges; the fourth (a doubled edge ab) stays, the vertices c, d
   // opposite it split in two.
@@ -86,7 +84,7 @@ OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
       own = p;
       ++owns;
     }
-  if (owns != 1) reject(op, "quads " + sideName(sL) + " and " + sideName(sR) + " are not a collapsed face pair");
+  if (owns != 1) reject(op, "quads " + entityName(sL) + " and " + entityName(sR) + " are not a collapsed face pair");
   const int cA = kFaceCorners[size_t(sL.face)][size_t(own)], cB = kFaceCorners[size_t(sL.face)][size_t((own + 1) & 3)];
   const int cD = kFaceCorners[size_t(sL.face)][size_t((own + 2) & 3)], cC = kFaceCorners[size_t(sL.face)][size_t((own + 3) & 3)];
   // cC and cD are the vertices opposite the doubled edge (cA, cB): they split.
@@ -111,7 +109,7 @@ OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
   cx.unglue(sL.hex, sL.face);
   cx.unglue(sR.hex, sR.face);
   OpResult r;
-  r.op = op;
+  r.op = kind;
   std::vector<HexId> touched{sL.hex, sR.hex, gL.hex, gR.hex};
   for (const Split& s : splits) {
     Vec3 c;
@@ -129,12 +127,8 @@ OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
   cx.glue(sL.hex, sL.face, sR.hex, sR.face, o1);
   cx.glue(gL.hex, gL.face, gR.hex, gR.face, o2);
   // The restored edge ab, named in sL's hex, and f = sL, g = gL's quad.
-  r.inverse = "facecollapse " + edgeName({sL.hex, edgeBetween(cA, cB)}) + " " + sideName(sL) + " " + sideName(gL);
-  try {
-    tx.commit(r, touched);
-  } catch (const Error& err) {
-    reject(op, std::string("the result would not be a valid complex (") + err.what() + ")");
-  }
+  r.inverse = makeStep(OpKind::FaceCollapse, EdgeRef{sL.hex, edgeBetween(cA, cB)}, sL, gL);
+  tx.commitIfValid(r, touched, op, "the result would not be a valid complex");
   return r;
 }
 

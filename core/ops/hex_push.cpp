@@ -14,11 +14,12 @@ int sharedQuads(const Complex& cx, HexId a, HexId b) {
 }  // namespace
 
 OpResult hexPush(Complex& cx, QuadSide q) {
-  const std::string op = "hexPush";
+  const OpKind kind = OpKind::HexPush;
+  const std::string op = opName(kind);
   Gluing gB = requireInteriorQuad(cx, q, op, "hex push needs an interior quad");
   const HexId A = q.hex, B = gB.hex;
   const int fA = q.face, fB = gB.face;
-  if (A == B) reject(op, "quad " + sideName(q) + " joins " + hexName(A) + " to itself");
+  if (A == B) reject(op, "quad " + entityName(q) + " joins " + hexName(A) + " to itself");
   int shared = sharedQuads(cx, A, B);
   if (shared != 1)
     reject(op, "hexes " + std::to_string(A) + " and " + std::to_string(B) + " share " + std::to_string(shared) +
@@ -69,25 +70,22 @@ OpResult hexPush(Complex& cx, QuadSide q) {
   }
   auto created = replaceHexes(cx, op, {A, B}, added);
   OpResult r;
-  r.op = op;
+  r.op = kind;
   r.removedHexes = {A, B};
   r.createdHexes = created;
   r.createdVertices.assign(N.begin(), N.end());
-  r.inverse = "hexpull h" + std::to_string(created[0]) + "f" + std::to_string(fA);
-  std::vector<HexId> touched = created;
-  for (HexId h : created)
-    for (int f = 0; f < 6; ++f)
-      if (!cx.gluing(h, f).boundary()) touched.push_back(cx.gluing(h, f).hex);
-  tx.commit(r, touched);
+  r.inverse = makeStep(OpKind::HexPull, QuadSide{created[0], fA});
+  tx.commit(r, withNeighbours(cx, created));
   return r;
 }
 
 OpResult hexPull(Complex& cx, QuadSide r) {
-  const std::string op = "hexPull";
+  const OpKind kind = OpKind::HexPull;
+  const std::string op = opName(kind);
   Gluing gB = requireInteriorQuad(cx, r, op, "hex pull needs an interior quad");
   const HexId A2 = r.hex, B2 = gB.hex;
   const int fr = r.face;
-  if (A2 == B2) reject(op, "quad " + sideName(r) + " joins " + hexName(A2) + " to itself");
+  if (A2 == B2) reject(op, "quad " + entityName(r) + " joins " + hexName(A2) + " to itself");
   // The 4 hexes on A''s sides form the ring; each is glued to B' as well.
   std::vector<HexId> ring;
   for (int s = 0; s < 6; ++s) {
@@ -105,7 +103,7 @@ OpResult hexPull(Complex& cx, QuadSide r) {
     int c = kFaceCorners[size_t(fr)][size_t(p)];
     N[size_t(p)] = cx.vertex(A2, c);
     if (cx.cornersOfVertex(A2, c).size() != 4)
-      reject(op, "vertex " + std::to_string(N[size_t(p)]) + " of quad " + sideName(r) + " is used by other hexes");
+      reject(op, "vertex " + std::to_string(N[size_t(p)]) + " of quad " + entityName(r) + " is used by other hexes");
     // Q_p: in a ring hex holding P_p and N_p, the edge-neighbour of P_p outside A'.
     int cp = c;
     {
@@ -132,7 +130,7 @@ OpResult hexPull(Complex& cx, QuadSide r) {
       }
       break;
     }
-    if (Q[size_t(p)] < 0) reject(op, "the hexes around " + sideName(r) + " do not form a hex push");
+    if (Q[size_t(p)] < 0) reject(op, "the hexes around " + entityName(r) + " do not form a hex push");
   }
   std::array<VertexId, 8> a = cx.hexVertices(A2), b = cx.hexVertices(B2);
   for (int p = 0; p < 4; ++p) {
@@ -144,16 +142,12 @@ OpResult hexPull(Complex& cx, QuadSide r) {
   removed.insert(removed.end(), ring.begin(), ring.end());
   auto created = replaceHexes(cx, op, removed, {a, b});
   OpResult res;
-  res.op = op;
+  res.op = kind;
   res.removedHexes = removed;
   res.createdHexes = created;
   res.removedVertices.assign(N.begin(), N.end());
-  res.inverse = "hexpush h" + std::to_string(created[0]) + "f" + std::to_string(fr);
-  std::vector<HexId> touched = created;
-  for (HexId h : created)
-    for (int f = 0; f < 6; ++f)
-      if (!cx.gluing(h, f).boundary()) touched.push_back(cx.gluing(h, f).hex);
-  tx.commit(res, touched);
+  res.inverse = makeStep(OpKind::HexPush, QuadSide{created[0], fr});
+  tx.commit(res, withNeighbours(cx, created));
   return res;
 }
 

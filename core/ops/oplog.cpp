@@ -1,45 +1,10 @@
 #include "ops/oplog.hpp"
 
-#include <map>
+#include "ops/op_table.hpp"
 
 namespace hexdual {
 
 namespace {
-
-struct OpSpec {
-  const char* name;
-  char urlCode;
-  std::vector<OpArg::Kind> args;  // a single Pair entry means "one or more pairs"
-};
-const std::vector<OpSpec>& specs() {
-  static const std::vector<OpSpec> s = {
-      {"pillow", 'P', {OpArg::Quad}},
-      {"unpillow", 'Q', {OpArg::Hex}},
-      {"chordpush", 'C', {OpArg::Edge, OpArg::Quad, OpArg::Quad}},
-      {"chordpull", 'D', {OpArg::Hex}},
-      {"hexpush", 'H', {OpArg::Quad}},
-      {"hexpull", 'I', {OpArg::Quad}},
-      {"ringcollapse", 'R', {OpArg::Edge}},
-      {"ringsplit", 'S', {OpArg::Pair}},
-      {"facecollapse", 'F', {OpArg::Edge, OpArg::Quad, OpArg::Quad}},
-      {"facesplit", 'G', {OpArg::Quad, OpArg::Quad}},
-  };
-  return s;
-}
-const OpSpec* specByName(std::string_view name) {
-  for (const auto& s : specs())
-    if (name == s.name) return &s;
-  return nullptr;
-}
-const char* kindName(OpArg::Kind k) {
-  switch (k) {
-    case OpArg::Hex: return "a hex (h12)";
-    case OpArg::Quad: return "a quad (h12f3)";
-    case OpArg::Edge: return "an edge (h12e7)";
-    case OpArg::Pair: return "a quad pair (h1f2/h3f4)";
-  }
-  return "?";
-}
 
 [[noreturn]] void fail(size_t pos, const std::string& why, std::string_view token) {
   throw Error("oplog: position " + std::to_string(pos) + ": " + why + " at '" + std::string(token) + "'");
@@ -75,12 +40,6 @@ bool parseEntity(std::string_view t, OpArg& out) {
   return true;
 }
 
-std::string entityText(HexId h, char kind, int local) {
-  std::string s = "h" + std::to_string(h);
-  if (kind) s += kind + std::to_string(local);
-  return s;
-}
-
 }  // namespace
 
 OpStep parseOpStep(std::string_view text, size_t offset) {
@@ -99,9 +58,9 @@ OpStep parseOpStep(std::string_view text, size_t offset) {
     tokens.push_back({text.substr(b, i - b), offset + b});
   }
   if (tokens.empty()) fail(offset, "empty step", text);
-  const OpSpec* spec = specByName(tokens[0].first);
+  const OpInfo* spec = findOp(tokens[0].first);
   if (!spec) fail(tokens[0].second, "unknown operation", tokens[0].first);
-  step.op = spec->name;
+  step.op = spec->kind;
   bool pairs = spec->args.size() == 1 && spec->args[0] == OpArg::Pair;
   size_t want = spec->args.size();
   if (pairs ? tokens.size() < 2 : tokens.size() - 1 != want)
@@ -117,11 +76,11 @@ OpStep parseOpStep(std::string_view text, size_t offset) {
       OpArg second;
       if (slash == std::string_view::npos || !parseEntity(tok.substr(0, slash), a) ||
           !parseEntity(tok.substr(slash + 1), second) || a.kind != OpArg::Quad || second.kind != OpArg::Quad)
-        fail(pos, std::string("expected ") + kindName(kind), tok);
+        fail(pos, std::string("expected ") + argKindName(kind), tok);
       a.kind = OpArg::Pair;
       a.second = {second.hex, second.local};
     } else if (!parseEntity(tok, a) || a.kind != kind) {
-      fail(pos, std::string("expected ") + kindName(kind), tok);
+      fail(pos, std::string("expected ") + argKindName(kind), tok);
     }
     step.args.push_back(a);
   }
@@ -144,18 +103,8 @@ OpLog parseOpLog(std::string_view text) {
 }
 
 std::string formatOpStep(const OpStep& step) {
-  std::string s = step.op;
-  for (const OpArg& a : step.args) {
-    s += " ";
-    switch (a.kind) {
-      case OpArg::Hex: s += entityText(a.hex, 0, 0); break;
-      case OpArg::Quad: s += entityText(a.hex, 'f', a.local); break;
-      case OpArg::Edge: s += entityText(a.hex, 'e', a.local); break;
-      case OpArg::Pair:
-        s += entityText(a.hex, 'f', a.local) + "/" + entityText(a.second.hex, 'f', a.second.face);
-        break;
-    }
-  }
+  std::string s = opName(step.op);
+  for (const OpArg& a : step.args) s += " " + entityName(a);
   return s;
 }
 
@@ -168,7 +117,7 @@ std::string formatOpLog(const OpLog& log) {
 std::string encodeOpLogUrl(const OpLog& log) {
   std::string s = std::to_string(log.version);
   for (const OpStep& st : log.steps) {
-    s += "." + std::string(1, specByName(st.op)->urlCode);
+    s += "." + std::string(1, opInfo(st.op).urlCode);
     for (size_t k = 0; k < st.args.size(); ++k) {
       const OpArg& a = st.args[k];
       if (k) s += "_";
@@ -195,9 +144,7 @@ OpLog decodeOpLogUrl(std::string_view text) {
     size_t next = text.find('.', pos + 1);
     std::string_view step = text.substr(pos + 1, next == std::string_view::npos ? std::string_view::npos : next - pos - 1);
     if (step.empty()) fail(pos, "empty step", text.substr(pos));
-    const OpSpec* spec = nullptr;
-    for (const auto& s : specs())
-      if (s.urlCode == step[0]) spec = &s;
+    const OpInfo* spec = findOpByUrlCode(step[0]);
     if (!spec) fail(pos + 1, "unknown operation code", step.substr(0, 1));
     out += ";" + std::string(spec->name);
     std::string args(step.substr(1));
@@ -215,24 +162,8 @@ OpLog decodeOpLogUrl(std::string_view text) {
 }
 
 OpResult applyStep(Complex& cx, const OpStep& st) {
-  auto quad = [&](size_t k) { return QuadSide{st.args[k].hex, st.args[k].local}; };
-  auto edge = [&](size_t k) { return EdgeRef{st.args[k].hex, st.args[k].local}; };
-  const std::string& op = st.op;
-  if (op == "pillow") return pillow(cx, quad(0));
-  if (op == "unpillow") return unpillow(cx, st.args[0].hex);
-  if (op == "chordpush") return chordPush(cx, edge(0), quad(1), quad(2));
-  if (op == "chordpull") return chordPull(cx, st.args[0].hex);
-  if (op == "hexpush") return hexPush(cx, quad(0));
-  if (op == "hexpull") return hexPull(cx, quad(0));
-  if (op == "ringcollapse") return ringCollapse(cx, edge(0));
-  if (op == "ringsplit") {
-    std::vector<std::pair<QuadSide, QuadSide>> bands;
-    for (const OpArg& a : st.args) bands.push_back({{a.hex, a.local}, a.second});
-    return ringSplit(cx, bands);
-  }
-  if (op == "facecollapse") return faceCollapse(cx, edge(0), quad(1), quad(2));
-  if (op == "facesplit") return faceSplit(cx, quad(0), quad(1));
-  throw Error("oplog: unknown operation '" + op + "'");
+  checkArgs(st);
+  return opInfo(st.op).apply(cx, st);
 }
 
 OpResult applyStep(Complex& cx, std::string_view stepText) { return applyStep(cx, parseOpStep(stepText)); }

@@ -7,23 +7,10 @@
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "ops/op_step.hpp"
 #include "ops/ops.hpp"
 
 namespace hexdual {
-
-// One argument: a hex "h12", a quad side "h12f3", an edge "h12e7", or a quad pair "h1f2/h3f4".
-struct OpArg {
-  enum Kind { Hex, Quad, Edge, Pair } kind = Hex;
-  HexId hex = -1;
-  int local = 0;        // face or edge
-  QuadSide second{};    // for Pair
-};
-
-struct OpStep {
-  std::string op;  // lower-case name, e.g. "chordpush"
-  std::vector<OpArg> args;
-  size_t position = 0;  // character offset of the step in the log text
-};
 
 struct OpLog {
   int version = 1;
@@ -41,6 +28,7 @@ std::string encodeOpLogUrl(const OpLog& log);
 OpLog decodeOpLogUrl(std::string_view text);
 
 // Applies one step (text or parsed). Throws as the operation does; the complex is then unchanged.
+// A parsed step with the wrong number or kinds of arguments is rejected before anything runs.
 OpResult applyStep(Complex& cx, const OpStep& step);
 OpResult applyStep(Complex& cx, std::string_view stepText);
 
@@ -50,7 +38,7 @@ struct ApplyReport {
   std::string error;
 };
 // Applies every step in order. On an error at step k it stops: the complex is as after step k-1,
-// and the report names k and the reason. (A free function rather than Complex::apply: core/complex does not depend on ops.)
+// and the report names k and the reason. (A free function: core/complex does not depend on ops.)
 ApplyReport applyLog(Complex& cx, const OpLog& log);
 ApplyReport applyLog(Complex& cx, std::string_view logText);
 

@@ -1,23 +1,26 @@
-// The atomic dual operations of Tautges & Knoop (TK03 §4) and their inverses, as specified in
-// shared/OPERATIONS.md. Every operation checks its preconditions first and is transactional:
-// on any error it throws Error (message "<op>: <rule broken>") and the complex is exactly as
+// The atomic dual operations of Tautges & Knoop (TK03 §4) and their inverses (docs/operations.md).
+// Every operation checks its preconditions first and is transactional: on any error it throws
+// Error (message "<log name>: <rule broken>", e.g. "hexpush: ...") and the complex is exactly as
 // before — topology, ids, positions. Existing vertices never move; new vertices are placed
 // inside the opened quads; topology never depends on positions.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "ops/op_step.hpp"
 
 namespace hexdual {
 
 struct OpResult {
-  std::string op;                       // e.g. "pillow"
+  std::optional<OpKind> op;  // the atomic operation; empty for composites (flip, pillowRegion, ...)
   std::vector<HexId> createdHexes, removedHexes;
   std::vector<VertexId> createdVertices, removedVertices;
   int64_t dV = 0, dE = 0, dF = 0, dH = 0;  // change in (V, E, F, H); E from Euler's V-E+F-H invariance
-  std::string inverse;                  // the operation-log step that undoes this one (up to ids)
-  Complex::EditLog edits;               // cx.undo(edits) restores the exact previous state, ids included
+  std::optional<OpStep> inverse;  // a step that applies to the result and undoes this one (up to ids)
+  std::string noInverse;          // when there is no inverse step: why
+  Complex::EditLog edits;         // cx.undo(edits) restores the exact previous state, ids included
 };
 
 // ---- 1. minimal pillow (TK03 §4.3) ----

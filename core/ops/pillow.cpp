@@ -6,7 +6,8 @@ using namespace tables;
 using namespace ops;
 
 OpResult pillow(Complex& cx, QuadSide q) {
-  const std::string op = "pillow";
+  const OpKind kind = OpKind::Pillow;
+  const std::string op = opName(kind);
   Gluing gB = requireInteriorQuad(cx, q, op, "a pillow needs an interior quad");
   const HexId A = q.hex, B = gB.hex;
   const int fA = q.face, fB = gB.face;
@@ -36,16 +37,17 @@ OpResult pillow(Complex& cx, QuadSide q) {
   glueByVertices(cx, Y, 5, B, fB);
 
   OpResult r;
-  r.op = op;
+  r.op = kind;
   r.createdHexes = {X, Y};
   r.createdVertices.assign(N.begin(), N.end());
-  r.inverse = "unpillow h" + std::to_string(X);
+  r.inverse = makeStep(OpKind::Unpillow, X);
   tx.commit(r, {A, B, X, Y});
   return r;
 }
 
 OpResult unpillow(Complex& cx, HexId x) {
-  const std::string op = "unpillow";
+  const OpKind kind = OpKind::Unpillow;
+  const std::string op = opName(kind);
   if (!cx.isHex(x)) reject(op, hexName(x) + " does not exist");
   // The partner is the hex glued to x across exactly 5 faces; x's sixth face is its free face.
   HexId y = -1;
@@ -93,10 +95,10 @@ OpResult unpillow(Complex& cx, HexId x) {
   cx.removeHex(y);
   glueByVertices(cx, A, fA, B, fB);
   OpResult r;
-  r.op = op;
+  r.op = kind;
   r.removedHexes = {x, y};
   r.removedVertices = inner;
-  r.inverse = "pillow h" + std::to_string(A) + "f" + std::to_string(fA);
+  r.inverse = makeStep(OpKind::Pillow, QuadSide{A, fA});
   tx.commit(r, {A, B});
   return r;
 }

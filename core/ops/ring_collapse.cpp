@@ -38,15 +38,15 @@ std::vector<RingHex> walkRing(const Complex& cx, EdgeRef e, const std::string& o
     ring.push_back(cur);
     Gluing g = cx.gluing(cur.hex, cur.exit);
     if (g.boundary())
-      reject(op, "the chord through " + edgeName(e) + " reaches the boundary; ring collapse needs a closed chord");
+      reject(op, "the chord through " + entityName(e) + " reaches the boundary; ring collapse needs a closed chord");
     // Carry the diagonal and the kept edge: their corners on the exit face map into the next hex.
     int a2 = axisOfFace(g.face);
     RingHex next{g.hex, a2, g.face, oppositeFace(g.face), carryEdge(cx, cur.hex, cur.exit, cur.diag, a2),
                  carryEdge(cx, cur.hex, cur.exit, cur.keep, a2)};
     if (next.hex == ring[0].hex && next.axis == ring[0].axis) {
-      if (next.entry != ring[0].entry) reject(op, "the chord through " + edgeName(e) + " returns reversed");
+      if (next.entry != ring[0].entry) reject(op, "the chord through " + entityName(e) + " returns reversed");
       if (next.diag != ring[0].diag && next.diag != (ring[0].diag ^ 3))
-        reject(op, "carried round the ring, the diagonal of " + edgeName(e) + " comes back as the other diagonal");
+        reject(op, "carried round the ring, the diagonal of " + entityName(e) + " comes back as the other diagonal");
       return ring;
     }
     cur = next;
@@ -56,7 +56,8 @@ std::vector<RingHex> walkRing(const Complex& cx, EdgeRef e, const std::string& o
 }  // namespace
 
 OpResult ringCollapse(Complex& cx, EdgeRef e) {
-  const std::string op = "ringCollapse";
+  const OpKind kind = OpKind::RingCollapse;
+  const std::string op = opName(kind);
   std::vector<RingHex> ring = walkRing(cx, e, op);
   auto inRing = [&](HexId h) {
     for (const RingHex& r : ring)
@@ -74,7 +75,7 @@ OpResult ringCollapse(Complex& cx, EdgeRef e) {
   for (const RingHex& r : ring) {
     for (int s = 0; s < 6; ++s)
       if (axisOfFace(s) != r.axis && cx.gluing(r.hex, s).boundary())
-        reject(op, "side quad " + sideName({r.hex, s}) + " of the ring is on the boundary");
+        reject(op, "side quad " + entityName(QuadSide{r.hex, s}) + " of the ring is on the boundary");
     for (int keep : {r.keep, r.keep ^ 3}) {
       auto fs = facesOfEdge(keep);
       collapsePartner[{r.hex, fs[0]}] = fs[1];
@@ -147,18 +148,14 @@ OpResult ringCollapse(Complex& cx, EdgeRef e) {
   for (const RingHex& r : ring) cx.removeHex(r.hex);
   for (auto [h, c] : renumber) cx.setCorner(h, c, find(cx.vertex(h, c)));
   OpResult res;
-  res.op = op;
+  res.op = kind;
   for (auto [a, b] : outsidePairs) {
-    if (a == b) reject(op, "the collapse would glue " + sideName(a) + " to itself");
+    if (a == b) reject(op, "the collapse would glue " + entityName(a) + " to itself");
     int o = orientByVertices(cx, a.hex, a.face, b.hex, b.face);
-    if (o < 0) reject(op, "after the collapse " + sideName(a) + " and " + sideName(b) + " do not carry the same vertices");
+    if (o < 0) reject(op, "after the collapse " + entityName(a) + " and " + entityName(b) + " do not carry the same vertices");
     cx.glue(a.hex, a.face, b.hex, b.face, o);
   }
-  try {
-    tx.commit(res, touched);
-  } catch (const Error& err) {
-    reject(op, std::string("the result would not be a valid complex (") + err.what() + ")");
-  }
+  tx.commitIfValid(res, touched, op, "the result would not be a valid complex");
   for (const RingHex& r : ring) res.removedHexes.push_back(r.hex);
   std::sort(ringVertices.begin(), ringVertices.end());
   ringVertices.erase(std::unique(ringVertices.begin(), ringVertices.end()), ringVertices.end());
@@ -166,14 +163,16 @@ OpResult ringCollapse(Complex& cx, EdgeRef e) {
     if (!cx.isVertex(v)) res.removedVertices.push_back(v);
   // The inverse: one (f, g) pair per ring hex when every side touched an outside hex.
   if (allOutside) {
-    res.inverse = "ringsplit";
-    for (auto [f, g] : bandSides) res.inverse += " " + sideName(cx.canonical(f)) + "/" + sideName(cx.canonical(g));
+    OpStep inv{OpKind::RingSplit, {}, 0};
+    for (auto [f, g] : bandSides) inv.args.push_back(OpArg::of(cx.canonical(f), cx.canonical(g)));
+    res.inverse = inv;
   }
   return res;
 }
 
 OpResult ringSplit(Complex& cx, const std::vector<std::pair<QuadSide, QuadSide>>& bands) {
-  const std::string op = "ringSplit";
+  const OpKind kind = OpKind::RingSplit;
+  const std::string op = opName(kind);
   const size_t n = bands.size();
   if (n < 2) reject(op, "needs at least 2 quad pairs around a loop");
   std::vector<QuadSide> F(n), G(n), walls;
@@ -181,7 +180,7 @@ OpResult ringSplit(Complex& cx, const std::vector<std::pair<QuadSide, QuadSide>>
     for (QuadSide s : {bands[k].first, bands[k].second}) {
       if (!cx.isHex(s.hex)) reject(op, hexName(s.hex) + " does not exist");
       if (s.face < 0 || s.face > 5) reject(op, "local face " + std::to_string(s.face) + " is not 0..5");
-      if (cx.gluing(s).boundary()) reject(op, "quad " + sideName(s) + " is on the boundary");
+      if (cx.gluing(s).boundary()) reject(op, "quad " + entityName(s) + " is on the boundary");
       Gluing g = cx.gluing(s);
       walls.push_back(s);
       walls.push_back({g.hex, g.face});
@@ -208,7 +207,7 @@ OpResult ringSplit(Complex& cx, const std::vector<std::pair<QuadSide, QuadSide>>
     for (VertexId v : fv)
       if (std::find(gv.begin(), gv.end(), v) != gv.end()) common.push_back(v);
     if (common.size() != 2)
-      reject(op, "quads " + sideName(F[k]) + " and " + sideName(G[k]) + " must share exactly one edge");
+      reject(op, "quads " + entityName(F[k]) + " and " + entityName(G[k]) + " must share exactly one edge");
     m[k] = {common[0], common[1]};
   }
   std::vector<VertexId> M(n);
@@ -311,15 +310,11 @@ OpResult ringSplit(Complex& cx, const std::vector<std::pair<QuadSide, QuadSide>>
     for (QuadSide s : {fA[k], fB[k], gA[k], gB[k]}) touched.push_back(s.hex);
   }
   OpResult res;
-  res.op = op;
+  res.op = kind;
   res.createdHexes = ringHexes;
   res.createdVertices = M2;
-  res.inverse = "ringcollapse h" + std::to_string(ringHexes[0]) + "e3";
-  try {
-    tx.commit(res, touched);
-  } catch (const Error& err) {
-    reject(op, std::string("the result would not be a valid complex (") + err.what() + ")");
-  }
+  res.inverse = makeStep(OpKind::RingCollapse, EdgeRef{ringHexes[0], 3});
+  tx.commitIfValid(res, touched, op, "the result would not be a valid complex");
   return res;
 }
 

@@ -30,7 +30,7 @@ Gluing requireInteriorQuad(const Complex& cx, QuadSide q, const std::string& op,
   if (!cx.isHex(q.hex)) reject(op, hexName(q.hex) + " does not exist");
   if (q.face < 0 || q.face > 5) reject(op, "local face " + std::to_string(q.face) + " is not 0..5");
   Gluing g = cx.gluing(q);
-  if (g.boundary()) reject(op, "quad " + sideName(q) + " is on the boundary; " + needs);
+  if (g.boundary()) reject(op, "quad " + entityName(q) + " is on the boundary; " + needs);
   return g;
 }
 
@@ -54,7 +54,7 @@ EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op) {
     st.entryFace.push_back(entry);
     st.exitFace.push_back(exitFace);
     Gluing g = cx.gluing(cur.hex, exitFace);
-    if (g.boundary()) reject(op, "edge " + edgeName(e) + " is on the boundary; it needs a closed cycle of hexes");
+    if (g.boundary()) reject(op, "edge " + entityName(e) + " is on the boundary; it needs a closed cycle of hexes");
     int c0 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[size_t(cur.edge)][0]);
     int c1 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[size_t(cur.edge)][1]);
     cur = {g.hex, edgeBetween(c0, c1)};
@@ -66,7 +66,7 @@ EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op) {
       return st;
     }
   }
-  reject(op, "the cycle around edge " + edgeName(e) + " does not close");
+  reject(op, "the cycle around edge " + entityName(e) + " does not close");
 }
 
 int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side) {
@@ -100,8 +100,8 @@ ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const st
   s.star = closedEdgeStar(cx, e, op);
   const int n = int(s.star.inc.size());
   int i = quadIndexInStar(cx, s.star, f), j = quadIndexInStar(cx, s.star, g);
-  if (i < 0) reject(op, "quad " + sideName(f) + " is not in the cycle around edge " + edgeName(e));
-  if (j < 0) reject(op, "quad " + sideName(g) + " is not in the cycle around edge " + edgeName(e));
+  if (i < 0) reject(op, "quad " + entityName(f) + " is not in the cycle around edge " + entityName(e));
+  if (j < 0) reject(op, "quad " + entityName(g) + " is not in the cycle around edge " + entityName(e));
   if (i == j) reject(op, std::string("f and g are the same quad; ") + what + " needs two distinct quads");
   // Quad k lies between incidence k (exit face) and k+1 (entry face).
   const auto& st = s.star;
@@ -122,8 +122,16 @@ ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const st
   s.ga = neighbourInFace(cx, s.lj.hex, s.gL.face, da, db);
   s.gb = neighbourInFace(cx, s.lj.hex, s.gL.face, db, da);
   if (s.fa == s.ga || s.fa == s.gb || s.fb == s.ga || s.fb == s.gb)
-    reject(op, "quads " + sideName(f) + " and " + sideName(g) + " share more than edge " + edgeName(e));
+    reject(op, "quads " + entityName(f) + " and " + entityName(g) + " share more than edge " + entityName(e));
   return s;
+}
+
+std::vector<HexId> withNeighbours(const Complex& cx, const std::vector<HexId>& hexes) {
+  std::vector<HexId> out = hexes;
+  for (HexId h : hexes)
+    for (int f = 0; f < 6; ++f)
+      if (!cx.gluing(h, f).boundary()) out.push_back(cx.gluing(h, f).hex);
+  return out;
 }
 
 void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) {
@@ -139,6 +147,15 @@ void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) {
   r.dE = r.dV + r.dF - r.dH;  // V - E + F - H is invariant under every local operation
   r.edits = cx_.commitTransaction();
   open_ = false;
+}
+
+void Transaction::commitIfValid(OpResult& r, const std::vector<HexId>& touched, const std::string& op,
+                                const std::string& why) {
+  try {
+    commit(r, touched);
+  } catch (const Error& err) {
+    reject(op, why + " (" + err.what() + ")");
+  }
 }
 
 std::vector<std::pair<HexId, int>> cornersOnSide(const Complex& cx, std::pair<HexId, int> seed,
@@ -194,10 +211,10 @@ std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::v
   for (const auto& [key, side] : outside) {
     auto hits = take(key);
     if (hits.size() != 1)
-      reject(op, "the new hexes do not fit the neighbour " + sideName(side) + " (" + std::to_string(hits.size()) +
+      reject(op, "the new hexes do not fit the neighbour " + entityName(side) + " (" + std::to_string(hits.size()) +
                      " faces carry its vertices)");
     int o = orientByVertices(cx, hits[0].hex, hits[0].face, side.hex, side.face);
-    if (o < 0) reject(op, "the new hexes meet " + sideName(side) + " in a different cyclic order");
+    if (o < 0) reject(op, "the new hexes meet " + entityName(side) + " in a different cyclic order");
     cx.glue(hits[0].hex, hits[0].face, side.hex, side.face, o);
   }
   while (!open.empty()) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "ops/op_table.hpp"
 #include "ops/ops.hpp"
 
 namespace hexdual::ops {
@@ -40,9 +41,9 @@ int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side);
 // Whether the vertex at corner c of hex h lies on the boundary (walks its corners).
 bool vertexOnBoundary(const Complex& cx, HexId h, int c);
 
-// The arc split of OPERATIONS.md: edge e = ab with a closed cycle, two distinct quads f and g of
-// it; arc L runs from after f up to g, arc R the rest. Sides: fL/gL face arc L, fR/gR arc R.
-// fa, fb (ga, gb) are f's (g's) vertices next to a and b. Rejects (as op) with the shared rules.
+// The arc split shared by chord push and face collapse: edge e = ab with a closed cycle, two
+// distinct quads f and g of it; arc L runs from after f up to g, arc R the rest. Sides: fL/gL
+// face arc L, fR/gR arc R. fa, fb (ga, gb) are f's (g's) vertices next to a and b.
 struct ArcSplit {
   EdgeStar star;
   EdgeRef li, lj;  // the incidences of e in L's first and last hex
@@ -50,6 +51,9 @@ struct ArcSplit {
   VertexId a, b, fa, fb, ga, gb;
 };
 ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const std::string& op, const char* what);
+
+// The hexes an edit touched: `hexes` and every hex glued to one of them.
+std::vector<HexId> withNeighbours(const Complex& cx, const std::vector<HexId>& hexes);
 
 // Opens a transaction; rolls back unless commit() is reached. Also fills the result's counts.
 class Transaction {
@@ -67,6 +71,9 @@ class Transaction {
   Transaction& operator=(const Transaction&) = delete;
   // Checks the invariants around `touched` (debug builds: everywhere), fills counts, commits.
   void commit(OpResult& r, const std::vector<HexId>& touched);
+  // The same for edits whose validity is only known afterwards: a broken invariant rolls back
+  // and rejects as "<op>: <why> (<the invariant>)".
+  void commitIfValid(OpResult& r, const std::vector<HexId>& touched, const std::string& op, const std::string& why);
 
  private:
   Complex& cx_;

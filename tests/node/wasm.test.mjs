@@ -130,7 +130,7 @@ test('apply: operation steps from JS, with errors that leave the mesh unchanged'
   const m = Mesh.grid(3, 3, 3);
   assert.equal(m.apply('pillow h13f5'), 'unpillow h27');
   assert.equal(m.counts.hexes, 29);
-  assert.throws(() => m.apply('hexpush h0f0'), { message: 'hexPush: quad h0f0 is on the boundary; hex push needs an interior quad' });
+  assert.throws(() => m.apply('hexpush h0f0'), { message: 'hexpush: quad h0f0 is on the boundary; hex push needs an interior quad' });
   assert.throws(() => m.apply('frobnicate h1'), { message: "oplog: position 0: unknown operation at 'frobnicate'" });
   assert.equal(m.counts.hexes, 29);
   assert.equal(m.apply('unpillow h27'), 'pillow h13f5');

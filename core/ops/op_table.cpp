@@ -1,0 +1,145 @@
+#include "ops/op_table.hpp"
+
+#include <type_traits>
+#include <utility>
+
+namespace hexdual {
+
+namespace {
+
+// How an argument of an operation's C++ signature is read from a step: the table's argument
+// kinds come from the signatures, so the two cannot disagree.
+template <class T>
+struct ArgOf;
+template <>
+struct ArgOf<HexId> {
+  static constexpr OpArg::Kind kind = OpArg::Hex;
+  static HexId get(const OpStep& s, size_t k) { return s.args[k].hex; }
+};
+template <>
+struct ArgOf<QuadSide> {
+  static constexpr OpArg::Kind kind = OpArg::Quad;
+  static QuadSide get(const OpStep& s, size_t k) { return s.args[k].quad(); }
+};
+template <>
+struct ArgOf<EdgeRef> {
+  static constexpr OpArg::Kind kind = OpArg::Edge;
+  static EdgeRef get(const OpStep& s, size_t k) { return s.args[k].edge(); }
+};
+template <>
+struct ArgOf<std::vector<std::pair<QuadSide, QuadSide>>> {  // all the step's arguments
+  static constexpr OpArg::Kind kind = OpArg::Pair;
+  static std::vector<std::pair<QuadSide, QuadSide>> get(const OpStep& s, size_t) {
+    std::vector<std::pair<QuadSide, QuadSide>> pairs;
+    for (const OpArg& a : s.args) pairs.push_back({a.quad(), a.second});
+    return pairs;
+  }
+};
+
+template <class F>
+struct Signature;
+template <class... A>
+struct Signature<OpResult (*)(Complex&, A...)> {
+  static std::vector<OpArg::Kind> kinds() { return {ArgOf<std::decay_t<A>>::kind...}; }
+  template <auto F, size_t... I>
+  static OpResult call(Complex& cx, const OpStep& s, std::index_sequence<I...>) {
+    return F(cx, ArgOf<std::decay_t<A>>::get(s, I)...);
+  }
+  template <auto F>
+  static OpResult apply(Complex& cx, const OpStep& s) {
+    return call<F>(cx, s, std::index_sequence_for<A...>{});
+  }
+};
+
+template <auto F>
+OpInfo row(OpKind kind, const char* name, char urlCode, bool keepsSheetTopology, CandidateSet candidates) {
+  using S = Signature<decltype(F)>;
+  return {kind, name, urlCode, S::kinds(), keepsSheetTopology, candidates, &S::template apply<F>};
+}
+
+constexpr bool kKeepsSheets = true, kReshapesSheets = false;
+
+std::vector<OpInfo> makeTable() {
+  using K = OpKind;
+  using C = CandidateSet;
+  std::vector<OpInfo> t = {
+      row<&pillow>(K::Pillow, "pillow", 'P', kKeepsSheets, C::InteriorQuads),
+      row<&unpillow>(K::Unpillow, "unpillow", 'Q', kKeepsSheets, C::Hexes),
+      row<&chordPush>(K::ChordPush, "chordpush", 'C', kKeepsSheets, C::EdgeStarQuadPairs),
+      row<&chordPull>(K::ChordPull, "chordpull", 'D', kKeepsSheets, C::Hexes),
+      row<&hexPush>(K::HexPush, "hexpush", 'H', kKeepsSheets, C::InteriorQuads),
+      row<&hexPull>(K::HexPull, "hexpull", 'I', kKeepsSheets, C::InteriorQuadSides),
+      row<&ringCollapse>(K::RingCollapse, "ringcollapse", 'R', kReshapesSheets, C::ClosedChordEdges),
+      row<&ringSplit>(K::RingSplit, "ringsplit", 'S', kReshapesSheets, C::None),
+      row<&faceCollapse>(K::FaceCollapse, "facecollapse", 'F', kReshapesSheets, C::EdgeStarQuadPairs),
+      row<&faceSplit>(K::FaceSplit, "facesplit", 'G', kReshapesSheets, C::SameVertexQuadPairs),
+  };
+  for (size_t k = 0; k < t.size(); ++k)
+    if (t[k].kind != OpKind(k)) throw Error("internal: the operation table is not in OpKind order");
+  return t;
+}
+
+}  // namespace
+
+const std::vector<OpInfo>& allOps() {
+  static const std::vector<OpInfo> table = makeTable();
+  return table;
+}
+
+const OpInfo& opInfo(OpKind kind) {
+  const auto& t = allOps();
+  if (size_t(kind) >= t.size()) throw Error("oplog: unknown operation (kind " + std::to_string(int(kind)) + ")");
+  return t[size_t(kind)];
+}
+
+const OpInfo* findOp(std::string_view name) {
+  for (const OpInfo& o : allOps())
+    if (name == o.name) return &o;
+  return nullptr;
+}
+
+const OpInfo* findOpByUrlCode(char code) {
+  for (const OpInfo& o : allOps())
+    if (code == o.urlCode) return &o;
+  return nullptr;
+}
+
+const char* argKindName(OpArg::Kind kind) {
+  switch (kind) {
+    case OpArg::Hex: return "a hex (h12)";
+    case OpArg::Quad: return "a quad (h12f3)";
+    case OpArg::Edge: return "an edge (h12e7)";
+    case OpArg::Pair: return "a quad pair (h1f2/h3f4)";
+  }
+  return "?";
+}
+
+void checkArgs(const OpStep& step) {
+  const OpInfo& info = opInfo(step.op);
+  const bool pairs = info.args.size() == 1 && info.args[0] == OpArg::Pair;
+  const size_t n = step.args.size();
+  if (pairs ? n < 1 : n != info.args.size())
+    throw Error(std::string(info.name) + ": takes " + (pairs ? "one or more" : std::to_string(info.args.size())) +
+                " argument(s), not " + std::to_string(n));
+  for (size_t k = 0; k < n; ++k) {
+    OpArg::Kind want = pairs ? OpArg::Pair : info.args[k];
+    if (step.args[k].kind != want)
+      throw Error(std::string(info.name) + ": argument " + std::to_string(k + 1) + " must be " + argKindName(want) +
+                  ", not '" + entityName(step.args[k]) + "'");
+  }
+}
+
+std::string entityName(HexId h) { return "h" + std::to_string(h); }
+std::string entityName(QuadSide q) { return entityName(q.hex) + "f" + std::to_string(q.face); }
+std::string entityName(EdgeRef e) { return entityName(e.hex) + "e" + std::to_string(e.edge); }
+std::string entityName(const OpArg& a) {
+  switch (a.kind) {
+    case OpArg::Hex: return entityName(a.hex);
+    case OpArg::Quad: return entityName(a.quad());
+    case OpArg::Edge: return entityName(a.edge());
+    case OpArg::Pair: return entityName(a.quad()) + "/" + entityName(a.second);
+  }
+  return "?";
+}
+
+}  // namespace hexdual

@@ -1,0 +1,49 @@
+// The table of atomic operations: one row per OpKind with everything the log, the URL form, the
+// candidates list, the dual tracker and applyStep need to know. Adding an operation is one enum
+// value (op_step.hpp), one row here (op_table.cpp) and one file in core/ops.
+#pragma once
+#include <string_view>
+#include <vector>
+
+#include "ops/op_step.hpp"
+#include "ops/ops.hpp"
+
+namespace hexdual {
+
+// Which steps `candidates` tries for an operation.
+enum class CandidateSet : uint8_t {
+  None,                 // not enumerated (ringsplit: ringcollapse reports it as its inverse)
+  InteriorQuads,        // every interior quad, once
+  InteriorQuadSides,    // every side of every interior quad
+  Hexes,                // every hex
+  EdgeStarQuadPairs,    // every closed interior edge with two quads of its cycle
+  ClosedChordEdges,     // two edges along each closed chord (the two diagonals)
+  SameVertexQuadPairs,  // every two interior quads on the same 4 vertices, both sides of the second
+};
+
+struct OpInfo {
+  OpKind kind;
+  const char* name;  // the log name, e.g. "chordpush"; also the prefix of the operation's errors
+  char urlCode;      // the letter of the URL form, e.g. 'C'
+  std::vector<OpArg::Kind> args;  // a single Pair means "one or more pairs"
+  bool keepsSheetTopology;        // never cuts, merges or re-shapes an existing sheet (DualTracker)
+  CandidateSet candidates;
+  OpResult (*apply)(Complex&, const OpStep&);  // called with arguments already checked
+};
+
+// Every operation, in OpKind order.
+const std::vector<OpInfo>& allOps();
+// The row of an operation; throws Error for a value outside the enum.
+const OpInfo& opInfo(OpKind kind);
+inline const char* opName(OpKind kind) { return opInfo(kind).name; }
+// The row with this log name or URL letter, or nullptr.
+const OpInfo* findOp(std::string_view name);
+const OpInfo* findOpByUrlCode(char code);
+// "a quad (h12f3)" and the like, for messages.
+const char* argKindName(OpArg::Kind kind);
+// Throws Error "<op>: ..." when the step's argument count or kinds do not match the table.
+void checkArgs(const OpStep& step);
+// Whether the dual tracker may update sheets locally after this result (false for composites).
+inline bool keepsSheetTopology(const OpResult& r) { return r.op && opInfo(*r.op).keepsSheetTopology; }
+
+}  // namespace hexdual

@@ -1,0 +1,16 @@
+#include "ops/report.hpp"
+
+#include "ops/op_table.hpp"
+#include "ops/oplog.hpp"
+
+namespace hexdual {
+
+StepReport applyStepTracked(Complex& cx, DualTracker& tracker, const OpStep& step) {
+  StepReport rep;
+  rep.step = step;
+  rep.result = applyStep(cx, step);
+  rep.dual = tracker.update(cx, rep.result.edits, keepsSheetTopology(rep.result));
+  return rep;
+}
+
+}  // namespace hexdual
