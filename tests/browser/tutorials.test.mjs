@@ -178,6 +178,8 @@ test('live numbers: the paper\'s counts match the engine', async () => {
   assert.equal(await page.locator('[data-live="cp-blind"]').textContent(), '1');
   await open('pillow');
   assert.equal(await page.locator('[data-live="delta"]').first().textContent(), '(+4, +8, +6, +2)');
+  // The README's picture (docs/images/tutorial.png is a copy of this file).
+  await page.locator('.figure').first().screenshot({ path: join(screenshotDir, 'tutorials-pillow-figure.png') });
   assert.equal(await page.locator('[data-live="new-sheet"]').textContent(), 'sheet 9, a sphere of 2 hexes');
   assert.equal(await page.locator('[data-live="back"]').textContent(), 'yes, all six counts equal');
   await open('collapse');

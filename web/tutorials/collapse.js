@@ -57,6 +57,7 @@ startPage(() => {
     title: 'traditional pillow',
     mesh: GRID3,
     steps: TRADITIONAL,
+    startAfter: true,
     labels: ['pillow h13f5 (i)', 'hexpush h13f5 (ii)'],
     sheet: (f) => sheetOf(f.mesh, (s) => s.topology === 'sphere') ?? sheetWith(f.mesh, [13, 22, 4]),
     sheetChips: true,
@@ -66,6 +67,7 @@ startPage(() => {
     title: 'the (2,1)-(1,2) flip',
     mesh: GRID5,
     steps: RING,
+    startAfter: true,
     sheet: (f) => sheetWith(f.mesh, [7, 12, 17, 112]), // the x = 2 sheet, through the column
     sheetChips: true,
     emphasis: (f, id) => (f.stage === 0 && [37, 62, 87].includes(id) ? '#7aa6ff' : null),
@@ -75,6 +77,7 @@ startPage(() => {
     title: 'face collapse',
     mesh: GRID4,
     steps: [FACE],
+    startAfter: true,
     sheet: (f) => (f.stage === 0 ? merged.removed[0]?.id : merged.into?.id),
     sheetChips: true,
     caption: 'TK03 §4.4: face collapse in a 4×4×4 grid. Before: one of the two sheets that merge; after: the merged sheet.',

@@ -95,7 +95,7 @@ export function createFigure(root, opts) {
   const table = el('table', { class: 'counts' }, root);
   if (opts.caption) el('p', { class: 'caption' }, root, opts.caption);
 
-  const state = { stage: opts.start || 0, sheet: null, hot: -1, picked: opts.picked ?? null, mesh: null, model: null };
+  const state = { stage: opts.startAfter ? stages.length - 1 : opts.start || 0, sheet: null, hot: -1, picked: opts.picked ?? null, mesh: null, model: null };
   let startCounts = null, startMaxId = -1, dual = null;
 
   // The 3D view (a WebGL context) is made when the figure first scrolls into sight: pages with
@@ -134,7 +134,7 @@ export function createFigure(root, opts) {
     state.model = hexModel(state.mesh);
     dual = hexSheets(state.mesh);
     if (!startCounts) {
-      const first = stages[0].ops.length ? meshAfter(spec, stages[0].ops) : null;
+      const first = state.stage !== 0 ? meshAfter(spec, stages[0].ops) : null;
       const m0 = first || state.mesh;
       startCounts = { ...m0.counts, ...m0.dualSizes() };
       startMaxId = Math.max(...hexModel(m0).ids);
@@ -149,7 +149,7 @@ export function createFigure(root, opts) {
     if (id === state.picked) return PICKED;
     const extra = opts.emphasis?.(api, id);
     if (extra) return extra;
-    if (state.sheet !== null && dual.bySheet.get(state.sheet)?.includes(id)) return colorFor(state.sheet);
+    if (opts.sheetIn3d !== false && state.sheet !== null && dual.bySheet.get(state.sheet)?.includes(id)) return colorFor(state.sheet);
     if (created(id)) return NEW;
     return null;
   }
@@ -184,7 +184,7 @@ export function createFigure(root, opts) {
     if (!view) return;
     view.draw(state.model, {
       colorOf,
-      chords: opts.chords === 'none' ? [] : sheetChords(lastDiagram),
+      chords: opts.sheetIn3d === false ? [] : sheetChords(lastDiagram),
       dualVertices: !!opts.dualVertices,
       fitKey: spec.kind === 'file' ? spec.name : meshParam(spec),
     });

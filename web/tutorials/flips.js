@@ -43,9 +43,10 @@ startPage(() => {
       title: `the ${f.name} flip`,
       mesh: FOURCUBE,
       steps: f.steps,
-      emphasis: (fg, id) => (f.before.includes(id) && fg.mesh.counts.hexes > 0 ? BEFORE : null),
+      emphasis: (fg, id) => (f.before.includes(id) ? BEFORE : null),
       sheet: (fg) => fg.mesh.sheets.find((s) => fg.mesh.sheetHexes(s.id).some((h) => f.before.includes(h)))?.id,
       sheetChips: true,
+      sheetIn3d: false,
       caption: `The closed boundary of the 4-cube; the ${f.name} flip's before side is cube${f.before.length === 1 ? '' : 's'} ${f.before.join(', ')}.`,
     });
   };

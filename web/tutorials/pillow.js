@@ -35,6 +35,7 @@ startPage(() => {
     title: 'minimal pillow and its inverse',
     mesh: spec,
     steps: [PILLOW, inverse],
+    start: 1,
     labels: [`${PILLOW}: a new sphere sheet`, `${inverse}: the inverse`],
     sheet: (f) => sheetOf(f.mesh, (s) => s.topology === 'sphere') ?? sheetWith(f.mesh, [13, 22, 4]),
     sheetChips: true,

@@ -35,6 +35,7 @@ startPage(() => {
     title: 'chord push',
     mesh: spec,
     steps: [CHORD_PUSH],
+    startAfter: true,
     sheet: (f) => sheetWith(f.mesh, [4, 10, 16, 22]), // the sheet of edge e (x = 1): it gets the blind chord
     sheetChips: true,
     caption: 'TK03 Figs. 2–3. New hexes in orange. The diagram shows the sheet of the edge e: after the push, the blind chord is the small loop through the two new crossings.',
@@ -43,6 +44,7 @@ startPage(() => {
     title: 'hex push',
     mesh: spec,
     steps: [HEX_PUSH],
+    startAfter: true,
     sheet: (f) => sheetWith(f.mesh, [10, 12, 14, 16]), // a pushed sheet (the z = 1 layer): it gets the new closed chord
     sheetChips: true,
     caption: 'TK03 Figs. 4–5: hexes 13 and 22 are replaced by a swapped pair; four new hexes surround them (all six in orange).',

@@ -36,7 +36,9 @@ startPage(() => {
     card.dataset.solved = String(verdict.ok);
     const applied = steps.slice(0, verdict.applied);
     fig?.destroy();
-    fig = createFigure(document.getElementById('fig-try'), {
+    const host = document.getElementById('fig-try');
+    card.append(host); // the result right under the exercise it answers
+    fig = createFigure(host, {
       title: `your steps: ${ex.title}`,
       mesh: ex.mesh,
       stages: stagesFromSteps(applied),
