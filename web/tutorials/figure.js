@@ -131,13 +131,14 @@ export function createFigure(root, opts) {
     const old = state.mesh;
     state.mesh = meshAfter(spec, st.ops);
     if (old) old.delete();
-    state.model = hexModel(state.mesh);
     dual = hexSheets(state.mesh);
+    // Every hex lies on a sheet, so the sheets name every live hex.
+    state.model = hexModel(state.mesh, [...dual.byHex.keys()].sort((a, b) => a - b));
     if (!startCounts) {
       const first = state.stage !== 0 ? meshAfter(spec, stages[0].ops) : null;
       const m0 = first || state.mesh;
       startCounts = { ...m0.counts, ...m0.dualSizes() };
-      startMaxId = Math.max(...hexModel(m0).ids);
+      startMaxId = Math.max(...(first ? hexSheets(m0) : dual).byHex.keys());
       if (first) first.delete();
     }
     state.sheet = chooseSheet();

@@ -39,10 +39,14 @@ export function parseHxd(text) {
   return { vertices, corners, gluings, hexCount: nh };
 }
 
-/** Builds the per-hex model: positions of corners, neighbours per face, dual points. */
-export function hexModel(mesh) {
+/**
+ * Builds the per-hex model: positions of corners, neighbours per face, dual points. `liveIds`
+ * (ascending live hex ids) saves asking the engine for them.
+ */
+export function hexModel(mesh, liveIds = null) {
   const { vertices, corners, gluings, hexCount } = parseHxd(mesh.save('hxd'));
-  const ids = liveHexIds(mesh, hexCount);
+  const ids = liveIds ?? liveHexIds(mesh, hexCount);
+  if (ids.length !== hexCount) throw new Error(`figure: ${ids.length} live hexes but ${hexCount} in the file`);
   const index = new Map(ids.map((id, k) => [id, k]));
   const neighbour = Array.from({ length: hexCount }, () => new Array(6).fill(-1));
   for (const g of gluings) {
