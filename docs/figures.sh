@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the sheet-diagram figures of docs/sheet-diagrams.md (needs the native build and
+# Regenerates the sheet-diagram figures of docs/sheet-diagrams.md and the before/after figures of
+# docs/operations.md (needs the native build and
 # rsvg-convert from Debian's librsvg2-bin). Usage: bash docs/figures.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,4 +30,19 @@ fig chordpush-pushed "$T/chordpush.hxd" 12 --local 125,126 --rings 1   # Fig. 2:
 fig chordpush-blind "$T/chordpush.hxd" 8 --local 125,126 --rings 1     # Fig. 2: the blind chord on e's sheet
 fig hexpush-sheet "$T/hexpush.hxd" 12 --local 125,126,127,128 --rings 1  # Fig. 4: the new closed chord of 4
 fig flip17-sphere "$T/flip17.hxd" 15                           # Fig. 8: the traditional pillow's sphere
+# docs/operations.md: the same sheet before and after each operation.
+$H grid 4x4x4 -o "$T/g4.hxd"
+$H apply "$T/g4.hxd" --ops 'v1;facecollapse h21e11 h21f1 h25f1' -o "$T/facecollapse.hxd" >/dev/null
+$H apply "$T/ring.hxd" --ops 'v1;ringcollapse h25e4' -o "$T/ringcollapse.hxd" >/dev/null
+fig op-pillow-before "$T/g3.hxd" 5 --local 13,22 --rings 1        # after: pillow-crossed, pillow-sphere
+fig op-chordpush-before "$T/g5.hxd" 12 --local 62,67 --rings 1    # after: chordpush-pushed
+fig op-hexpush-before "$T/g5.hxd" 12 --local 62,87 --rings 1      # after: hexpush-sheet
+fig op-ringcollapse-before "$T/ring.hxd" 3                         # an annulus of 24 hexes the ring crosses
+fig op-ringcollapse-after "$T/ringcollapse.hxd" 3                  # the same annulus, 16 hexes
+fig op-facecollapse-before-a "$T/g4.hxd" 6                         # two disks through f and g ...
+fig op-facecollapse-before-b "$T/g4.hxd" 7
+fig op-facecollapse-after "$T/facecollapse.hxd" 6                  # ... merge into one annulus
+fig torus-polygon docs/examples/torus-shell.hxd 0              # a torus sheet cut open: a b a^-1 b^-1
+fig klein-polygon docs/examples/klein-shell.hxd 0              # a Klein-bottle sheet: three seams, two twisted
+fig mobius-polygon docs/examples/twisted-ring.hxd 0            # a Moebius-band sheet: a boundary a boundary
 rm -rf "$T"

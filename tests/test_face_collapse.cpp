@@ -1,10 +1,14 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include "complex/builders.hpp"
 #include "complex/canonical.hpp"
 #include "helpers.hpp"
+#include "ops/candidates.hpp"
 #include "ops/oplog.hpp"
 #include "ops/ops.hpp"
+#include "ops/support.hpp"
 
 using namespace hexdual;
 using namespace hexdual::test;
@@ -62,11 +66,51 @@ TEST_CASE("chord push then ring collapse of the blind chord (far diagonal) equal
 TEST_CASE("face collapse rejections leave the complex untouched") {
   Complex cx = makeGrid(3, 3, 3);
   std::string before = stateDump(cx);
-  // Around the centre z-edge of a 3x3x3 grid, g = 16|17 has its far vertices on the boundary.
-  CHECK(errorOf([&] { faceCollapse(cx, {13, 11}, {13, 1}, {16, 1}); }) ==
-        "facecollapse: vertex 30 would merge but it is on the boundary");
+  // Around the centre z-edge of a 3x3x3 grid, f = h14f3 and g = h17f0 both have their far
+  // vertices on the boundary: two boundary vertices would merge.
+  CHECK(errorOf([&] { faceCollapse(cx, {13, 11}, {14, 3}, {17, 0}); }) ==
+        "facecollapse: vertices 27 and 30 would merge but both are on the boundary");
   // Consecutive quads leave arc R = {13} glued to itself: not a valid complex.
   CHECK(errorOf([&] { faceCollapse(cx, {13, 11}, {13, 1}, {13, 3}); }).rfind("facecollapse: the result would not be a valid complex", 0) == 0);
   CHECK(errorOf([&] { faceSplit(cx, {13, 1}, {13, 3}); }) == "facesplit: quads h13f1 and h13f3 are not on the same 4 vertices");
   CHECK(stateDump(cx) == before);
+}
+
+namespace {
+// The boundary quad mesh as vertex sets, sorted: what a collapse next to the boundary must keep.
+std::vector<std::array<VertexId, 4>> boundaryQuads(const Complex& cx) {
+  std::vector<std::array<VertexId, 4>> out;
+  for (QuadSide q : cx.quads())
+    if (cx.isBoundary(q)) out.push_back(ops::faceVertexSet(cx, q.hex, q.face));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+}  // namespace
+
+TEST_CASE("face collapse merging an interior vertex into a boundary vertex keeps the boundary quad mesh") {
+  Complex cx = makeGrid(3, 3, 3);
+  const Complex orig = cx;
+  const auto boundary = boundaryQuads(cx);
+  // Edge h1e3 runs from the bottom face to the centre; f's far vertices are interior, g's on the boundary.
+  OpResult r = applyStep(cx, "facecollapse h1e3 h4f5 h10f4");
+  cx.validate();
+  CHECK(r.dV == -2);
+  CHECK(r.dE == -2);
+  CHECK(r.dF == 0);
+  CHECK(r.dH == 0);
+  CHECK(r.removedVertices == std::vector<VertexId>{25, 26});  // the interior ones; the boundary ids stay
+  CHECK(boundaryQuads(cx) == boundary);
+  for (VertexId v : r.removedVertices) CHECK_FALSE(cx.isVertex(v));
+  // Its inverse splits the boundary vertices again, the new vertices on the interior side.
+  REQUIRE(r.inverse);
+  CHECK(formatOpStep(*r.inverse) == "facesplit h13f4 h4f5");
+  Complex back = cx;
+  applyStep(back, *r.inverse);
+  back.validate();
+  CHECK(isomorphic(back, orig));
+  CHECK(boundaryQuads(back) == boundary);
+  // The grid's face collapses are now listed: 24 of them (none merges two boundary vertices).
+  auto steps = candidates(orig, OpKind::FaceCollapse);
+  CHECK(steps.size() == 24);
+  CHECK(std::find(steps.begin(), steps.end(), parseOpStep("facecollapse h1e3 h4f5 h10f4")) != steps.end());
 }

@@ -90,6 +90,8 @@ void runSequence(const Complex& start, uint32_t seed, Stats& stats) {
     validateDual(cx, tracker.dual());
     compareDuals(cx, tracker.dual(), extractDual(cx));
     // The inverse operation, on a copy, gives back an isomorphic complex.
+    // Every reported inverse applies; only ring collapse may have none (with the reason).
+    REQUIRE((r.inverse || (r.op == OpKind::RingCollapse && !r.noInverse.empty())));
     if (r.inverse) {
       CAPTURE(inverse);
       Complex back = cx;

@@ -43,7 +43,7 @@ TEST_CASE("every rejection rule names the rule and leaves the complex exactly as
       {"", "ringsplit h13f1/h13f3", "ringsplit: needs at least 2 quad pairs around a loop"},
       {"", "ringsplit h13f1/h13f3 h0f0/h0f2", "ringsplit: quad h0f0 is on the boundary"},
       {"", "ringsplit h13f1/h13f0 h13f2/h13f3", "ringsplit: quads h13f1 and h13f0 must share exactly one edge"},
-      {"", "facecollapse h13e11 h13f1 h16f1", "facecollapse: vertex 30 would merge but it is on the boundary"},
+      {"", "facecollapse h13e11 h14f3 h17f0", "facecollapse: vertices 27 and 30 would merge but both are on the boundary"},
       {"", "facecollapse h13e11 h13f1 h14f0", "facecollapse: f and g are the same quad; face collapse needs two distinct quads"},
       {"", "facesplit h13f1 h13f1", "facesplit: the two sides belong to the same quad"},
       {"", "facesplit h13f1 h0f0", "facesplit: quad h0f0 is on the boundary"},

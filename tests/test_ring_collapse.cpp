@@ -1,10 +1,13 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include "complex/builders.hpp"
 #include "complex/canonical.hpp"
 #include "helpers.hpp"
 #include "ops/oplog.hpp"
 #include "ops/ops.hpp"
+#include "ops/support.hpp"
 
 using namespace hexdual;
 using namespace hexdual::test;
@@ -85,4 +88,54 @@ TEST_CASE("hex push then ring collapse of its 4-ring: one diagonal undoes it, th
   }
   CHECK(undone == 1);
   CHECK(twoNewChords == 1);
+}
+
+TEST_CASE("ring collapse reports a ring-split inverse only when it applies; otherwise none, with the reason") {
+  // After this collapse two of the recorded side quads are the same quad (h3f3): the step
+  // `ringsplit h4f1/h3f3 h6f0/h3f3` would be rejected, so none is reported.
+  Complex cx = makeRing(3, 1, 1);
+  ApplyReport setup = applyLog(cx, "v1;hexpush h2f3;pillow h8f2;chordpush h6e8 h4f2 h6f0;pillow h11f3");
+  REQUIRE(setup.failedStep == 0);
+  Complex before = cx;
+  OpResult r = applyStep(cx, "ringcollapse h12e3");
+  cx.validate();
+  CHECK_FALSE(r.inverse);
+  CHECK(r.noInverse ==
+        "the ring split of the collapsed loop does not apply (ringsplit: the quads do not separate vertex 15 consistently)");
+  CHECK(errorOf([&] { applyStep(cx, "ringsplit h4f1/h3f3 h6f0/h3f3"); }) ==
+        "ringsplit: the quads do not separate vertex 15 consistently");
+  // The report leaves the result exactly as the collapse made it: undo restores the start.
+  cx.undo(r.edits);
+  CHECK(stateDump(cx) == stateDump(before));
+}
+
+TEST_CASE("ring collapse next to the boundary: interior vertices merge into boundary ones, the boundary stays") {
+  // The 4-ring of a hex push in the bottom layer of a 3x3x4 grid: its collapse merges interior
+  // vertices into bottom-face vertices, which keep their ids.
+  Complex cx = makeGrid(3, 3, 4);
+  std::vector<std::array<VertexId, 4>> boundary;
+  auto boundaryQuads = [](const Complex& c) {
+    std::vector<std::array<VertexId, 4>> out;
+    for (QuadSide q : c.quads())
+      if (c.isBoundary(q)) out.push_back(ops::faceVertexSet(c, q.hex, q.face));
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  boundary = boundaryQuads(cx);
+  REQUIRE(applyLog(cx, "v1;hexpush h4f5").failedStep == 0);
+  const Complex pushed = cx;
+  OpResult r = applyStep(cx, "ringcollapse h38e4");
+  cx.validate();
+  CHECK(r.dV == -4);
+  CHECK(r.dE == -12);
+  CHECK(r.dF == -12);
+  CHECK(r.dH == -4);
+  CHECK(boundaryQuads(cx) == boundary);
+  // The ring split puts the new vertices inside, off the boundary: the inverse applies.
+  REQUIRE(r.inverse);
+  Complex back = cx;
+  applyStep(back, *r.inverse);
+  back.validate();
+  CHECK(isomorphic(back, pushed));
+  CHECK(boundaryQuads(back) == boundary);
 }

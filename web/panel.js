@@ -1,5 +1,5 @@
 // The side panel: mesh chooser, counts, and the sheet / chord pickers.
-import { colorFor } from './colors.js';
+import { sheetColor, chordColor } from './colors.js';
 
 export function createPanel(root, actions) {
   const $ = (sel) => root.querySelector(sel);
@@ -37,7 +37,7 @@ export function createPanel(root, actions) {
         if (selection && selection.kind === kind && selection.id === item.id) li.classList.add('selected');
         const sw = document.createElement('span');
         sw.className = 'swatch';
-        sw.style.background = colorFor(kind === 'sheet' ? item.id : item.id + 1000);
+        sw.style.background = kind === 'sheet' ? sheetColor(item.id) : chordColor(item.id);
         const text = document.createElement('span');
         text.innerHTML = `${kind} ${item.id} <span class="tag">${describe(item)}</span>`;
         li.append(sw, text);

@@ -1,6 +1,6 @@
 // The sheet diagram of the selected sheet, drawn as SVG from the engine's JSON. Clicking a chord
 // selects it (and highlights its hexes in 3D); the selected chord is drawn thicker.
-import { colorFor } from './colors.js';
+import { chordColor } from './colors.js';
 
 const NS = 'http://www.w3.org/2000/svg';
 
@@ -39,7 +39,7 @@ export function createSheetDiagram(container, actions) {
       const line = el('polyline', {
         points: c.points.map((p) => p.join(',')).join(' '),
         fill: 'none',
-        stroke: colorFor(c.otherSheet),
+        stroke: chordColor(c.id),
         'stroke-width': selected ? 0.05 : 0.022,
         'data-chord': c.id,
         class: 'chord',

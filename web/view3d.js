@@ -2,7 +2,7 @@
 // everything else faint. Buffers come from the wasm module (built in C++).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { colorFor } from './colors.js';
+import { sheetColor, chordColor } from './colors.js';
 
 export function createView3d(container) {
   const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
@@ -100,7 +100,7 @@ export function createView3d(container) {
       if (state.selection) {
         const { kind, id } = state.selection;
         highlight = new Set(kind === 'sheet' ? state.mesh.sheetHexes(id) : state.mesh.chordHexes(id));
-        color = colorFor(kind === 'sheet' ? id : id + 1000);
+        color = kind === 'sheet' ? sheetColor(id) : chordColor(id);
       }
       rebuild(rb, highlight, color, state.meshKey, state.mesh.counts.boundaryQuads === 0);
     },

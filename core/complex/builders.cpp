@@ -88,6 +88,32 @@ Complex makeTwistedRing(int around) {
   return fromConnectivity(pts, hexes);
 }
 
+Complex makeTorusShell(int around, int tube, int layers, bool klein) {
+  if (around < 3 || tube < 3 || layers < 1 || int64_t(around) * tube * layers > 10'000'000)
+    throw Error("torus shell: needs at least 3 around and 3 along the tube, 1 layer, at most 10^7 hexes");
+  const double pi = std::acos(-1.0), R = 1.0 + 0.5 * (tube + layers);
+  std::vector<Vec3> pts;
+  for (int s = 0; s <= layers; ++s)
+    for (int p = 0; p < tube; ++p)
+      for (int t = 0; t < around; ++t) {
+        double th = 2 * pi * t / around, ph = 2 * pi * p / tube, r = 1.0 + 0.4 * s;
+        pts.push_back({(R + r * std::cos(ph)) * std::cos(th), (R + r * std::cos(ph)) * std::sin(th), r * std::sin(ph)});
+      }
+  auto vid = [&](int t, int p, int s) {
+    if (t == around && klein) p = tube - p;  // once around, the tube comes back reflected
+    return VertexId((t % around) + around * ((p % tube) + tube * s));
+  };
+  std::vector<std::array<VertexId, 8>> hexes;
+  for (int s = 0; s < layers; ++s)
+    for (int p = 0; p < tube; ++p)
+      for (int t = 0; t < around; ++t) {
+        std::array<VertexId, 8> v;
+        for (int q = 0; q < 8; ++q) v[size_t(q)] = vid(t + cornerBit(q, 1), p + cornerBit(q, 2), s + cornerBit(q, 0));
+        hexes.push_back(v);
+      }
+  return fromConnectivity(pts, hexes);
+}
+
 namespace {
 struct FaceKey {
   std::array<VertexId, 4> key;

@@ -18,6 +18,11 @@ Complex makeRing(int around, int radial, int axial);
 // ring closes: the radial and axial layers become one self-intersecting sheet through every hex.
 Complex makeTwistedRing(int around);
 
+// A thickened torus: `around` x `tube` hexes on a torus surface (both directions closed), `layers`
+// thick. Its `layers` sheets parallel to the surface are tori. With `klein`, going once around
+// reflects the tube, so those sheets are Klein bottles (the complex is not orientable).
+Complex makeTorusShell(int around, int tube, int layers, bool klein = false);
+
 // Glues hexes given as 8 vertex ids each (VTK order) wherever two hexes share a quad's 4 vertices
 // in the same cycle. Throws Error when a quad would be shared by three or more hexes, when two
 // hexes share 4 vertices in different cyclic orders, or when a hex repeats a vertex.

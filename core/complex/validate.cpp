@@ -1,4 +1,4 @@
-// Complex::validate(): every invariant of DESIGN.md, with a message naming the first violation.
+// Complex::validate(): every invariant of the complex (docs/model.md), with a message naming the first violation.
 #include <algorithm>
 #include <string>
 

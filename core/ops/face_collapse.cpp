@@ -1,4 +1,4 @@
-// Face open-collapse and its inverse (MOAB face_open_collapse; OPERATIONS.md 4b).
+// Face open-collapse and its inverse (TK03 §4.4; MOAB face_open_collapse).
 #include "ops/support.hpp"
 
 namespace hexdual {
@@ -20,16 +20,21 @@ OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
   const QuadSide fL = sp.fL, fR = sp.fR, gL = sp.gL, gR = sp.gR;
   const EdgeRef li = sp.li, lj = sp.lj;
   const VertexId c = sp.fa, d = sp.fb, c2 = sp.ga, d2 = sp.gb;
-  // c merges with c2 and d with d2 (each pair keeps its smaller id); none may be on the boundary.
+  // c merges with c2 and d with d2. A boundary vertex keeps its id and place, so the boundary quad
+  // mesh is unchanged; two boundary vertices never merge. Otherwise the smaller id stays.
+  auto survivor = [&](VertexId x, HexId hx, VertexId y, HexId hy) {
+    const bool bx = vertexOnBoundary(cx, hx, cornerWithVertex(cx, hx, x));
+    const bool by = vertexOnBoundary(cx, hy, cornerWithVertex(cx, hy, y));
+    if (bx && by)
+      reject(op, "vertices " + std::to_string(x) + " and " + std::to_string(y) + " would merge but both are on the boundary");
+    return bx ? x : by ? y : std::min(x, y);
+  };
   std::vector<std::pair<HexId, int>> cornersC2, cornersD2, cornersC, cornersD;
   cornersC = cx.cornersOfVertex(li.hex, cornerWithVertex(cx, li.hex, c));
   cornersD = cx.cornersOfVertex(li.hex, cornerWithVertex(cx, li.hex, d));
   cornersC2 = cx.cornersOfVertex(lj.hex, cornerWithVertex(cx, lj.hex, c2));
   cornersD2 = cx.cornersOfVertex(lj.hex, cornerWithVertex(cx, lj.hex, d2));
-  for (auto [h, vtx] : {std::pair{li.hex, c}, std::pair{li.hex, d}, std::pair{lj.hex, c2}, std::pair{lj.hex, d2}})
-    if (vertexOnBoundary(cx, h, cornerWithVertex(cx, h, vtx)))
-      reject(op, "vertex " + std::to_string(vtx) + " would merge but it is on the boundary");
-  const VertexId keepC = std::min(c, c2), keepD = std::min(d, d2);
+  const VertexId keepC = survivor(c, li.hex, c2, lj.hex), keepD = survivor(d, li.hex, d2, lj.hex);
   std::vector<HexId> touched;
   Transaction tx(cx);
   cx.unglue(fL.hex, fL.face);
@@ -46,7 +51,7 @@ OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
     }
   OpResult r;
   r.op = kind;
-  r.removedVertices = {std::max(c, c2), std::max(d, d2)};
+  r.removedVertices = {keepC == c ? c2 : c, keepD == d ? d2 : d};
   if (fL == gL || fR == gR) reject(op, "the collapse would glue a quad to itself");
   int o1 = orientByVertices(cx, fL.hex, fL.face, gL.hex, gL.face), o2 = orientByVertices(cx, fR.hex, fR.face, gR.hex, gR.face);
   if (o1 < 0 || o2 < 0) reject(op, "after merging, the opened quads do not carry the same vertices");
@@ -95,14 +100,7 @@ OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR) {
   };
   std::vector<Split> splits;
   for (int corner : {cC, cD}) {
-    auto keep = cornersOnSide(cx, {sL.hex, corner}, walls);
-    auto all = cx.cornersOfVertex(sL.hex, corner);
-    if (vertexOnBoundary(cx, sL.hex, corner)) reject(op, "vertex " + std::to_string(cx.vertex(sL.hex, corner)) + " is on the boundary");
-    Split s{cx.vertex(sL.hex, corner), {}};
-    for (auto k : all)
-      if (std::find(keep.begin(), keep.end(), k) == keep.end()) s.gSide.push_back(k);
-    if (s.gSide.empty() || cornersOnSide(cx, s.gSide[0], walls).size() != s.gSide.size())
-      reject(op, "the two quads do not cut vertex " + std::to_string(s.v) + " into two sides");
+    Split s{cx.vertex(sL.hex, corner), splitVertex(cx, {sL.hex, corner}, walls, op, "the two quads").moved};
     splits.push_back(s);
   }
   Transaction tx(cx);

@@ -51,24 +51,27 @@ OpResult hexPull(Complex& cx, QuadSide r);
 // The chord through hex h along the axis of local edge e must be a ring (closed, never on the
 // boundary, not passing a hex twice). Collapses its cross-section along the diagonal of e: the
 // vertex lines of e and of the diagonally opposite edge merge; side quads meeting at the other
-// diagonal's edges glue to each other. Rejected if the diagonal is not carried consistently around
-// the ring, if a merged vertex or side quad is on the boundary, or if the result is not a valid
-// complex. Delta (-n,-3n,-3n,-n) for a ring of n hexes whose sides all touch other hexes.
+// diagonal's edges glue to each other. A merged class holding a boundary vertex keeps that
+// vertex, so the boundary quad mesh never changes. Rejected if the diagonal is not carried
+// consistently around the ring, if two boundary vertices would merge, if a side quad is on the
+// boundary, or if the result is not a valid complex. Delta (-n,-3n,-3n,-n) for a ring of n hexes
+// whose sides all touch other hexes. Its inverse (a ringSplit) is reported only when it applies.
 OpResult ringCollapse(Complex& cx, EdgeRef e);
 // The inverse: `bands` lists, in order around a closed loop of edges, pairs of interior quads
 // (f_k, g_k) sharing the loop's k-th edge; the f's and the g's each form a strip. Cuts the strips
-// open, splits the loop's vertices in two, and inserts a ring of n hexes. ringCollapse returns the
-// matching ringSplit step in OpResult::inverse.
+// open, splits the loop's vertices in two (the side on the boundary keeps the id), and inserts a
+// ring of n hexes.
 OpResult ringSplit(Complex& cx, const std::vector<std::pair<QuadSide, QuadSide>>& bands);
 
-// ---- 4b. face open-collapse (MOAB face_open_collapse) ----
+// ---- 4b. face open-collapse (TK03 §4.4; MOAB face_open_collapse) ----
 // e = ab interior with a closed cycle; f = (a,b,c,d), g = (a,b,c',d') two distinct quads of it.
 // Cuts f and g, glues arc L's two open sides to each other and R's likewise; c merges with c',
-// d with d'. Delta (-2,-2,0,0). Rejected when the result would not be a valid complex.
+// d with d'; a boundary vertex keeps its id, so the boundary quad mesh never changes. Delta
+// (-2,-2,0,0). Rejected when two boundary vertices would merge or the result would not be valid.
 OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g);
 // The inverse: sL is a side of a quad whose two sides will be cut apart, sR a side of a second
 // quad on the same 4 vertices; sL is re-glued to sR and their partners to each other, and the two
-// vertices not on the quads' shared edge split in two.
+// vertices not on the quads' shared edge split in two (the side on the boundary keeps the id).
 OpResult faceSplit(Complex& cx, QuadSide sL, QuadSide sR);
 
 }  // namespace hexdual

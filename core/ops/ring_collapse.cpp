@@ -53,6 +53,24 @@ std::vector<RingHex> walkRing(const Complex& cx, EdgeRef e, const std::string& o
   }
 }
 
+// The inverse: one (f, g) pair per ring hex, the outside sides met at the two kept edges. After
+// the collapse two of those quads can have been glued into one, or onto the boundary: the step is
+// reported only when it applies and restores the counts (tried, then undone exactly).
+void reportInverseIfValid(Complex& cx, OpResult& res, const std::vector<std::pair<QuadSide, QuadSide>>& bands) {
+  OpStep inv{OpKind::RingSplit, {}, 0};
+  for (auto [f, g] : bands) inv.args.push_back(OpArg::of(f, g));
+  try {
+    OpResult back = ringSplit(cx, bands);
+    cx.undo(back.edits);
+    if (back.dV != -res.dV || back.dE != -res.dE || back.dF != -res.dF || back.dH != -res.dH)
+      res.noInverse = "the ring split of the collapsed loop would not restore the counts";
+    else
+      res.inverse = inv;
+  } catch (const Error& e) {
+    res.noInverse = "the ring split of the collapsed loop does not apply (" + std::string(e.what()) + ")";
+  }
+}
+
 }  // namespace
 
 OpResult ringCollapse(Complex& cx, EdgeRef e) {
@@ -66,7 +84,7 @@ OpResult ringCollapse(Complex& cx, EdgeRef e) {
   };
   // Side faces, their collapse partners (the other side face at the same kept corner edge).
   std::map<std::pair<HexId, int>, int> collapsePartner;
-  std::map<VertexId, VertexId> merge;  // vertex -> representative (smallest id of its class)
+  std::map<VertexId, VertexId> merge;  // vertex -> representative (the smallest id of its class)
   auto find = [&](VertexId v) {
     while (merge.count(v) && merge[v] != v) v = merge[v];
     return v;
@@ -91,9 +109,21 @@ OpResult ringCollapse(Complex& cx, EdgeRef e) {
       if (v1 != v2) merge[std::max(v1, v2)] = std::min(v1, v2);
     }
   }
-  for (auto [h, c] : mergedCorners)
-    if (vertexOnBoundary(cx, h, c))
-      reject(op, "vertex " + std::to_string(cx.vertex(h, c)) + " would merge but it is on the boundary");
+  // A class holding a boundary vertex merges into it (id and place kept), so the boundary quad
+  // mesh is unchanged; two boundary vertices never merge.
+  std::map<VertexId, VertexId> boundaryOf;  // class representative -> its boundary vertex
+  for (auto [h, c] : mergedCorners) {
+    if (!vertexOnBoundary(cx, h, c)) continue;
+    VertexId v = cx.vertex(h, c);
+    auto [it, fresh] = boundaryOf.emplace(find(v), v);
+    if (!fresh && it->second != v)
+      reject(op, "vertices " + std::to_string(it->second) + " and " + std::to_string(v) +
+                     " would merge but both are on the boundary");
+  }
+  auto target = [&](VertexId v) {
+    auto it = boundaryOf.find(find(v));
+    return it == boundaryOf.end() ? find(v) : it->second;
+  };
 
   // Chase side gluings through collapse pairs: outside side -> ring side -> partner -> ... -> outside side.
   std::vector<std::pair<QuadSide, QuadSide>> outsidePairs;
@@ -146,7 +176,7 @@ OpResult ringCollapse(Complex& cx, EdgeRef e) {
   for (const RingHex& r : ring)
     for (int f = 0; f < 6; ++f) cx.unglue(r.hex, f);
   for (const RingHex& r : ring) cx.removeHex(r.hex);
-  for (auto [h, c] : renumber) cx.setCorner(h, c, find(cx.vertex(h, c)));
+  for (auto [h, c] : renumber) cx.setCorner(h, c, target(cx.vertex(h, c)));
   OpResult res;
   res.op = kind;
   for (auto [a, b] : outsidePairs) {
@@ -161,12 +191,13 @@ OpResult ringCollapse(Complex& cx, EdgeRef e) {
   ringVertices.erase(std::unique(ringVertices.begin(), ringVertices.end()), ringVertices.end());
   for (VertexId v : ringVertices)
     if (!cx.isVertex(v)) res.removedVertices.push_back(v);
-  // The inverse: one (f, g) pair per ring hex when every side touched an outside hex.
-  if (allOutside) {
-    OpStep inv{OpKind::RingSplit, {}, 0};
-    for (auto [f, g] : bandSides) inv.args.push_back(OpArg::of(cx.canonical(f), cx.canonical(g)));
-    res.inverse = inv;
+  if (!allOutside) {
+    res.noInverse = "a side quad of the ring was glued to the ring itself";
+    return res;
   }
+  std::vector<std::pair<QuadSide, QuadSide>> bands;
+  for (auto [f, g] : bandSides) bands.push_back({cx.canonical(f), cx.canonical(g)});
+  reportInverseIfValid(cx, res, bands);
   return res;
 }
 
@@ -230,7 +261,8 @@ OpResult ringSplit(Complex& cx, const std::vector<std::pair<QuadSide, QuadSide>>
     if (adjacentIn(F[prev], M[k], M[prev]) != C01[k] || adjacentIn(G[prev], M[k], M[prev]) != C23[k])
       reject(op, "the quads do not form two strips along the loop (pair " + std::to_string(k) + ")");
   }
-  // Split each loop vertex: side A (keeps the id) is reached from f_k's A side without crossing walls.
+  // Split each loop vertex: side A is reached from f_k's A side without crossing walls. Side B
+  // takes the new vertex, unless the boundary is on side B: then side A does.
   auto cornerOf = [&](QuadSide s, VertexId v) {
     for (int p = 0; p < 4; ++p)
       if (cx.vertex(s.hex, kFaceCorners[size_t(s.face)][size_t(p)]) == v)
@@ -238,27 +270,23 @@ OpResult ringSplit(Complex& cx, const std::vector<std::pair<QuadSide, QuadSide>>
     return std::pair<HexId, int>{-1, -1};
   };
   auto partnerOf = [&](QuadSide s) { return QuadSide{cx.gluing(s).hex, cx.gluing(s).face}; };
-  std::vector<std::vector<std::pair<HexId, int>>> sideB(n);
+  std::vector<std::vector<std::pair<HexId, int>>> moved(n);  // per loop vertex: the corners that take the new vertex
+  std::vector<bool> movedIsA(n, false);  // side B is on the boundary: side A takes the new vertex
   std::vector<QuadSide> fA(n), gA(n);
   QuadSide seedSide = F[0];
   for (size_t k = 0; k <= n; ++k) {
     size_t kk = k % n;
     auto seed = cornerOf(seedSide, M[kk]);
-    auto A = cornersOnSide(cx, seed, walls);
-    auto all = cx.cornersOfVertex(seed.first, seed.second);
     if (k == n) {
+      auto A = cornersOnSide(cx, seed, walls);
       if (std::find(A.begin(), A.end(), cornerOf(fA[0], M[0])) == A.end())
         reject(op, "the strips are one-sided (a Moebius band); the ring cannot be split");
       break;
     }
-    if (A.size() == all.size()) reject(op, "the quads do not separate vertex " + std::to_string(M[kk]) + " into two sides");
-    std::vector<std::pair<HexId, int>> B;
-    for (auto c : all)
-      if (std::find(A.begin(), A.end(), c) == A.end()) B.push_back(c);
-    if (cornersOnSide(cx, B[0], walls).size() != B.size())
-      reject(op, "the quads cut vertex " + std::to_string(M[kk]) + " into more than two sides");
-    if (vertexOnBoundary(cx, seed.first, seed.second)) reject(op, "vertex " + std::to_string(M[kk]) + " is on the boundary");
-    sideB[kk] = B;
+    VertexSplit split = splitVertex(cx, seed, walls, op, "the quads");
+    movedIsA[kk] = std::find(split.moved.begin(), split.moved.end(), seed) != split.moved.end();
+    const auto& A = movedIsA[kk] ? split.moved : split.keep;
+    moved[kk] = split.moved;
     auto inA = [&](QuadSide s) { return std::find(A.begin(), A.end(), cornerOf(s, M[kk])) != A.end(); };
     fA[kk] = inA(F[kk]) ? F[kk] : partnerOf(F[kk]);
     gA[kk] = inA(G[kk]) ? G[kk] : partnerOf(G[kk]);
@@ -277,24 +305,26 @@ OpResult ringSplit(Complex& cx, const std::vector<std::pair<QuadSide, QuadSide>>
     cx.unglue(fA[k].hex, fA[k].face);
     cx.unglue(gA[k].hex, gA[k].face);
   }
-  std::vector<VertexId> M2(n);
+  std::vector<VertexId> M2(n), atA(n), atB(n);
   for (size_t k = 0; k < n; ++k) {
     Vec3 c;
-    for (auto [h, cc] : sideB[k]) c = c + (1.0 / double(sideB[k].size())) * cx.hexCentroid(h);
+    for (auto [h, cc] : moved[k]) c = c + (1.0 / double(moved[k].size())) * cx.hexCentroid(h);
     Vec3 p = cx.position(M[k]);
     M2[k] = cx.addVertex(p + 0.2 * (c - p));
-    for (auto [h, cc] : sideB[k]) cx.setCorner(h, cc, M2[k]);
+    for (auto [h, cc] : moved[k]) cx.setCorner(h, cc, M2[k]);
+    atA[k] = movedIsA[k] ? M2[k] : M[k];
+    atB[k] = movedIsA[k] ? M[k] : M2[k];
   }
   std::vector<HexId> ringHexes;
   for (size_t k = 0; k < n; ++k) {
     size_t k1 = (k + 1) % n;
     std::array<VertexId, 8> v;
-    v[size_t(cornerAt(0, 0, 0))] = M2[k];
-    v[size_t(cornerAt(1, 0, 0))] = M2[k1];
+    v[size_t(cornerAt(0, 0, 0))] = atB[k];
+    v[size_t(cornerAt(1, 0, 0))] = atB[k1];
     v[size_t(cornerAt(0, 1, 0))] = C01[k];
     v[size_t(cornerAt(1, 1, 0))] = C01[k1];
-    v[size_t(cornerAt(0, 1, 1))] = M[k];
-    v[size_t(cornerAt(1, 1, 1))] = M[k1];
+    v[size_t(cornerAt(0, 1, 1))] = atA[k];
+    v[size_t(cornerAt(1, 1, 1))] = atA[k1];
     v[size_t(cornerAt(0, 0, 1))] = C23[k];
     v[size_t(cornerAt(1, 0, 1))] = C23[k1];
     ringHexes.push_back(cx.addHex(v));

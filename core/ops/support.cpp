@@ -79,12 +79,14 @@ int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side) {
   return -1;
 }
 
-bool vertexOnBoundary(const Complex& cx, HexId h, int c) {
-  for (auto [hh, cc] : cx.cornersOfVertex(h, c))
-    for (int f : facesOfCorner(cc))
-      if (cx.gluing(hh, f).boundary()) return true;
+bool cornersOnBoundary(const Complex& cx, const std::vector<std::pair<HexId, int>>& corners) {
+  for (auto [h, c] : corners)
+    for (int f : facesOfCorner(c))
+      if (cx.gluing(h, f).boundary()) return true;
   return false;
 }
+
+bool vertexOnBoundary(const Complex& cx, HexId h, int c) { return cornersOnBoundary(cx, cx.cornersOfVertex(h, c)); }
 
 namespace {
 // The vertex of face f of hex h next to corner c, on the side away from corner `away`.
@@ -171,6 +173,39 @@ std::vector<std::pair<HexId, int>> cornersOnSide(const Complex& cx, std::pair<He
     }
   }
   return out;
+}
+
+VertexSplit splitVertex(const Complex& cx, std::pair<HexId, int> seed, const std::vector<QuadSide>& walls,
+                        const std::string& op, const std::string& what) {
+  const VertexId v = cx.vertex(seed.first, seed.second);
+  std::vector<std::vector<std::pair<HexId, int>>> pieces;
+  std::vector<std::pair<HexId, int>> left = cx.cornersOfVertex(seed.first, seed.second);
+  for (auto start = seed; !left.empty(); start = left.front()) {
+    pieces.push_back(cornersOnSide(cx, start, walls));
+    for (auto c : pieces.back()) left.erase(std::remove(left.begin(), left.end(), c), left.end());
+  }
+  if (pieces.size() < 2) reject(op, what + " do not cut vertex " + std::to_string(v) + " into two sides");
+  VertexSplit s;
+  if (pieces.size() == 2) {
+    s.keep = pieces[0];
+    s.moved = pieces[1];
+    if (cornersOnBoundary(cx, s.moved)) {
+      if (cornersOnBoundary(cx, s.keep))
+        reject(op, "vertex " + std::to_string(v) + " is on the boundary on both sides; splitting it would change the boundary");
+      std::swap(s.keep, s.moved);
+    }
+    return s;
+  }
+  for (auto& p : pieces) {
+    if (!cornersOnBoundary(cx, p)) {
+      if (!s.moved.empty()) reject(op, what + " cut vertex " + std::to_string(v) + " into more than two sides");
+      s.moved = p;
+    } else {
+      s.keep.insert(s.keep.end(), p.begin(), p.end());
+    }
+  }
+  if (s.moved.empty()) reject(op, what + " cut vertex " + std::to_string(v) + " into more than two sides");
+  return s;
 }
 
 }  // namespace hexdual::ops

@@ -38,6 +38,8 @@ EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op);
 // Index k of quad k of the star that has `side` as one of its sides, or -1.
 int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side);
 
+// Whether any of these (hex, corner) incidences has a face on the boundary.
+bool cornersOnBoundary(const Complex& cx, const std::vector<std::pair<HexId, int>>& corners);
 // Whether the vertex at corner c of hex h lies on the boundary (walks its corners).
 bool vertexOnBoundary(const Complex& cx, HexId h, int c);
 
@@ -85,6 +87,18 @@ class Transaction {
 // quads through v: corners reachable from `seed` without crossing any of `walls` (quad sides).
 std::vector<std::pair<HexId, int>> cornersOnSide(const Complex& cx, std::pair<HexId, int> seed,
                                                  const std::vector<QuadSide>& walls);
+
+// How a vertex splits along walls (quad sides through it): `keep` keeps its id, `moved` takes a
+// new vertex. Normally the walls cut its corners in two and the seed's side keeps the id. The
+// side on the boundary always keeps it, so the boundary quad mesh is unchanged: if only the other
+// side is on the boundary the two swap, and at a boundary vertex the walls may cut off pieces
+// touching the boundary around one piece inside, which alone moves. Rejects (as op) otherwise,
+// naming the walls as `walls` ("the two quads").
+struct VertexSplit {
+  std::vector<std::pair<HexId, int>> keep, moved;
+};
+VertexSplit splitVertex(const Complex& cx, std::pair<HexId, int> seed, const std::vector<QuadSide>& walls,
+                        const std::string& op, const std::string& what);
 
 }  // namespace hexdual::ops
 

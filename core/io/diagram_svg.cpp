@@ -1,0 +1,96 @@
+#include "io/diagram_svg.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "layout/palette.hpp"
+
+namespace hexdual {
+
+namespace {
+
+struct Canvas {
+  double S = 200, M = 1.2;  // scale; margin in diagram units
+  double X(double x) const { return S * (x + M); }
+  double Y(double y) const { return S * (M - y); }
+  std::string points(const std::vector<Point2>& ps) const {
+    std::string out;
+    char buf[64];
+    for (Point2 p : ps) {
+      std::snprintf(buf, sizeof buf, "%.1f,%.1f ", X(p.x), Y(p.y));
+      out += buf;
+    }
+    return out;
+  }
+};
+
+// A seam side: thick, in its pair's colour, an arrow along the gluing direction at its middle,
+// and its label just outside the circle.
+std::string seamSvg(const Canvas& cv, const SheetDiagram::Arc& a) {
+  if (a.pair < 0 || a.points.size() < 2) return "";
+  std::string colour = palette::seamColor(a.pair);
+  std::string out = "<polyline points=\"" + cv.points(a.points) + "\" fill=\"none\" stroke=\"" + colour +
+                    "\" stroke-width=\"4\" stroke-opacity=\"0.7\"><title>seam " + a.label + "</title></polyline>\n";
+  size_t k = (a.points.size() - 1) / 2;
+  Point2 p = a.points[k], q = a.points[k + 1];
+  if (a.sign < 0) std::swap(p, q);
+  double dx = cv.X(q.x) - cv.X(p.x), dy = cv.Y(q.y) - cv.Y(p.y), len = std::hypot(dx, dy);
+  Point2 m{0.5 * (p.x + q.x), 0.5 * (p.y + q.y)};
+  char buf[320];
+  if (len > 1e-9) {
+    dx /= len;
+    dy /= len;
+    double mx = cv.X(m.x), my = cv.Y(m.y);
+    std::snprintf(buf, sizeof buf, "<polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"%s\"/>\n", mx + 7 * dx, my + 7 * dy,
+                  mx - 5 * dx + 5 * dy, my - 5 * dy - 5 * dx, mx - 5 * dx - 5 * dy, my - 5 * dy + 5 * dx, colour.c_str());
+    out += buf;
+  }
+  double r = std::hypot(m.x, m.y), lx = r > 1e-9 ? m.x / r * 1.09 : m.x, ly = r > 1e-9 ? m.y / r * 1.09 : m.y;
+  std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"14\" font-weight=\"bold\" text-anchor=\"middle\" fill=\"%s\">%s</text>\n",
+                cv.X(lx), cv.Y(ly) + 5, colour.c_str(), a.label.c_str());
+  return out + buf;
+}
+
+}  // namespace
+
+std::string diagramSvg(const SheetDiagram& d) {
+  Canvas cv;
+  cv.M = d.openedHex >= 0 ? 1.65 : 1.2;
+  const double S = cv.S, M = cv.M;
+  char buf[256];
+  std::string out;
+  std::snprintf(buf, sizeof buf,
+                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
+                "font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
+                2 * S * M, 2 * S * M + 24, 2 * S * M, 2 * S * M + 24);
+  out += buf;
+  std::snprintf(buf, sizeof buf, "<text x=\"8\" y=\"%.0f\" font-size=\"13\">sheet %d · %s · %s</text>\n", 2 * S * M + 16, d.sheet,
+                d.topology.c_str(), d.method.c_str());
+  out += buf;
+  if (d.local) {
+    std::snprintf(buf, sizeof buf, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"none\" stroke=\"#555\" stroke-dasharray=\"6 5\"/>\n", cv.X(0),
+                  cv.Y(0), S);
+    out += buf;
+  }
+  for (size_t k = 0; k < d.loops.size(); ++k)
+    out += "<polygon points=\"" + cv.points(d.loops[k]) + "\" fill=\"" + std::string(k == 0 ? "#f4f6fa" : "white") +
+           "\" stroke=\"#222\" stroke-width=\"" + (d.local ? "0.8" : "1.6") + "\"" + (d.local ? " stroke-dasharray=\"2 3\"" : "") + "/>\n";
+  for (const auto& a : d.arcs) out += seamSvg(cv, a);
+  for (const auto& c : d.chords)
+    out += "<polyline points=\"" + cv.points(c.points) + "\" fill=\"none\" stroke=\"" + palette::chordColor(c.chord) +
+           "\" stroke-width=\"2.2\"><title>chord " + std::to_string(c.chord) + " (with sheet " + std::to_string(c.otherSheet) +
+           ")</title></polyline>\n";
+  for (const auto& b : d.boundary) {
+    std::snprintf(buf, sizeof buf, "<rect x=\"%.1f\" y=\"%.1f\" width=\"5\" height=\"5\" fill=\"#222\"/>\n", cv.X(b.p.x) - 2.5, cv.Y(b.p.y) - 2.5);
+    out += buf;
+  }
+  for (const auto& c : d.crossings) {
+    std::snprintf(buf, sizeof buf,
+                  "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4.5\" fill=\"%s\" stroke=\"#111\"/><text x=\"%.1f\" y=\"%.1f\">%d</text>\n", cv.X(c.p.x),
+                  cv.Y(c.p.y), c.outside ? "#fc6" : "#fff", cv.X(c.p.x) + 6, cv.Y(c.p.y) - 6, c.hex);
+    out += buf;
+  }
+  return out + "</svg>\n";
+}
+
+}  // namespace hexdual
