@@ -1,7 +1,7 @@
 // A sheet diagram (TK03 §1.1) as responsive SVG from the engine's layout: boundary loops, chords
-// coloured by their other sheet, crossings (= hexes) labelled with hex ids. Hovering a crossing
+// in their own colour (as in 3D), crossings (= hexes) labelled with hex ids, a cut-open sheet's seams. Hovering a crossing
 // reports its hex; `mark(hexId)` outlines the crossings of a hex.
-import { colorFor } from '../colors.js';
+import { chordColor } from '../colors.js';
 
 const NS = 'http://www.w3.org/2000/svg';
 
@@ -28,9 +28,17 @@ export function createDiagram(container, { onHover } = {}) {
     d.loops.forEach((loop, i) =>
       el('polygon', { points: loop.map((p) => p.join(',')).join(' '), fill: i === 0 ? '#f4f6fa' : 'white', stroke: '#222', 'stroke-width': d.local ? 0.006 : 0.012 }, g),
     );
+    // A sheet cut open into a polygon: each seam is drawn on two sides, labelled alike.
+    for (const a of d.arcs || []) {
+      if (a.pair < 0) continue;
+      el('polyline', { points: a.points.map((p) => p.join(',')).join(' '), fill: 'none', stroke: '#555', 'stroke-width': 0.03, 'stroke-dasharray': '0.06 0.03' }, g);
+      const mid = a.points[Math.floor(a.points.length / 2)];
+      const t = el('text', { x: mid[0] * 1.08, y: -mid[1] * 1.08, 'font-size': 0.09, 'font-weight': 700, transform: 'scale(1,-1)', 'text-anchor': 'middle' }, g);
+      t.textContent = a.label;
+    }
     for (const c of d.chords) {
       el('polyline', {
-        points: c.points.map((p) => p.join(',')).join(' '), fill: 'none', stroke: colorFor(c.otherSheet),
+        points: c.points.map((p) => p.join(',')).join(' '), fill: 'none', stroke: chordColor(c.id),
         'stroke-width': 0.026, 'data-chord': c.id, 'stroke-linejoin': 'round',
       }, g);
     }

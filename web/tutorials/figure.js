@@ -2,7 +2,7 @@
 // diagram, with step buttons, a before/after toggle, counts with their change from the start, and
 // an "open in explorer" link that reproduces the shown state. Keyboard: buttons, and ←/→ on the figure.
 import { Mesh } from '../../wasm/index.js';
-import { colorFor } from '../colors.js';
+import { sheetColor, chordColor } from '../colors.js';
 import { hexModel } from './hexGeometry.js';
 import { createView } from './view.js';
 import { createDiagram } from './diagram.js';
@@ -150,7 +150,7 @@ export function createFigure(root, opts) {
     if (id === state.picked) return PICKED;
     const extra = opts.emphasis?.(api, id);
     if (extra) return extra;
-    if (opts.sheetIn3d !== false && state.sheet !== null && dual.bySheet.get(state.sheet)?.includes(id)) return colorFor(state.sheet);
+    if (opts.sheetIn3d !== false && state.sheet !== null && dual.bySheet.get(state.sheet)?.includes(id)) return sheetColor(state.sheet);
     if (created(id)) return NEW;
     return null;
   }
@@ -160,7 +160,7 @@ export function createFigure(root, opts) {
     const index = state.model.index;
     return d.chords.map((c) => ({
       hexes: [...state.mesh.chordHexes(c.id)].map((h) => index.get(h)),
-      color: colorFor(c.otherSheet),
+      color: chordColor(c.id),
       closed: state.mesh.chords.find((x) => x.id === c.id)?.closed,
     }));
   }
@@ -196,7 +196,7 @@ export function createFigure(root, opts) {
     if (!opts.sheetChips) return;
     for (const s of state.mesh.sheets) {
       const b = el('button', { type: 'button', class: 'chip', 'data-sheet': s.id, 'aria-pressed': String(s.id === state.sheet) }, chips);
-      el('span', { class: 'swatch', style: `background:${colorFor(s.id)}` }, b);
+      el('span', { class: 'swatch', style: `background:${sheetColor(s.id)}` }, b);
       b.append(`sheet ${s.id} · ${s.hexes} hex${s.hexes === 1 ? '' : 'es'}`);
       b.addEventListener('click', () => selectSheet(s.id));
       b.addEventListener('pointerenter', () => hoverSheet(s.id));
