@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
 
 #include "complex/builders.hpp"
@@ -103,7 +104,7 @@ io::Format formatNamed(const std::string& format) {
 
 // The diagram as plain numbers in typed arrays (no JSON): see the SheetDiagram type in index.d.ts.
 val diagramArrays(const SheetDiagram& d) {
-  std::vector<int32_t> crossHex, crossChords, bHex, chId, chOther, chHexes, cellHex, quads;
+  std::vector<int32_t> crossHex, crossChords, bHex, chId, chOther, chHexes, cellHex, quads, chPiece;
   std::vector<int8_t> crossAxis, bFace, cellEdge;
   std::vector<uint8_t> crossOutside, chClosed;
   std::vector<double> crossXY, bXY, chXY, loopXY, cellXY;
@@ -124,6 +125,7 @@ val diagramArrays(const SheetDiagram& d) {
     chId.push_back(c.chord);
     chOther.push_back(c.otherSheet);
     chClosed.push_back(c.closed);
+    chPiece.push_back(c.piece);
     for (Point2 p : c.points) chXY.insert(chXY.end(), {p.x, p.y});
     chOffsets.push_back(uint32_t(chXY.size() / 2));
     chHexes.insert(chHexes.end(), c.hexes.begin(), c.hexes.end());
@@ -139,15 +141,32 @@ val diagramArrays(const SheetDiagram& d) {
     cellXY.insert(cellXY.end(), {c.p.x, c.p.y});
   }
   for (const auto& q : d.quads) quads.insert(quads.end(), q.begin(), q.end());
+  // Sides of a cut-open (polygon) sheet: labels, seam pairs and directions.
+  std::vector<int32_t> arcPair;
+  std::vector<int8_t> arcSign;
+  std::vector<uint32_t> arcOffsets{0};
+  std::vector<double> arcXY;
+  val arcLabel = val::array();
+  for (const auto& a : d.arcs) {
+    arcLabel.call<void>("push", val(a.label));
+    arcPair.push_back(a.pair);
+    arcSign.push_back(int8_t(a.sign));
+    for (Point2 p : a.points) arcXY.insert(arcXY.end(), {p.x, p.y});
+    arcOffsets.push_back(uint32_t(arcXY.size() / 2));
+  }
 
   val o = fields({{"sheet", val(d.sheet)}, {"topology", val(d.topology)}, {"method", val(d.method)}, {"local", val(d.local)},
-                  {"note", val(d.note)}, {"radius", val(d.radius)}, {"openedHex", d.openedHex >= 0 ? val(d.openedHex) : val::null()}});
+                  {"note", val(d.note)}, {"radius", val(d.radius)}, {"euler", val(double(d.euler))},
+                  {"openedHex", d.openedHex >= 0 ? val(d.openedHex) : val::null()}});
+  o.set("arcs", fields({{"label", arcLabel}, {"pair", copyOut("Int32Array", arcPair)}, {"sign", copyOut("Int8Array", arcSign)},
+                        {"offsets", copyOut("Uint32Array", arcOffsets)}, {"xy", copyOut("Float64Array", arcXY)}}));
   o.set("crossings", fields({{"hex", copyOut("Int32Array", crossHex)}, {"axis", copyOut("Int8Array", crossAxis)},
                              {"xy", copyOut("Float64Array", crossXY)}, {"chords", copyOut("Int32Array", crossChords)},
                              {"outside", copyOut("Uint8Array", crossOutside)}}));
   o.set("boundary", fields({{"hex", copyOut("Int32Array", bHex)}, {"face", copyOut("Int8Array", bFace)}, {"xy", copyOut("Float64Array", bXY)}}));
   o.set("chords", fields({{"id", copyOut("Int32Array", chId)}, {"otherSheet", copyOut("Int32Array", chOther)},
-                          {"closed", copyOut("Uint8Array", chClosed)}, {"offsets", copyOut("Uint32Array", chOffsets)},
+                          {"closed", copyOut("Uint8Array", chClosed)}, {"piece", copyOut("Int32Array", chPiece)},
+                          {"offsets", copyOut("Uint32Array", chOffsets)},
                           {"xy", copyOut("Float64Array", chXY)}, {"hexOffsets", copyOut("Uint32Array", chHexOffsets)},
                           {"hexes", copyOut("Int32Array", chHexes)}}));
   o.set("loops", fields({{"offsets", copyOut("Uint32Array", loopOffsets)}, {"xy", copyOut("Float64Array", loopXY)}}));
@@ -166,6 +185,7 @@ std::string svgFromArrays(val d) {
   s.topology = d["topology"].as<std::string>();
   s.method = d["method"].as<std::string>();
   s.local = d["local"].as<bool>();
+  if (d["note"].isString()) s.note = d["note"].as<std::string>();
   s.openedHex = d["openedHex"].isNull() ? -1 : d["openedHex"].as<int>();
   std::vector<double> loopOff = nums(d["loops"]["offsets"]), loopXY = nums(d["loops"]["xy"]);
   for (size_t k = 0; k + 1 < loopOff.size(); ++k) {
@@ -174,9 +194,9 @@ std::string svgFromArrays(val d) {
     s.loops.push_back(std::move(loop));
   }
   std::vector<double> chId = nums(d["chords"]["id"]), chOther = nums(d["chords"]["otherSheet"]), chOff = nums(d["chords"]["offsets"]),
-                      chXY = nums(d["chords"]["xy"]);
+                      chXY = nums(d["chords"]["xy"]), chPiece = nums(d["chords"]["piece"]);
   for (size_t k = 0; k < chId.size() && k + 1 < chOff.size(); ++k) {
-    SheetDiagram::ChordLine c{int(chId[k]), int(chOther[k]), false, {}, {}};
+    SheetDiagram::ChordLine c{int(chId[k]), int(chOther[k]), false, {}, {}, k < chPiece.size() ? int(chPiece[k]) : 0};
     for (size_t i = size_t(chOff[k]); i < size_t(chOff[k + 1]); ++i) c.points.push_back(pointAt(chXY, i));
     s.chords.push_back(std::move(c));
   }
@@ -185,6 +205,16 @@ std::string svgFromArrays(val d) {
   std::vector<double> cHex = nums(d["crossings"]["hex"]), cXY = nums(d["crossings"]["xy"]), cOut = nums(d["crossings"]["outside"]);
   for (size_t i = 0; i < cHex.size() && 2 * i + 1 < cXY.size(); ++i)
     s.crossings.push_back({HexId(cHex[i]), 0, pointAt(cXY, i), {-1, -1}, i < cOut.size() && cOut[i] != 0});
+  if (!d["arcs"].isUndefined() && !d["arcs"].isNull()) {
+    std::vector<double> aPair = nums(d["arcs"]["pair"]), aSign = nums(d["arcs"]["sign"]), aOff = nums(d["arcs"]["offsets"]),
+                        aXY = nums(d["arcs"]["xy"]);
+    std::vector<std::string> aLabel = vecFromJSArray<std::string>(d["arcs"]["label"]);
+    for (size_t k = 0; k < aLabel.size() && k + 1 < aOff.size(); ++k) {
+      SheetDiagram::Arc a{aLabel[k], int(aPair[k]), int(aSign[k]), {}};
+      for (size_t i = size_t(aOff[k]); i < size_t(aOff[k + 1]); ++i) a.points.push_back(pointAt(aXY, i));
+      s.arcs.push_back(std::move(a));
+    }
+  }
   return diagramSvg(s);
 }
 
@@ -203,11 +233,19 @@ class WasmMesh {
     return guarded("PRECONDITION", [&] { return new WasmMesh(makeRing(around, radial, axial)); }, nullptr);
   }
   // `bytes` arrives from a Uint8Array (Embind copies it into the string).
-  static WasmMesh* load(const std::string& bytes, const std::string& name) {
-    return guarded("PARSE", [&] { return new WasmMesh(io::readMesh(bytes, name)); }, nullptr);
+  // hexesOnly: read the hex part of a file that also has tets/prisms/pyramids (io::ReadOptions).
+  static WasmMesh* load(const std::string& bytes, const std::string& name, bool hexesOnly) {
+    return guarded("PARSE", [&] {
+      io::ReadOptions opt;
+      opt.hexesOnly = hexesOnly;
+      io::ReadReport rep;
+      auto* m = new WasmMesh(io::readMesh(bytes, name, opt, &rep));
+      m->file_ = rep;
+      return m;
+    }, nullptr);
   }
 
-  std::string infoJson() { return guarded("PRECONDITION", [&] { return io::infoJson(cx_, dual()); }, std::string()); }
+  std::string infoJson() { return guarded("PRECONDITION", [&] { return io::infoJson(cx_, dual(), file_ ? &*file_ : nullptr); }, std::string()); }
   std::string save(const std::string& format, bool binary) {
     return guarded("PRECONDITION", [&] { return io::writeMesh(cx_, formatNamed(format), binary); }, std::string());
   }
@@ -386,13 +424,14 @@ class WasmMesh {
   }
   // For wasm/bindings_view.cpp (same module): where the complex and its current dual live.
   double complexAddress() const { return double(uintptr_t(&cx_)); }
-  double dualAddress() { return guarded([&] { return double(uintptr_t(&dual())); }, 0.0); }
+  double dualAddress() { return guarded("PRECONDITION", [&] { return double(uintptr_t(&dual())); }, 0.0); }
   val positions() const { return val(typed_memory_view(rb_.positions.size(), rb_.positions.data())); }
   val normals() const { return val(typed_memory_view(rb_.normals.size(), rb_.normals.data())); }
   val indices() const { return val(typed_memory_view(rb_.indices.size(), rb_.indices.data())); }
   val triangleHex() const { return val(typed_memory_view(rb_.triangleHex.size(), rb_.triangleHex.data())); }
 
  private:
+  std::optional<io::ReadReport> file_;  // what the reader found, for info() of a loaded file
   // The dual, kept current by a tracker so that sheet and chord ids survive operations.
   const Dual& dual() {
     if (!tracker_) tracker_ = std::make_unique<DualTracker>(cx_);

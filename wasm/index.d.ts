@@ -54,9 +54,25 @@ export interface Counts {
   hexes: number;
   boundaryQuads: number;
 }
+/** What the reader found in a loaded file (only on meshes made by Mesh.load). */
+export interface FileReport {
+  /** e.g. "vtk 5.1 binary", "gmsh 4.1 ascii", "medit ascii". */
+  format: string;
+  gzipped: boolean;
+  /** Points in the file; `unusedVertices` of them are used by no hex and were dropped. */
+  points: number;
+  unusedVertices: number;
+  /** Lower-dimensional cells skipped. */
+  skipped: { vertices: number; lines: number; triangles: number; quads: number };
+  /** Volume cells dropped by `hexesOnly`. */
+  dropped: { tetrahedra: number; prisms: number; pyramids: number };
+  /** Vertices whose link is neither a sphere nor a disk (the mesh opens; operations there are refused). */
+  nonManifoldVertices: number[];
+}
 export interface Info extends Counts {
   sheets: SheetInfo[];
   chords: ChordInfo[];
+  file?: FileReport;
 }
 // ---- view data (explorer) ----
 export interface RenderBuffers {
@@ -157,11 +173,19 @@ export interface SheetDiagram extends DiagramHeader {
     id: Int32Array;
     otherSheet: Int32Array;
     closed: Uint8Array;
+    /** A chord crossing the seams of a cut-open sheet is drawn in pieces 0, 1, ... */
+    piece: Int32Array;
     offsets: Uint32Array;
     xy: Float64Array;
     hexOffsets: Uint32Array;
     hexes: Int32Array;
   };
+  /**
+   * Method 'polygon' (a sheet of genus > 0, non-orientable, or cut open): the polygon's sides in
+   * order. Both sides of a seam share `pair`; `sign` -1 marks the side glued in the opposite
+   * direction; `label` is 'a', 'a⁻¹', ... or '∂' for the sheet's own boundary.
+   */
+  arcs: { label: string[]; pair: Int32Array; sign: Int8Array; offsets: Uint32Array; xy: Float64Array };
   /** Boundary loops (outer first), or the dotted circle of a local diagram. */
   loops: { offsets: Uint32Array; xy: Float64Array };
   /** Mid-surface vertices: one per primal edge (hex, local edge) crossing the sheet. */
@@ -184,7 +208,10 @@ type DisposeKey = SymbolConstructor extends { readonly dispose: infer K extends 
 type MaybeDisposable = { [K in DisposeKey]: () => void };
 
 export interface LoadOptions {
-  /** Keep only the hexahedra of a mixed file. Reserved: this build rejects `true` (PRECONDITION). */
+  /**
+   * Read the hexahedra of a file that also holds tetrahedra, prisms or pyramids (their faces become
+   * boundary). Without it such a file is refused (PARSE) with the counts of each kind.
+   */
   hexesOnly?: boolean;
 }
 

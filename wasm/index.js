@@ -182,14 +182,14 @@ export class Mesh {
   static fourCube() {
     return new Mesh(check(module().WasmMesh.fourCube()));
   }
-  /** Reads a .vtk (ASCII or binary), .mesh or .hxd file from its bytes; the format is detected. */
+  /**
+   * Reads a mesh file from its bytes; the format is detected (VTK legacy 2.0–5.1, .vtu, Gmsh .msh,
+   * Medit .mesh/.meshb, .hxd; gzipped or not). `hexesOnly` reads the hex part of a mixed file.
+   */
   static load(bytes, name = 'mesh', options = {}) {
     const data = toBytes('load: bytes', bytes);
     if (typeof name !== 'string') throw new HexdualError('PRECONDITION', 'load: name must be a string');
-    if (options.hexesOnly) {
-      throw new HexdualError('PRECONDITION', 'load: hexesOnly needs the mixed-mesh readers, which this build does not have yet');
-    }
-    return new Mesh(check(module().WasmMesh.load(data, name)));
+    return new Mesh(check(module().WasmMesh.load(data, name, !!options.hexesOnly)));
   }
   /** Whether two meshes are the same complex up to renumbering, boundary kept. */
   static isomorphic(a, b) {

@@ -159,6 +159,16 @@ test('sheet diagram as typed arrays equals the JSON form, and its SVG equals the
     execFileSync(cli, ['sheets', join(dir, 'g.hxd'), '--sheet', '2', '--local', '4', '--rings', '1', '--svg', dir]);
     assert.equal(diagramToSVG(g.sheetDiagram(2, { local: [4], rings: 1 })), readFileSync(join(dir, 'sheet-2-local.svg'), 'utf8'));
     g.delete();
+    // A torus sheet cut open into a polygon: its seams (a b a⁻¹ b⁻¹) and chord pieces survive the typed arrays.
+    const torusFile = new URL('../../docs/examples/torus-shell.hxd', import.meta.url).pathname;
+    execFileSync(cli, ['sheets', torusFile, '--sheet', '0', '--svg', dir]);
+    const t = Mesh.load(readFileSync(torusFile), 'torus-shell.hxd');
+    const td = t.sheetDiagram(0);
+    assert.equal(td.method, 'polygon');
+    assert.deepEqual(td.arcs.label, ['a', 'b', 'a⁻¹', 'b⁻¹']);
+    assert.equal(td.euler, 0);
+    assert.equal(diagramToSVG(td), readFileSync(join(dir, 'sheet-0.svg'), 'utf8'));
+    t.delete();
   } finally {
     rmSync(dir, { recursive: true, force: true });
   }

@@ -2,6 +2,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
 import { init, Mesh, HexdualError, heapBytes, diagramToSVG, flips } from 'hexdual';
 
 await init();
@@ -32,9 +33,15 @@ test('wasm info equals the native CLI info --json byte for byte', () => {
     execFileSync(cli, [kind, dims, '-o', file]);
     const native = execFileSync(cli, ['info', file, '--json']).toString().trim();
     const [a, b, c] = dims.split('x').map(Number);
+    const { file: report, ...counts } = JSON.parse(native);
     const m = kind === 'grid' ? Mesh.grid(a, b, c) : Mesh.ring(a, b, c);
-    assert.deepEqual(m.info(), JSON.parse(native));
+    assert.deepEqual(m.info(), counts);
     m.delete();
+    // The same file read by the package: counts, dual and what the reader found, all equal.
+    const loaded = Mesh.load(readFileSync(file), file);
+    assert.deepEqual(loaded.info(), { ...counts, file: report });
+    assert.equal(report.format, 'vtk 3.0 ascii');
+    loaded.delete();
   }
 });
 
@@ -195,4 +202,20 @@ test('flips: the 4-cube and the stored decompositions replay in wasm', async () 
     assert.equal(m.counts.hexes, 8 - f.before.length + (8 - f.before.length), f.name);
     m.delete();
   }
+});
+
+test('mixed files: hexesOnly reads the hex part; without it the file is refused with its counts (PARSE)', () => {
+  // 2 unit cubes stacked + 1 tetrahedron on top, VTK legacy ASCII.
+  const vtk = [
+    '# vtk DataFile Version 3.0', 'mixed', 'ASCII', 'DATASET UNSTRUCTURED_GRID', 'POINTS 13 float',
+    '0 0 0', '1 0 0', '1 1 0', '0 1 0', '0 0 1', '1 0 1', '1 1 1', '0 1 1', '0 0 2', '1 0 2', '1 1 2', '0 1 2', '0.5 0.5 3',
+    'CELLS 3 23', '8 0 1 2 3 4 5 6 7', '8 4 5 6 7 8 9 10 11', '4 8 9 10 12', 'CELL_TYPES 3', '12', '12', '10', '',
+  ].join('\n');
+  assert.throws(() => Mesh.load(vtk, 'mixed.vtk'), (e) => e instanceof HexdualError && e.code === 'PARSE' && /tetrahedr/.test(e.message));
+  const m = Mesh.load(vtk, 'mixed.vtk', { hexesOnly: true });
+  const info = m.info();
+  assert.equal(info.hexes, 2);
+  assert.equal(info.file.dropped.tetrahedra, 1);
+  assert.equal(info.file.unusedVertices, 1);
+  m.delete();
 });
