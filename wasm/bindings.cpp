@@ -102,6 +102,13 @@ io::Format formatNamed(const std::string& format) {
   throw Error("unknown format '" + format + "' (vtk, mesh or hxd)");
 }
 
+template <class T>
+int countAlive(const std::vector<T>& items) {
+  int n = 0;
+  for (const T& x : items) n += x.alive ? 1 : 0;
+  return n;
+}
+
 // The diagram as plain numbers in typed arrays (no JSON): see the SheetDiagram type in index.d.ts.
 val diagramArrays(const SheetDiagram& d) {
   std::vector<int32_t> crossHex, crossChords, bHex, chId, chOther, chHexes, cellHex, quads, chPiece;
@@ -401,8 +408,9 @@ class WasmMesh {
     return copyOut("Float64Array", c);
   }
   // Extracts the dual (if stale) and returns the number of sheet and chord ids: for benchmarks.
-  int numSheets() { return guarded("PRECONDITION", [&] { return int(dual().sheets.size()); }, -1); }
-  int numChords() { return guarded("PRECONDITION", [&] { return int(dual().chords.size()); }, -1); }
+  // Live sheets and chords (ids retired by operations are not counted; ids need not be dense).
+  int numSheets() { return guarded("PRECONDITION", [&] { return countAlive(dual().sheets); }, -1); }
+  int numChords() { return guarded("PRECONDITION", [&] { return countAlive(dual().chords); }, -1); }
   double memoryBytes() const { return double(cx_.memoryBytes()); }
   bool validate() {
     return guarded("INVALID_RESULT", [&] {

@@ -230,6 +230,7 @@ export class Mesh {
   sheetHexes(id: number): Int32Array;
   chordHexes(id: number): Int32Array;
   hexCenters(): Float64Array;
+  /** How many live sheets and chords (ids stay stable across operations, so they need not be 0..n-1). */
   dualSizes(): { sheets: number; chords: number };
   sheetDiagram(id: number, options?: DiagramOptions): SheetDiagram;
   sheetDiagramJSON(id: number, options?: DiagramOptions): SheetDiagramJSON;

@@ -25,16 +25,21 @@ const store = createState({
 });
 const engine = createEngine(store);
 
+// The live sheet and chord ids (the engine keeps ids stable, so they need not be 0..n-1).
+function dualIds(mesh) {
+  return { sheets: new Set(mesh.sheets.map((x) => x.id)), chords: new Set(mesh.chords.map((x) => x.id)) };
+}
+
 // Keeps the selection and diagrams whose hex / sheet still exist after the mesh changed.
 function survivors(s, mesh) {
   const hd = engine.hexDual();
   const alive = (h) => h >= 0 && 3 * h < hd.sheetOf.length && hd.sheetOf[3 * h] >= 0;
-  const sizes = mesh.dualSizes();
+  const ids = dualIds(mesh);
   let sel = s.selection;
   if (sel && 'hex' in sel && !alive(sel.hex)) sel = null;
-  if (sel && sel.kind === 'sheet' && sel.id >= sizes.sheets) sel = null;
-  if (sel && sel.kind === 'chord' && sel.id >= sizes.chords) sel = null;
-  const diagrams = s.diagrams.filter((d) => d.sheet < sizes.sheets && (!d.local || alive(d.local.hex)));
+  if (sel && sel.kind === 'sheet' && !ids.sheets.has(sel.id)) sel = null;
+  if (sel && sel.kind === 'chord' && !ids.chords.has(sel.id)) sel = null;
+  const diagrams = s.diagrams.filter((d) => ids.sheets.has(d.sheet) && (!d.local || alive(d.local.hex)));
   return { selection: sel, diagrams };
 }
 
@@ -182,7 +187,8 @@ function loadFromUrlNow() {
   if (stepError) errors.push(stepError);
   if (p.at !== null && p.at > p.steps.length) errors.push(`ignored at=${p.at}: there are only ${p.steps.length} steps`);
   const s = store.get();
-  const sizes = s.mesh.dualSizes();
+  const ids = dualIds(s.mesh);
+  const range = (set) => (set.size ? `0..${Math.max(...set)}` : 'none');
   const hd = engine.hexDual();
   let sel = p.selection;
   if (sel && 'hex' in sel && !(3 * sel.hex < hd.sheetOf.length && hd.sheetOf[3 * sel.hex] >= 0)) {
@@ -190,16 +196,16 @@ function loadFromUrlNow() {
     sel = null;
   }
   for (const kind of ['sheet', 'chord']) {
-    const n = kind === 'sheet' ? sizes.sheets : sizes.chords;
-    if (sel && sel.kind === kind && sel.id >= n) {
-      errors.push(`ignored ${kind}=${sel.id}: there are ${n} ${kind}s (0..${n - 1})`);
+    const set = kind === 'sheet' ? ids.sheets : ids.chords;
+    if (sel && sel.kind === kind && !set.has(sel.id)) {
+      errors.push(`ignored ${kind}=${sel.id}: there are ${set.size} ${kind}s (${range(set)})`);
       sel = null;
     }
   }
   const diags = [];
   for (const d of p.diagrams) {
-    if (d < sizes.sheets) diags.push({ sheet: d, local: null });
-    else errors.push(`ignored diag=${d}: there are ${sizes.sheets} sheets`);
+    if (ids.sheets.has(d)) diags.push({ sheet: d, local: null });
+    else errors.push(`ignored diag=${d}: there are ${ids.sheets.size} sheets (${range(ids.sheets)})`);
   }
   store.set({
     selection: sel, diagrams: diags, camera: p.camera, overlay: p.overlay, colorBy: p.colorBy, ghosts: p.ghosts,

@@ -157,7 +157,7 @@ for (const name of PAGES) {
           await explorer.waitForFunction(() => window.hexdual?.ready === true, null, { timeout: 20000 });
           const got = await explorer.evaluate(() => {
             const s = window.hexdual.store.get();
-            return { counts: { ...s.mesh.counts, ...s.mesh.dualSizes() }, ops: s.ops.map((o) => o.step), error: s.error };
+            return { counts: { ...s.mesh.counts, ...s.mesh.dualSizes() }, ops: s.steps.slice(0, s.at), error: s.error ?? "" };
           });
           assert.equal(got.error, '', `${name} figure ${k} stage ${stage}: explorer error`);
           assert.deepEqual(got.ops, want.ops, `${name} figure ${k} stage ${stage}: steps`);

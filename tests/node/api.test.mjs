@@ -204,3 +204,15 @@ test('canonicalHash and isomorphic: renumbering-invariant, change-sensitive', ()
   a.delete();
   b.delete();
 });
+
+test('dualSizes counts live sheets and chords: after pillow then its inverse, the start counts again', () => {
+  const m = Mesh.grid(3, 3, 3);
+  const start = m.dualSizes();
+  assert.deepEqual(start, { sheets: 9, chords: 27 });
+  const r = m.apply('pillow h13f5');
+  assert.deepEqual(m.dualSizes(), { sheets: 10, chords: 29 });
+  m.apply(r.inverse);
+  assert.deepEqual(m.dualSizes(), start);
+  assert.equal(m.sheets.length, start.sheets);
+  m.delete();
+});
