@@ -43,6 +43,9 @@ seed() {
   esac
 }
 
+# A fixed seed (printed) so that a run can be repeated; HEXDUAL_FUZZ_SEED picks another.
+FUZZ_SEED=${HEXDUAL_FUZZ_SEED:-20261201}
+echo "fuzz seed $FUZZ_SEED"
 fail=0
 for t in "${TARGETS[@]}"; do
   id=$(target_id "$t")
@@ -53,7 +56,7 @@ for t in "${TARGETS[@]}"; do
   [ -d "$OUT/corpus/$t" ] || seed "$t"
   mkdir -p "$OUT/findings/$t"
   echo "== fuzz $t for ${SECONDS_EACH}s"
-  if ! "$bin" -max_total_time="$SECONDS_EACH" -max_len=65536 -rss_limit_mb=1024 -timeout=5 -print_final_stats=0 \
+  if ! "$bin" -seed="$FUZZ_SEED" -max_total_time="$SECONDS_EACH" -max_len=65536 -rss_limit_mb=1024 -timeout=5 -print_final_stats=0 \
       -artifact_prefix="$OUT/findings/$t/" "$OUT/corpus/$t" 2>"$OUT/fuzz_$t.log"; then
     echo "fuzz $t: FINDING (see $OUT/fuzz_$t.log and $OUT/findings/$t/)"; tail -30 "$OUT/fuzz_$t.log"; fail=1
   else

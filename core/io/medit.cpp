@@ -14,6 +14,10 @@
 namespace hexdual::io {
 namespace {
 
+// A 1-based index from the file as 0-based; anything below 1 becomes -1 (rejected as out of range
+// later, without overflowing on INT64_MIN).
+int64_t oneBased(int64_t raw) { return raw >= 1 ? raw - 1 : -1; }
+
 // Element sections: corners per entry and kind (each entry also has a reference number).
 struct Section {
   int corners;
@@ -74,7 +78,7 @@ Complex readMedit(std::string_view data, const std::string& name, const ReadOpti
       if (sec->kind == CellKind::Hex) soup.hexes.reserve(soup.hexes.size() + size_t(n));
       for (int64_t i = 0; i < n; ++i, ++cellNumber) {
         std::array<int64_t, 8> v{};
-        for (int c = 0; c < sec->corners; ++c) v[size_t(c)] = lx.integer("a vertex index") - 1;
+        for (int c = 0; c < sec->corners; ++c) v[size_t(c)] = oneBased(lx.integer("a vertex index"));
         lx.integer("an element reference");
         if (sec->kind == CellKind::Hex) {
           soup.hexes.push_back(v);
@@ -172,7 +176,7 @@ Complex readMeditBinary(std::string_view data, const std::string& name, const Re
       checkCountFits(name, "an element section", n, in.left(), size_t(sec.corners + 1) * intBytes);
       for (int64_t i = 0; i < n; ++i, ++cellNumber) {
         std::array<int64_t, 8> v{};
-        for (int c = 0; c < sec.corners; ++c) v[size_t(c)] = index() - 1;
+        for (int c = 0; c < sec.corners; ++c) v[size_t(c)] = oneBased(index());
         index();
         if (sec.kind == CellKind::Hex) {
           soup.hexes.push_back(v);
