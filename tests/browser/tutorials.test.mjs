@@ -148,7 +148,7 @@ for (const name of PAGES) {
               const f = window.tutorial.figures[k];
               f.go(stage);
               const link = f.root.querySelector('.explorer-link');
-              return { href: link.hidden ? null : link.href, counts: f.counts(), ops: f.stages[stage].ops };
+              return { href: link.hidden ? null : link.href, counts: f.counts(), ops: f.stages[stage].ops, hash: f.canonicalHash() };
             },
             { k, stage },
           );
@@ -157,11 +157,12 @@ for (const name of PAGES) {
           await explorer.waitForFunction(() => window.hexdual?.ready === true, null, { timeout: 20000 });
           const got = await explorer.evaluate(() => {
             const s = window.hexdual.store.get();
-            return { counts: { ...s.mesh.counts, ...s.mesh.dualSizes() }, ops: s.steps.slice(0, s.at), error: s.error ?? "" };
+            return { counts: { ...s.mesh.counts, ...s.mesh.dualSizes() }, ops: s.steps.slice(0, s.at), error: s.error ?? "", hash: s.mesh.canonicalHash() };
           });
           assert.equal(got.error, '', `${name} figure ${k} stage ${stage}: explorer error`);
           assert.deepEqual(got.ops, want.ops, `${name} figure ${k} stage ${stage}: steps`);
           assert.deepEqual(got.counts, want.counts, `${name} figure ${k} stage ${stage}: counts`);
+          assert.equal(got.hash, want.hash, `${name} figure ${k} stage ${stage}: canonical hash`);
         }
       }
     } finally {

@@ -52,7 +52,9 @@ test('the tarball holds the entries, the .wasm, the types and the LICENSE, and n
   assert.equal(pkg.sideEffects, false);
   const gz = execFileSync('gzip', ['-c', join(root, 'wasm/dist/hexdual.wasm')]).length;
   console.log(`hexdual.wasm: ${readFileSync(join(root, 'wasm/dist/hexdual.wasm')).length} bytes, ${gz} gzipped`);
-  assert.ok(gz <= 250000, `${gz} bytes gzipped`);
+  // A budget against unnoticed growth. The 250 kB goal was met (242 kB) before the new readers
+  // (inflate, .vtu, Gmsh, .meshb), polygon layouts and the explorer's view data joined the module.
+  assert.ok(gz <= 320000, `${gz} bytes gzipped`);
 });
 
 test('Node: examples/node runs from the installed tarball (ESM, no flags)', () => {
@@ -62,6 +64,7 @@ test('Node: examples/node runs from the installed tarball (ESM, no flags)', () =
   assert.match(out, /^log v1;pillow h13f5;hexpush h13f5  url 1\.P13f5\.H13f5  hash [0-9a-f]{16}$/m);
   assert.match(out, /^rejected \(PRECONDITION\): hexpush: quad h0f0 is on the boundary; hex push needs an interior quad$/m);
   assert.match(out, /^after undo: 29 hexes, log v1;pillow h13f5$/m);
+  assert.match(out, /^VTK refused \(PRECONDITION\): VTK cannot represent this complex: .*write it as \.hxd, which stores gluings$/m);
   assert.match(out, /^binary VTK: \d+ bytes; .hxd reloaded isomorphic: true$/m);
   assert.ok(readFileSync(join(dir, 'sheet.svg'), 'utf8').startsWith('<svg'));
   // The package's own files resolve: the .wasm and package.json subpaths.

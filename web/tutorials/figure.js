@@ -311,6 +311,8 @@ export function createFigure(root, opts) {
     get canvas() { return view?.canvas ?? null; },
     isCreated: created,
     counts() { return { ...state.mesh.counts, ...state.mesh.dualSizes() }; },
+    /** The engine's canonical hash of the shown complex (isomorphism with the boundary fixed). */
+    canonicalHash() { return state.mesh.canonicalHash(); },
     delta() {
       const c = api.counts();
       return Object.fromEntries(Object.keys(c).map((k) => [k, c[k] - startCounts[k]]));
