@@ -220,6 +220,14 @@ std::string VtuReader::payload(std::string_view bytes, size_t at, const std::str
   return out;
 }
 
+// An integer stored in a numeric array (read as double): the value when it is a whole number in
+// [0, 2^53), else -1, which every caller rejects as out of range (no float-to-int overflow).
+static int64_t asIndex(double x) {
+  if (!(x >= 0 && x < 9007199254740992.0)) return -1;
+  const int64_t i = int64_t(x);
+  return double(i) == x ? i : -1;
+}
+
 std::vector<double> VtuReader::values(const Tag& t, size_t contentBegin, int64_t expected) {
   std::string arrayName = t.attr("Name", "Points");
   ArrayType at = arrayType(t.attr("type"));
@@ -331,7 +339,8 @@ Complex VtuReader::read(const ReadOptions& opt, ReadReport* rep) {
           while (xml_.next(p2, t2) && !(t2.closing && t2.name == "Cells"))
             if (t2.name == "DataArray" && t2.attr("Name") == "offsets") offs = values(t2, t2.end, numCells);
         }
-        int64_t m = offs.empty() ? 0 : int64_t(offs.back());
+        int64_t m = offs.empty() ? 0 : asIndex(offs.back());
+        if (m < 0) fail(t.end, "the last offset is not a non-negative integer");
         conn = values(t, t.end, m);
       }
     }
@@ -345,9 +354,9 @@ Complex VtuReader::read(const ReadOptions& opt, ReadReport* rep) {
   for (size_t i = 0; i < soup.points.size(); ++i) soup.points[i] = {pts[3 * i], pts[3 * i + 1], pts[3 * i + 2]};
   static constexpr int kVoxelToHex[8] = {0, 1, 3, 2, 4, 5, 7, 6};
   for (size_t c = 0; c < types.size(); ++c) {
-    int64_t b = c ? int64_t(offs[c - 1]) : 0, e = int64_t(offs[c]);
+    int64_t b = c ? asIndex(offs[c - 1]) : 0, e = asIndex(offs[c]);
     if (b < 0 || e < b || e > int64_t(conn.size())) fail(0, "offsets of cell " + std::to_string(c) + " are out of order or range");
-    int64_t ty = int64_t(types[c]);
+    int64_t ty = asIndex(types[c]);
     CellKind k = CellKind::Unsupported;
     switch (ty) {
       case 1: case 2: k = CellKind::Vertex; break;
@@ -365,7 +374,7 @@ Complex VtuReader::read(const ReadOptions& opt, ReadReport* rep) {
       checkNodeCount(name_, "cell " + std::to_string(c) + " (VTK type " + std::to_string(ty) + ")", k, e - b);
     if (k == CellKind::Hex) {
       std::array<int64_t, 8> v;
-      for (int i = 0; i < 8; ++i) v[size_t(i)] = int64_t(conn[size_t(b + (ty == 11 ? kVoxelToHex[i] : i))]);
+      for (int i = 0; i < 8; ++i) v[size_t(i)] = asIndex(conn[size_t(b + (ty == 11 ? kVoxelToHex[i] : i))]);
       soup.hexes.push_back(v);
       soup.hexCell.push_back(int64_t(c));
     }
