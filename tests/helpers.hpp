@@ -78,3 +78,27 @@ inline std::string stateDump(const Complex& cx) {
   return o.str();
 }
 }  // namespace hexdual::test
+
+#ifdef HEXDUAL_CLI
+#include <array>
+#include <cstdio>
+#include <sys/wait.h>
+namespace hexdual::test {
+// The CLI's exit status and its stdout and stderr together.
+struct CliRun {
+  int status;
+  std::string out;
+};
+inline CliRun runCli(const std::string& args) {
+  std::string cmd = std::string(HEXDUAL_CLI) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  REQUIRE(p);
+  std::string out;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+  int st = pclose(p);
+  return {WEXITSTATUS(st), out};
+}
+}  // namespace hexdual::test
+#endif

@@ -12,21 +12,8 @@
 using namespace hexdual::test;
 
 namespace {
-struct Run {
-  int status;
-  std::string out;
-};
-Run run(const std::string& args) {
-  std::string cmd = std::string(HEXDUAL_CLI) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  REQUIRE(p);
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int st = pclose(p);
-  return {WEXITSTATUS(st), out};
-}
+using Run = CliRun;
+Run run(const std::string& args) { return runCli(args); }
 }  // namespace
 
 TEST_CASE("cli: grid, info --json, validate, convert") {
