@@ -4,6 +4,7 @@
 // undoing the whole sequence restores the start exactly. HEXDUAL_PROPERTY_SEQUENCES sets the count.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -24,18 +25,21 @@ namespace {
 
 struct Stats {
   int64_t applied = 0, rejected = 0, inverses = 0;
+  int64_t lockstep = 0;  // updates of cut or re-glued sheets done by the local lockstep flood (no re-flood)
   std::map<std::string, int64_t> perOp;
 };
 
 // A random step: mostly ones likely to apply, with entities drawn from live hexes.
-std::string randomStep(const Complex& cx, std::mt19937& rng, const std::vector<HexId>& recent) {
+// collapses: mostly face collapses, hex pushes and ring collapses (the steps that cut and re-glue sheets).
+std::string randomStep(const Complex& cx, std::mt19937& rng, const std::vector<HexId>& recent, bool collapses) {
   auto pick = [&](int n) { return int(rng() % uint32_t(n)); };
   std::vector<HexId> live;
   for (HexId h : cx.hexes()) live.push_back(h);
   HexId h = (!recent.empty() && pick(2)) ? recent[size_t(pick(int(recent.size())))] : live[size_t(pick(int(live.size())))];
   if (!cx.isHex(h)) h = live[size_t(pick(int(live.size())))];
   std::string H = "h" + std::to_string(h);
-  switch (pick(9)) {
+  static constexpr int kCollapseHeavy[] = {2, 3, 6, 8, 8, 0};
+  switch (collapses ? kCollapseHeavy[pick(6)] : pick(9)) {
     case 0: return "pillow " + H + "f" + std::to_string(pick(6));
     case 1: return "unpillow " + H;
     case 2:
@@ -47,7 +51,7 @@ std::string randomStep(const Complex& cx, std::mt19937& rng, const std::vector<H
         int n = int(st.inc.size()), i = pick(n), j = pick(n);
         std::string f = "h" + std::to_string(st.inc[size_t(i)].hex) + "f" + std::to_string(st.exitFace[size_t(i)]);
         std::string g = "h" + std::to_string(st.inc[size_t(j)].hex) + "f" + std::to_string(st.exitFace[size_t(j)]);
-        return std::string(pick(3) ? "chordpush " : "facecollapse ") + H + "e" + std::to_string(e.edge) + " " + f + " " + g;
+        return std::string(pick(3) && !collapses ? "chordpush " : "facecollapse ") + H + "e" + std::to_string(e.edge) + " " + f + " " + g;
       } catch (const Error&) {
         return "chordpush " + H + "e" + std::to_string(e.edge) + " " + H + "f0 " + H + "f1";
       }
@@ -59,7 +63,7 @@ std::string randomStep(const Complex& cx, std::mt19937& rng, const std::vector<H
   }
 }
 
-void runSequence(const Complex& start, uint32_t seed, Stats& stats) {
+void runSequence(const Complex& start, uint32_t seed, Stats& stats, bool collapses = false) {
   std::mt19937 rng(seed);
   Complex cx = start;
   DualTracker tracker(cx);
@@ -67,7 +71,7 @@ void runSequence(const Complex& start, uint32_t seed, Stats& stats) {
   std::vector<HexId> recent;
   int length = 1 + int(rng() % 12);
   for (int step = 0; step < length; ++step) {
-    std::string text = randomStep(cx, rng, recent);
+    std::string text = randomStep(cx, rng, recent, collapses);
     CAPTURE(seed);
     CAPTURE(step);
     CAPTURE(text);
@@ -87,6 +91,7 @@ void runSequence(const Complex& start, uint32_t seed, Stats& stats) {
     if (std::getenv("HEXDUAL_PROPERTY_TRACE")) std::fprintf(stderr, "seed %u step %d: %s -> %s\n", seed, step, text.c_str(), inverse.c_str());
     cx.validate();
     tracker.update(cx, r.edits, keepsSheetTopology(r));
+    stats.lockstep += !keepsSheetTopology(r) && !tracker.lastUpdateReflooded();
     validateDual(cx, tracker.dual());
     compareDuals(cx, tracker.dual(), extractDual(cx));
     // The inverse operation, on a copy, gives back an isomorphic complex.
@@ -107,6 +112,8 @@ void runSequence(const Complex& start, uint32_t seed, Stats& stats) {
   for (auto it = done.rbegin(); it != done.rend(); ++it) {
     cx.undo(it->edits);
     tracker.update(cx, it->edits, keepsSheetTopology(*it));
+    stats.lockstep += !keepsSheetTopology(*it) && !tracker.lastUpdateReflooded();
+    validateDual(cx, tracker.dual());
   }
   CAPTURE(seed);
   REQUIRE(stateDump(cx) == startDump);
@@ -128,10 +135,26 @@ TEST_CASE("property: random operation sequences on grids and rings") {
   for (auto& [op, n] : stats.perOp) perOp += " " + op + "=" + std::to_string(n);
   MESSAGE("property: " << sequences << " sequences, seeds " << firstSeed << ".." << firstSeed + uint32_t(sequences) - 1
                        << ": " << stats.applied << " steps applied, " << stats.rejected << " rejected, " << stats.inverses
-                       << " inverses checked;" << perOp);
+                       << " inverses checked; " << stats.lockstep << " local lockstep updates;" << perOp);
   CHECK(stats.applied > sequences);
   for (const char* op : {"pillow", "unpillow", "chordpush", "chordpull", "hexpush", "hexpull", "ringcollapse", "facecollapse"}) {
     CAPTURE(op);
     CHECK(stats.perOp[op] > 0);
   }
+}
+
+// The same on grids big enough that most steps are far from the boundary, so that cut and re-glued
+// sheets are updated by the lockstep flood (not re-flooded) and still equal a fresh extraction.
+TEST_CASE("property: lockstep sheet updates on 7x7x7 and 8x6x6 grids") {
+  int sequences = 300;
+  if (const char* env = std::getenv("HEXDUAL_PROPERTY_SEQUENCES")) sequences = std::min(sequences, std::atoi(env));
+  const uint32_t firstSeed = 20261201;
+  std::vector<Complex> meshes{makeGrid(7, 7, 7), makeGrid(8, 6, 6)};
+  Stats stats;
+  for (int k = 0; k < sequences; ++k) runSequence(meshes[size_t(k) % meshes.size()], firstSeed + uint32_t(k), stats, true);
+  MESSAGE("property (lockstep): " << sequences << " sequences, seeds " << firstSeed << ".." << firstSeed + uint32_t(sequences) - 1
+                                  << ": " << stats.applied << " steps applied, " << stats.lockstep << " local lockstep updates");
+  CHECK(stats.lockstep > sequences / 6);
+  CHECK(stats.perOp["facecollapse"] > 0);
+  CHECK(stats.perOp["ringcollapse"] > 0);
 }

@@ -56,7 +56,7 @@ void Complex::glue(HexId a, int fa, HexId b, int fb, int orient) {
   glue_[b][fb] = pack(a, fa, inverseOrient(orient));
   numBoundarySides_ -= 2;
   ++revision_;
-  record({JournalEntry::Glue, a, fa, 0, {}});
+  record({JournalEntry::Glue, a, fa, glue_[a][fa], {}});  // the partner too, for undo's touched hexes
 }
 
 void Complex::unglue(HexId h, int f) {

@@ -197,7 +197,7 @@ class Complex {
     enum Kind : uint8_t { AddVertex, AddHex, Glue, Unglue, RemoveHex, SetCorner, SetPosition } kind;
     HexId hex;
     int face;
-    uint32_t value;
+    uint32_t value;  // Glue, Unglue: the packed gluing of (hex, face); SetCorner: the old vertex
     Vec3 pos;
   };
   // The edits of one committed transaction, enough to undo it exactly (ids included).

@@ -8,7 +8,6 @@ using namespace tables;
 
 namespace {
 
-constexpr std::array<std::array<int, 4>, 3> kParallelFaces = {{{2, 3, 4, 5}, {0, 1, 4, 5}, {0, 1, 2, 3}}};
 constexpr std::array<std::array<int, 2>, 3> kParallelAxes = {{{1, 2}, {0, 2}, {0, 1}}};
 // Bit of boundary mid-edge (face f, slot axis a) in a hex's loop marks.
 constexpr int loopBit(int f, int a) { return 2 * f + (a == (axisOfFace(f) + 1) % 3 ? 0 : 1); }
@@ -27,7 +26,6 @@ void SheetFlooder::reserve(size_t hexCapacity) {
 
 void SheetFlooder::clear(const std::vector<Slot>& slots) {
   for (Slot t : slots) {
-    sign_[slotIndex(t.hex, t.axis)] = 0;
     edgeSeen_[size_t(t.hex)] &= uint16_t(~(0xFu << (4 * t.axis)));
     for (int f : kParallelFaces[t.axis]) loopSeen_[size_t(t.hex)] &= uint16_t(~(1u << loopBit(f, t.axis)));
   }
@@ -93,6 +91,16 @@ void SheetFlooder::measure(const Complex& cx, HexId h, int a, SheetStats& st) {
       }
     }
   }
+}
+
+int SheetFlooder::walkNewLoops(const Complex& cx, HexId h, int a) {
+  int loops = 0;
+  for (int f : kParallelFaces[a])
+    if (cx.isBoundary({h, f}) && !((loopSeen_[size_t(h)] >> loopBit(f, a)) & 1u)) {
+      walkLoop(cx, h, f, a);
+      ++loops;
+    }
+  return loops;
 }
 
 SheetStats SheetFlooder::flood(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, std::vector<Slot>* out,
@@ -236,7 +244,7 @@ class OrientedUnionFind {
 
 // Sheets numbered in the order of their smallest slot: labelled by one oriented union-find pass
 // over the glued quads, then each slot's share of its mid-surface measured in one more pass.
-void extractSheets(const Complex& cx, Dual& d) {
+void extractSheets(const Complex& cx, Dual& d, std::vector<int8_t>* signs) {
   int32_t* sheetOf = d.sheetOf.empty() ? nullptr : d.sheetOf[0].data();
   OrientedUnionFind uf(3 * size_t(cx.hexCapacity()));
   for (HexId h : cx.hexes())
@@ -254,6 +262,7 @@ void extractSheets(const Complex& cx, Dual& d) {
       const uint32_t i = uint32_t(slotIndex(h, a));
       uint32_t parity;
       const uint32_t r = uf.find(i, parity);
+      if (signs) (*signs)[i] = parity ? -1 : 1;
       if (r == i) {
         sheetOf[i] = int32_t(roots.size());
         roots.push_back(r);
@@ -315,12 +324,13 @@ std::vector<int32_t> extractChords(const Complex& cx, Dual& d) {
 
 }  // namespace
 
-Dual extractDual(const Complex& cx) {
+Dual extractDual(const Complex& cx, std::vector<int8_t>* slotSigns) {
   const size_t n = size_t(cx.hexCapacity());
   Dual d;
   d.sheetOf.assign(n, {-1, -1, -1});
   d.chordOf.assign(n, {-1, -1, -1});
-  extractSheets(cx, d);
+  if (slotSigns) slotSigns->assign(3 * n, 0);
+  extractSheets(cx, d, slotSigns);
   const std::vector<int32_t> newChordId = extractChords(cx, d);
   for (HexId h : cx.hexes()) {
     auto& c = d.chordOf[size_t(h)];

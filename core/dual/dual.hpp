@@ -48,8 +48,12 @@ struct Dual {
 int mapAxisAcross(const Complex& cx, HexId h, int face, int axis);
 
 // Extracts sheets and chords in linear time. Ids are deterministic: sheets and chords are
-// numbered in the order of their smallest slot (hex id, then axis).
-Dual extractDual(const Complex& cx);
+// numbered in the order of their smallest slot (hex id, then axis). With `slotSigns` (3 per hex)
+// also an orientation of every slot's mid-quad, consistent across each orientable sheet.
+Dual extractDual(const Complex& cx, std::vector<int8_t>* slotSigns = nullptr);
+
+// The 4 faces of a hex parallel to axis a: the sides of sheet slot (h, a). TK03 §1.1.
+constexpr std::array<std::array<int, 4>, 3> kParallelFaces = {{{2, 3, 4, 5}, {0, 1, 4, 5}, {0, 1, 2, 3}}};
 
 // Names a sheet's topology from its Euler characteristic, boundary loops and orientability.
 std::string classifySurface(int64_t euler, int loops, bool orientable);
@@ -75,9 +79,14 @@ class SheetFlooder {
   // negative) to `previous` when given.
   SheetStats flood(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, std::vector<Slot>* out,
                    std::vector<int32_t>* previous = nullptr);
+  // Resets the edge and loop marks of these slots (their orientations stay: they persist).
   void clear(const std::vector<Slot>& slots);
   // Adds slot (h, a)'s share of its sheet's mid-surface to `stats` (not its orientation).
   void measure(const Complex& cx, HexId h, int a, SheetStats& stats);
+  // Walks the boundary loops of a sheet that slot (h, a)'s boundary sides are first to meet; returns how many.
+  int walkNewLoops(const Complex& cx, HexId h, int a);
+  // Orientation of each slot's mid-quad (+1/-1, 0 unknown), 3 per hex: written by every flood.
+  std::vector<int8_t>& signs() { return sign_; }
 
  private:
   void walkEdge(const Complex& cx, HexId h, int e);

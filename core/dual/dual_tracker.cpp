@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <map>
 #include <climits>
+#include <numeric>
 
 namespace hexdual {
 
-std::vector<HexId> touchedHexes(const Complex& cx, const Complex::EditLog& log) {
+std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
   std::vector<HexId> out;
   for (const Complex::Edit& e : log.edits) {
     switch (e.kind) {
@@ -15,9 +16,9 @@ std::vector<HexId> touchedHexes(const Complex& cx, const Complex::EditLog& log) 
       case Complex::Edit::SetCorner:
         out.push_back(e.hex);
         break;
-      case Complex::Edit::Glue:
+      case Complex::Edit::Glue:  // value: the partner, as glued
         out.push_back(e.hex);
-        if (cx.isHex(e.hex) && !cx.gluing(e.hex, e.face).boundary()) out.push_back(cx.gluing(e.hex, e.face).hex);
+        out.push_back(HexId(e.value >> 6));
         break;
       case Complex::Edit::Unglue:
         out.push_back(e.hex);
@@ -36,13 +37,181 @@ namespace {
 int slotsOnSheet(const std::array<int32_t, 3>& s, int32_t id) { return (s[0] == id) + (s[1] == id) + (s[2] == id); }
 }  // namespace
 
-DualTracker::DualTracker(const Complex& cx) : dual_(extractDual(cx)) {
+namespace {
+
+constexpr uint16_t kNearBoundary = uint16_t(1u << 15);
+
+size_t slotIndex(Slot s) { return 3 * size_t(s.hex) + size_t(s.axis); }
+
+// Twice slot (h, a)'s share of its sheet's Euler characteristic V - E + F: its quad, minus its
+// sides (interior ones are shared by two slots), plus the primal edges it holds the smallest incidence of.
+int8_t shareOf(const Complex& cx, HexId h, int a, uint16_t marks) {
+  int s = 2 + 2 * __builtin_popcount((marks >> (4 * a)) & 0xFu);
+  for (int f : kParallelFaces[size_t(a)]) s -= cx.isBoundary({h, f}) ? 2 : 1;
+  return int8_t(s);
+}
+
+// The incidences of the edge at e, round its cycle or along its fan; false for a fan.
+bool edgeIncidences(const Complex& cx, EdgeRef e, std::vector<EdgeRef>& out) {
+  out.assign(1, e);
+  auto fs = tables::facesOfEdge(e.edge);
+  for (int dir = 0; dir < 2; ++dir) {
+    EdgeRef cur = e;
+    int exit = fs[size_t(dir)];
+    while (cx.stepAroundEdge(cur, exit)) {
+      if (cur == e) return true;
+      out.push_back(cur);
+    }
+  }
+  return false;
+}
+
+bool nearBoundary(const Complex& cx, HexId h) {
+  for (int e = 0; e < 12; ++e) {
+    EdgeRef cur{h, e};
+    int exit = tables::facesOfEdge(e)[0];
+    for (;;) {
+      if (!cx.stepAroundEdge(cur, exit)) return true;
+      if (cur.hex == h && cur.edge == e) break;
+    }
+  }
+  return false;
+}
+
+// The slot across face f of slot s's hex (f parallel to s's axis), and the orientation flip.
+bool sheetNeighbour(const Complex& cx, Slot s, int f, Slot& n, int& flip) {
+  Gluing g = cx.gluing(s.hex, f);
+  if (g.boundary()) return false;
+  const tables::Crossing& c = tables::kCrossings[size_t(tables::crossingIndex(f, s.axis, g.face, g.orient))];
+  n = {g.hex, c.axis};
+  flip = c.sign;
+  return true;
+}
+
+}  // namespace
+
+DualTracker::DualTracker(const Complex& cx) {
+  dual_ = extractDual(cx, &flooder_.signs());
+  const size_t cap = size_t(cx.hexCapacity());
+  flooder_.reserve(cap);
   selfHexes_.assign(dual_.sheets.size(), 0);
   for (HexId h : cx.hexes()) {
     const auto& s = dual_.sheetOf[size_t(h)];
     for (int a = 0; a < 3; ++a)
       if (slotsOnSheet(s, s[size_t(a)]) >= 2 && (a == 0 || s[size_t(a)] != s[0]) && (a < 2 || s[2] != s[1]))
         ++selfHexes_[size_t(s[size_t(a)])];
+  }
+  // Smallest incidences: the first incidence of an edge met in (hex, edge) order.
+  edgeMarks_.assign(cap, 0);
+  walked_.assign(cap, 0);
+  std::vector<EdgeRef> inc;
+  for (HexId h : cx.hexes())
+    for (int e = 0; e < 12; ++e) {
+      if ((walked_[size_t(h)] >> e) & 1u) continue;
+      const bool closed = edgeIncidences(cx, {h, e}, inc);
+      edgeMarks_[size_t(h)] |= uint16_t(1u << e);
+      for (EdgeRef r : inc) {
+        walked_[size_t(r.hex)] |= uint16_t(1u << r.edge);
+        if (!closed) edgeMarks_[size_t(r.hex)] |= kNearBoundary;
+      }
+    }
+  std::fill(walked_.begin(), walked_.end(), 0);
+  share_.assign(3 * cap, 0);
+  for (HexId h : cx.hexes())
+    for (int a = 0; a < 3; ++a) share_[3 * size_t(h) + size_t(a)] = shareOf(cx, h, a, edgeMarks_[size_t(h)]);
+  front_.assign(3 * cap, 0);
+  delta_.assign(dual_.sheets.size(), 0);
+}
+
+template <class OnChange>
+void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& touched, OnChange onChange) {
+  bool nearBefore = false;
+  std::vector<Slot> dirty;
+  std::vector<HexId> met;
+  std::vector<EdgeRef> inc;
+  for (HexId h : touched) {
+    nearBefore = nearBefore || (edgeMarks_[size_t(h)] & kNearBoundary);
+    if (cx.isHex(h)) {
+      for (int a = 0; a < 3; ++a) dirty.push_back({h, a});
+      continue;
+    }
+    for (int a = 0; a < 3; ++a) {
+      int8_t& old = share_[3 * size_t(h) + size_t(a)];
+      if (old) onChange(Slot{h, a}, int(old), 0);
+      old = 0;
+    }
+    edgeMarks_[size_t(h)] = 0;
+  }
+  bool fan = false;
+  for (HexId h : touched) {
+    if (!cx.isHex(h)) continue;
+    for (int e = 0; e < 12; ++e) {
+      if ((walked_[size_t(h)] >> e) & 1u) continue;
+      fan = !edgeIncidences(cx, {h, e}, inc) || fan;
+      const EdgeRef least = *std::min_element(inc.begin(), inc.end());
+      for (EdgeRef r : inc) {
+        if (!walked_[size_t(r.hex)]) met.push_back(r.hex);
+        walked_[size_t(r.hex)] |= uint16_t(1u << r.edge);
+        const uint16_t bit = uint16_t(1u << r.edge);
+        if (((edgeMarks_[size_t(r.hex)] & bit) != 0) != (r == least)) {
+          edgeMarks_[size_t(r.hex)] ^= bit;
+          dirty.push_back({r.hex, tables::axisOfEdge(r.edge)});
+        }
+      }
+    }
+  }
+  for (HexId m : met) walked_[size_t(m)] = 0;
+  // Only an edge through a touched hex can have reached or left the boundary.
+  if (fan || nearBefore)
+    for (HexId m : met)
+      edgeMarks_[size_t(m)] = uint16_t((edgeMarks_[size_t(m)] & ~kNearBoundary) | (nearBoundary(cx, m) ? kNearBoundary : 0));
+  for (Slot s : dirty) {
+    const int8_t now = shareOf(cx, s.hex, s.axis, edgeMarks_[size_t(s.hex)]);
+    int8_t& old = share_[slotIndex(s)];
+    if (now != old) {
+      onChange(s, int(old), int(now));
+      old = now;
+    }
+  }
+}
+
+bool DualTracker::touchesBoundary(const Complex& cx, const std::vector<HexId>& touched) const {
+  for (HexId h : touched)
+    if (edgeMarks_[size_t(h)] & kNearBoundary) return true;
+  for (HexId h : touched)
+    if (cx.isHex(h) && nearBoundary(cx, h)) return true;
+  return false;
+}
+
+// Orients slots without an orientation from oriented neighbours on the same sheet (new slots
+// joining an orientable sheet).
+void DualTracker::propagateSigns(const Complex& cx, const std::vector<Slot>& slots) {
+  std::vector<int8_t>& sign = flooder_.signs();
+  for (Slot s : slots) sign[slotIndex(s)] = 0;
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (Slot s : slots) {
+      if (sign[slotIndex(s)]) continue;
+      Slot n;
+      int flip;
+      for (int f : kParallelFaces[size_t(s.axis)])
+        if (sheetNeighbour(cx, s, f, n, flip) && sign[slotIndex(n)]) {
+          sign[slotIndex(s)] = int8_t(sign[slotIndex(n)] * flip);
+          progress = true;
+          break;
+        }
+    }
+  }
+}
+
+// Adds (sign +1) or removes (-1) these hexes' counts in selfHexes_ (a hex counts once per sheet it has two slots on).
+void DualTracker::countSelfHexes(const std::vector<HexId>& hexes, int sign) {
+  for (HexId h : hexes) {
+    const auto& s = dual_.sheetOf[size_t(h)];
+    for (int a = 0; a < 3; ++a) {
+      const int32_t id = s[size_t(a)];
+      if (id >= 0 && slotsOnSheet(s, id) >= 2 && (a == 0 || id != s[0]) && (a < 2 || s[2] != s[1])) selfHexes_[size_t(id)] += sign;
+    }
   }
 }
 
@@ -91,6 +260,9 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
       if (joins[ci].size() > 1) return false;  // two sheets would merge: not a local change
     }
   }
+  // Shares move with the edit but each sheet's sum (its Euler characteristic) does not: the
+  // operation keeps every sheet's topology.
+  refreshShares(cx, touched, [](Slot, int, int) {});
   // Remove the slots of dead hexes.
   std::vector<int32_t> changed;
   for (HexId h : touched) {
@@ -106,6 +278,7 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
       changed.push_back(id);
     }
     s = {-1, -1, -1};
+    for (int a = 0; a < 3; ++a) flooder_.signs()[3 * size_t(h) + size_t(a)] = 0;
   }
   // Label the new components: join the one sheet they touch, or form a new sheet.
   for (size_t ci = 0; ci < comps.size(); ++ci) {
@@ -118,7 +291,7 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
       flooder_.clear(sh.slots);
       std::sort(sh.slots.begin(), sh.slots.end());
       st.classify(sh);
-      slotsTouched_ += sh.slots.size();
+      sheetSlotsTouched_ += sh.slots.size();
       dual_.sheets.push_back(std::move(sh));
       selfHexes_.push_back(0);
       change.sheetsCreated.push_back(id);
@@ -129,6 +302,8 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
         dual_.sheetOf[size_t(t.hex)][size_t(t.axis)] = id;
         slots.insert(std::lower_bound(slots.begin(), slots.end(), t), t);
       }
+      propagateSigns(cx, comps[ci]);
+      sheetSlotsTouched_ += comps[ci].size();
       changed.push_back(id);
     }
   }
@@ -158,16 +333,427 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
   return true;
 }
 
+// The sheets through the touched hexes after an edit, by a lockstep flood (TK03 §4.4: a collapse
+// cuts and re-glues sheets in one place). Every touched slot starts a front; fronts that meet join
+// one group; a group whose fronts all run dry is a whole new sheet (a piece). The flood stops once
+// every old sheet meets at most one unfinished group: that group is the rest of those old sheets.
+// Returns false, changing nothing, when the edit is not one it can follow (boundary, twisted sheets).
+bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
+  auto& sheetOf = dual_.sheetOf;
+  auto label = [&](Slot t) { return sheetOf[size_t(t.hex)][size_t(t.axis)]; };
+  std::vector<int32_t> old;
+  for (HexId h : touched)
+    for (int32_t id : sheetOf[size_t(h)])
+      if (id >= 0) old.push_back(id);
+  std::sort(old.begin(), old.end());
+  old.erase(std::unique(old.begin(), old.end()), old.end());
+  for (int32_t id : old)
+    if (!dual_.sheets[size_t(id)].orientable) return false;
+  if (touchesBoundary(cx, touched)) return false;
+  auto oldIndex = [&](int32_t id) { return size_t(std::lower_bound(old.begin(), old.end(), id) - old.begin()); };
+
+  // ---- explore ----
+  struct Reached {
+    Slot slot;
+    int32_t label;  // the old sheet, -1 for a new slot
+    int32_t front;
+  };
+  std::vector<Reached> reached;
+  std::vector<std::vector<Slot>> queue;
+  std::vector<size_t> head;
+  std::vector<int32_t> parent, active;
+  std::vector<std::vector<int32_t>> meets;  // per group root: old sheets reached
+  auto find = [&](int32_t x) {
+    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+    return x;
+  };
+  size_t unfinished = 0;
+  bool foreign = false;
+  std::vector<uint8_t> paused;
+  auto reach = [&](Slot t, int32_t f) {
+    front_[slotIndex(t)] = f + 1;
+    reached.push_back({t, label(t), f});
+    queue[size_t(f)].push_back(t);
+    const int32_t id = label(t);
+    if (id >= 0 && !std::binary_search(old.begin(), old.end(), id)) foreign = true;  // an edit not logged whole
+    auto& m = meets[size_t(find(f))];
+    if (id >= 0 && std::find(m.begin(), m.end(), id) == m.end()) m.push_back(id);
+  };
+  auto unite = [&](int32_t a, int32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return;
+    if (b < a) std::swap(a, b);
+    if (active[size_t(a)] && active[size_t(b)]) --unfinished;
+    parent[size_t(b)] = a;
+    if (size_t(a) < paused.size()) paused[size_t(a)] = 0;
+    active[size_t(a)] += active[size_t(b)];
+    for (int32_t id : meets[size_t(b)])
+      if (std::find(meets[size_t(a)].begin(), meets[size_t(a)].end(), id) == meets[size_t(a)].end()) meets[size_t(a)].push_back(id);
+  };
+  for (HexId h : touched)
+    if (cx.isHex(h))
+      for (int a = 0; a < 3; ++a) {
+        const int32_t f = int32_t(queue.size());
+        queue.emplace_back();
+        head.push_back(0);
+        parent.push_back(f);
+        active.push_back(1);
+        meets.emplace_back();
+        ++unfinished;
+        reach({h, a}, f);
+      }
+  std::vector<int32_t> owner(old.size(), -1), sharers(old.size(), 0);
+  paused.assign(parent.size(), 0);
+  // A group pauses when every old sheet it has met meets no other unfinished group: it then is the
+  // rest of those sheets (a group joined to it later resumes it). Settled when all have paused.
+  auto settled = [&] {
+    std::fill(owner.begin(), owner.end(), -1);
+    std::fill(sharers.begin(), sharers.end(), 0);
+    for (size_t f = 0; f < parent.size(); ++f) {
+      if (parent[f] != int32_t(f) || !active[f]) continue;
+      for (int32_t id : meets[f]) {
+        const size_t k = oldIndex(id);
+        ++sharers[k];
+        owner[k] = int32_t(f);
+      }
+    }
+    bool all = true;
+    for (size_t f = 0; f < parent.size(); ++f) {
+      if (parent[f] != int32_t(f) || !active[f]) continue;
+      bool alone = !meets[f].empty();
+      for (int32_t id : meets[f]) alone = alone && sharers[oldIndex(id)] == 1;
+      paused[f] = alone;
+      all = all && alone;
+    }
+    return all;
+  };
+  while (unfinished > 0 && !foreign) {
+    for (size_t f = 0; f < queue.size(); ++f) {
+      if (head[f] == queue[f].size() || paused[size_t(find(int32_t(f)))]) continue;
+      const Slot cur = queue[f][head[f]++];
+      for (int face : kParallelFaces[size_t(cur.axis)]) {
+        Slot n;
+        int flip;
+        if (!sheetNeighbour(cx, cur, face, n, flip)) continue;
+        const int32_t m = front_[slotIndex(n)];
+        if (m == 0)
+          reach(n, int32_t(f));
+        else if (m - 1 != int32_t(f))
+          unite(int32_t(f), m - 1);
+      }
+      if (head[f] == queue[f].size()) {
+        const int32_t r = find(int32_t(f));
+        if (--active[size_t(r)] == 0) --unfinished;
+      }
+    }
+    if (foreign || settled()) break;
+  }
+  auto clearFronts = [&] {
+    for (const Reached& r : reached) front_[slotIndex(r.slot)] = 0;
+  };
+  if (foreign) {
+   
+    clearFronts();
+    return false;
+  }
+
+  // ---- plan: pieces (finished groups), remainders, ids ----
+  std::vector<int64_t> remainder(old.size(), 0), loopsTaken(old.size(), 0);
+  for (size_t k = 0; k < old.size(); ++k) remainder[k] = int64_t(dual_.sheets[size_t(old[k])].slots.size());
+  for (HexId h : touched)
+    if (!cx.isHex(h))
+      for (int32_t id : sheetOf[size_t(h)])
+        if (id >= 0) --remainder[oldIndex(id)];
+  std::vector<int32_t> pieceOf(parent.size(), -1);
+  std::vector<std::vector<Slot>> pieces;
+  std::vector<std::vector<int32_t>> pieceLabels;
+  std::vector<Slot> newInRest;  // new slots of unfinished groups
+  for (const Reached& r : reached) {
+    const int32_t g = find(r.front);
+    if (active[size_t(g)]) {
+      if (r.label < 0) newInRest.push_back(r.slot);
+      continue;
+    }
+    if (pieceOf[size_t(g)] < 0) {
+      pieceOf[size_t(g)] = int32_t(pieces.size());
+      pieces.emplace_back();
+      pieceLabels.emplace_back();
+    }
+    pieces[size_t(pieceOf[size_t(g)])].push_back(r.slot);
+    pieceLabels[size_t(pieceOf[size_t(g)])].push_back(r.label);
+    if (r.label >= 0) --remainder[oldIndex(r.label)];
+  }
+  for (size_t k = 0; k < old.size(); ++k)
+    if ((owner[k] < 0) != (remainder[k] == 0) || sharers[k] > 1) {  // cannot happen on a valid complex; be safe
+      clearFronts();
+      return false;
+    }
+  // Orientations of the remainders: each re-glued quad ties the orientation of the old sheets (or
+  // new slots) on its two sides; a contradiction is a twist, or a sheet re-glued to itself flipped:
+  // re-flood. Old sheets merged into a kept one are flipped as they are re-labelled.
+  std::vector<int8_t>& signs = flooder_.signs();
+  std::sort(newInRest.begin(), newInRest.end());
+  std::vector<int32_t> up(old.size() + newInRest.size());
+  std::vector<uint8_t> par(up.size(), 0);
+  for (size_t v = 0; v < up.size(); ++v) up[v] = int32_t(v);
+  auto root = [&](int32_t x, int& p) {
+    p = 0;
+    while (up[size_t(x)] != x) {
+      p ^= par[size_t(x)];
+      x = up[size_t(x)];
+    }
+    return x;
+  };
+  // The variable of a slot's orientation and its stored sign (new slots: +1 until solved).
+  auto var = [&](Slot t, int& sg) -> int32_t {
+    const int32_t id = label(t);
+    if (id >= 0) {
+      sg = signs[slotIndex(t)];
+      return int32_t(oldIndex(id));
+    }
+    sg = 1;
+    auto it = std::lower_bound(newInRest.begin(), newInRest.end(), t);
+    return it != newInRest.end() && *it == t ? int32_t(old.size() + size_t(it - newInRest.begin())) : -1;
+  };
+  bool consistent = true;
+  for (const Reached& r : reached) {
+    if (!consistent) break;
+    if (!active[size_t(find(r.front))] || !(r.label < 0 || std::binary_search(touched.begin(), touched.end(), r.slot.hex))) continue;
+    int ss = 0, ps = 0;
+    const int32_t vs = var(r.slot, ss);
+    for (int face : kParallelFaces[size_t(r.slot.axis)]) {
+      Slot n;
+      int flip, sn = 0, pn = 0;
+      if (!sheetNeighbour(cx, r.slot, face, n, flip)) continue;
+      const int32_t vn = var(n, sn);
+      if (vs < 0 || vn < 0 || !ss || !sn) {
+        consistent = false;
+        break;
+      }
+      const int need = sn != ss * flip;
+      const int32_t rs = root(vs, ps), rn = root(vn, pn);
+      if (rs == rn) {
+        consistent = consistent && (ps ^ pn) == need;
+      } else {
+        up[size_t(rn)] = rs;
+        par[size_t(rn)] = uint8_t(ps ^ pn ^ need);
+      }
+    }
+  }
+  if (!consistent) {
+   
+    clearFronts();
+    return false;
+  }
+  // The rest of each unfinished group keeps the id of its old sheet with most slots left.
+  std::vector<int32_t> keepOf(parent.size(), -1);
+  for (size_t k = 0; k < old.size(); ++k) {
+    const int32_t g = owner[k];
+    if (g < 0) continue;
+    const int32_t cur = keepOf[size_t(g)];
+    if (cur < 0 || remainder[k] > remainder[oldIndex(cur)]) keepOf[size_t(g)] = old[k];
+  }
+  // Flip of each old sheet and new slot relative to the sheet its group keeps.
+  std::vector<uint8_t> flipOf(up.size(), 0);
+  for (size_t k = 0; k < old.size(); ++k) {
+    if (owner[k] < 0) continue;
+    int pk = 0, pkeep = 0;
+    if (root(int32_t(k), pk) != root(int32_t(oldIndex(keepOf[size_t(owner[k])])), pkeep)) {
+      clearFronts();
+      return false;  // joined through no re-glued quad: cannot happen, be safe
+    }
+    flipOf[k] = uint8_t(pk ^ pkeep);
+  }
+  for (size_t i = 0; i < newInRest.size(); ++i) {
+    const int32_t keep = keepOf[size_t(find(front_[slotIndex(newInRest[i])] - 1))];
+    int pv = 0, pkeep = 0;
+    if (root(int32_t(old.size() + i), pv) != root(int32_t(oldIndex(keep)), pkeep)) {
+      clearFronts();
+      return false;
+    }
+    flipOf[old.size() + i] = uint8_t(pv ^ pkeep);
+  }
+  // Pieces in the order of their smallest slot; a piece keeps an old id only when it is all that is left of that sheet.
+  std::vector<size_t> order(pieces.size());
+  for (size_t p = 0; p < pieces.size(); ++p) {
+    std::sort(pieces[p].begin(), pieces[p].end());
+    order[p] = p;
+  }
+  std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return pieces[x][0] < pieces[y][0]; });
+  std::vector<int32_t> pieceId(pieces.size(), -1);
+  std::vector<uint8_t> taken(old.size(), 0);
+  int32_t fresh = int32_t(dual_.sheets.size());
+  for (size_t p : order) {
+    int32_t best = -1;
+    for (int32_t id : pieceLabels[p])
+      if (id >= 0 && owner[oldIndex(id)] < 0 && !taken[oldIndex(id)] && (best < 0 || id < best)) best = id;
+    if (best >= 0) taken[oldIndex(best)] = 1;
+    pieceId[p] = best >= 0 ? best : fresh++;
+  }
+
+  // ---- commit ----
+  dual_.sheets.resize(size_t(fresh));
+  selfHexes_.resize(size_t(fresh), 0);
+  if (delta_.size() < size_t(fresh)) delta_.resize(size_t(fresh), 0);
+  std::vector<int32_t> affected(old.begin(), old.end());
+  for (size_t p = 0; p < pieces.size(); ++p) affected.push_back(pieceId[p]);
+  std::sort(affected.begin(), affected.end());
+  affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
+  // Hexes whose slots may change sheet: their self-intersection counts are redone.
+  std::vector<HexId> recount(touched.begin(), touched.end());
+  for (const auto& piece : pieces)
+    for (Slot t : piece) recount.push_back(t.hex);
+  std::vector<int32_t> merged;
+  for (size_t k = 0; k < old.size(); ++k)
+    if (owner[k] >= 0 && keepOf[size_t(owner[k])] != old[k]) {
+      merged.push_back(old[k]);
+      for (Slot t : dual_.sheets[size_t(old[k])].slots) recount.push_back(t.hex);
+    }
+  std::sort(recount.begin(), recount.end());
+  recount.erase(std::unique(recount.begin(), recount.end()), recount.end());
+  countSelfHexes(recount, -1);
+  refreshShares(cx, touched, [&](Slot t, int before, int after) {
+    const int32_t id = label(t);
+    if (id >= 0) delta_[size_t(id)] += after - before;
+  });
+  auto move = [&](Slot t, int32_t to) {
+    int32_t& id = sheetOf[size_t(t.hex)][size_t(t.axis)];
+    const int c = share_[slotIndex(t)];
+    if (id >= 0) delta_[size_t(id)] -= c;
+    delta_[size_t(to)] += c;
+    id = to;
+  };
+  for (HexId h : touched)
+    if (!cx.isHex(h)) {
+      sheetOf[size_t(h)] = {-1, -1, -1};
+      for (int a = 0; a < 3; ++a) signs[3 * size_t(h) + size_t(a)] = 0;
+    }
+  // Pieces: labelled, oriented by a flood of their own slots, loops walked and charged to the old sheet they came from.
+  for (size_t p = 0; p < pieces.size(); ++p) {
+    const int32_t id = pieceId[p];
+    Sheet& sh = dual_.sheets[size_t(id)];
+    const bool reused = std::binary_search(old.begin(), old.end(), id);
+    int loops = 0;
+    for (size_t i = 0; i < pieces[p].size(); ++i) {
+      const Slot t = pieces[p][i];
+      const int l = flooder_.walkNewLoops(cx, t.hex, t.axis);
+      loops += l;
+      const int32_t from = label(t);
+      if (l && from >= 0) loopsTaken[oldIndex(from)] += l;
+    }
+    flooder_.clear(pieces[p]);
+    for (Slot t : pieces[p]) {
+      move(t, id);
+      signs[slotIndex(t)] = 0;
+    }
+    bool orientable = true;
+    std::vector<Slot> stack{pieces[p][0]};
+    signs[slotIndex(pieces[p][0])] = 1;
+    while (!stack.empty()) {
+      const Slot t = stack.back();
+      stack.pop_back();
+      for (int face : kParallelFaces[size_t(t.axis)]) {
+        Slot n;
+        int flip;
+        if (!sheetNeighbour(cx, t, face, n, flip)) continue;
+        const int want = signs[slotIndex(t)] * flip;
+        if (!signs[slotIndex(n)]) {
+          signs[slotIndex(n)] = int8_t(want);
+          stack.push_back(n);
+        } else if (signs[slotIndex(n)] != want) {
+          orientable = false;
+        }
+      }
+    }
+    if (!reused) sh.euler = 0;
+    sh.id = id;
+    sh.alive = true;
+    sh.slots = pieces[p];
+    sh.boundaryLoops = loops;
+    sh.orientable = orientable;
+    (reused ? change.sheetsChanged : change.sheetsCreated).push_back(id);
+  }
+  // Remainders: merged old sheets and new slots join the kept id; loops are what the pieces did not take.
+  std::vector<std::vector<Slot>> joining(parent.size());
+  size_t relabelled = 0;
+  for (int32_t x : merged) {
+    const int32_t keep = keepOf[size_t(owner[oldIndex(x)])];
+    const int8_t turn = flipOf[oldIndex(x)] ? -1 : 1;
+    for (Slot t : dual_.sheets[size_t(x)].slots)
+      if (label(t) == x) {
+        signs[slotIndex(t)] = int8_t(signs[slotIndex(t)] * turn);
+        move(t, keep);
+        joining[size_t(owner[oldIndex(x)])].push_back(t);
+        ++relabelled;
+      }
+    dual_.sheets[size_t(x)].slots.clear();
+    dual_.sheets[size_t(x)].alive = false;
+    change.sheetsRemoved.push_back(x);
+  }
+  for (size_t i = 0; i < newInRest.size(); ++i) {
+    const Slot t = newInRest[i];
+    signs[slotIndex(t)] = flipOf[old.size() + i] ? -1 : 1;
+    const int32_t g = find(front_[slotIndex(t)] - 1);
+    move(t, keepOf[size_t(g)]);
+    joining[size_t(g)].push_back(t);
+  }
+  for (size_t g = 0; g < parent.size(); ++g) {
+    const int32_t keep = keepOf[g];
+    if (keep < 0) continue;
+    Sheet& sh = dual_.sheets[size_t(keep)];
+    int64_t loops = 0;
+    for (size_t k = 0; k < old.size(); ++k)
+      if (owner[k] == int32_t(g)) loops += dual_.sheets[size_t(old[k])].boundaryLoops - loopsTaken[k];
+    auto& slots = sh.slots;
+    slots.erase(std::remove_if(slots.begin(), slots.end(), [&](Slot t) { return label(t) != keep; }), slots.end());
+    std::sort(joining[g].begin(), joining[g].end());
+    const size_t mid = slots.size();
+    slots.insert(slots.end(), joining[g].begin(), joining[g].end());
+    std::inplace_merge(slots.begin(), slots.begin() + std::ptrdiff_t(mid), slots.end());
+    sh.boundaryLoops = int(loops);
+    change.sheetsChanged.push_back(keep);
+  }
+  for (size_t k = 0; k < old.size(); ++k)
+    if (owner[k] < 0 && !taken[k]) {
+      dual_.sheets[size_t(old[k])].slots.clear();
+      dual_.sheets[size_t(old[k])].alive = false;
+      change.sheetsRemoved.push_back(old[k]);
+    }
+  countSelfHexes(recount, +1);
+  for (int32_t id : affected) {
+    Sheet& sh = dual_.sheets[size_t(id)];
+    sh.euler += delta_[size_t(id)] / 2;
+    delta_[size_t(id)] = 0;
+    if (!sh.alive) continue;
+    sh.selfIntersecting = selfHexes_[size_t(id)] > 0;
+    sh.topology = classifySurface(sh.euler, sh.boundaryLoops, sh.orientable);
+  }
+  sheetSlotsTouched_ += reached.size() + relabelled;
+  clearFronts();
+  return true;
+}
+
 DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bool sheetsKeepTopology) {
   const size_t cap = std::max(size_t(cx.hexCapacity()), dual_.sheetOf.size());
   dual_.sheetOf.resize(cap, {-1, -1, -1});
   dual_.chordOf.resize(cap, {-1, -1, -1});
   flooder_.reserve(cap);
+  edgeMarks_.resize(cap, 0);
+  walked_.resize(cap, 0);
+  share_.resize(3 * cap, 0);
+  front_.resize(3 * cap, 0);
   slotsTouched_ = 0;
+  sheetSlotsTouched_ = 0;
+  reflooded_ = false;
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   DualChange change;
-  if (!(sheetsKeepTopology && updateSheetsLocally(cx, touched, change))) updateSheetsByFlood(cx, touched, change);
+  if (!(sheetsKeepTopology && updateSheetsLocally(cx, touched, change)) && !updateSheetsLockstep(cx, touched, change)) {
+    reflooded_ = true;
+    updateSheetsByFlood(cx, touched, change);
+  }
+  slotsTouched_ = sheetSlotsTouched_;
   updateChords(cx, touched, change);
   return change;
 }
@@ -261,8 +847,12 @@ void DualTracker::updateSheetsByFlood(const Complex& cx, const std::vector<HexId
     std::sort(sh.slots.begin(), sh.slots.end());
     st.classify(sh);
   };
-  slotsTouched_ += relabel(cx, touched, dual_.sheetOf, dual_.sheets, walk, change.sheetsCreated, change.sheetsChanged,
-                           change.sheetsRemoved);
+  refreshShares(cx, touched, [](Slot, int, int) {});  // the floods measure each sheet whole
+  sheetSlotsTouched_ += relabel(cx, touched, dual_.sheetOf, dual_.sheets, walk, change.sheetsCreated, change.sheetsChanged,
+                                change.sheetsRemoved);
+  for (HexId h : touched)
+    if (!cx.isHex(h))
+      for (int a = 0; a < 3; ++a) flooder_.signs()[3 * size_t(h) + size_t(a)] = 0;
   selfHexes_.resize(dual_.sheets.size(), 0);
   auto recount = [&](int id) {
     Sheet& sh = dual_.sheets[size_t(id)];

@@ -1,8 +1,13 @@
-// Keeps the dual current across operations. After an operation only the sheets and chords
-// through the touched hexes are recomputed (cost proportional to those sheets and chords, not to
-// the mesh). Surviving sheets and chords keep their ids; new ones get fresh ids; when several
-// old ones merge, the result keeps the smallest id; when one splits, the piece holding its
-// smallest slot keeps the id.
+// Keeps the dual current across operations. Sheets through the touched hexes are updated by a
+// lockstep flood from every touched slot that stops as soon as each old sheet is either wholly
+// explored or continues in one unexplored remainder, so a sheet cut or re-glued in one place costs
+// the explored region, and a real split its smaller pieces; Euler characteristics, loops and
+// orientations of the remainder follow from per-slot shares kept between updates. Edits that
+// touch the boundary or non-orientable sheets re-flood the sheets they touch. Chords through the
+// touched hexes are re-walked. Surviving sheets and chords keep their ids; new ones get fresh ids;
+// when sheets merge or split, the unexplored remainder keeps the id of its largest old sheet and
+// explored pieces keep an old id only when they are all that is left of it; chords follow the
+// smallest old id.
 #pragma once
 #include <vector>
 
@@ -35,15 +40,37 @@ class DualTracker {
 
   // Slots the last update visited (walked, flooded or re-labelled): its cost, independent of time.
   size_t slotsTouched() const { return slotsTouched_; }
+  // The same for sheets and chords apart; and whether the last update's sheets were re-flooded.
+  size_t sheetSlotsTouched() const { return sheetSlotsTouched_; }
+  size_t chordSlotsTouched() const { return slotsTouched_ - sheetSlotsTouched_; }
+  bool lastUpdateReflooded() const { return reflooded_; }
 
  private:
   bool updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
+  bool updateSheetsLockstep(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
+  // Recomputes the smallest-incidence marks of the edges through the live touched hexes and the
+  // mid-surface share of every slot whose share the edit changed; onChange(slot, old, new).
+  template <class OnChange>
+  void refreshShares(const Complex& cx, const std::vector<HexId>& touched, OnChange onChange);
+  bool touchesBoundary(const Complex& cx, const std::vector<HexId>& touched) const;
+  void propagateSigns(const Complex& cx, const std::vector<Slot>& unsigned_);
+  void countSelfHexes(const std::vector<HexId>& hexes, int sign);
   Dual dual_;
   std::vector<int32_t> selfHexes_;  // per sheet id: hexes with two or more slots on it
-  SheetFlooder flooder_;
-  size_t slotsTouched_ = 0;
+  SheetFlooder flooder_;            // its signs() persist: one orientation per orientable sheet
+  // Per hex: bit e set when (h, e) is its edge's smallest incidence; kNearBoundary when any of its
+  // 12 edges reaches the boundary.
+  std::vector<uint16_t> edgeMarks_;
+  // Per slot: twice its share of its sheet's Euler characteristic (2 - sides - boundary sides +
+  // 2 x primal edges it holds the smallest incidence of); a sheet's Euler characteristic is half the sum.
+  std::vector<int8_t> share_;
+  std::vector<int32_t> front_;    // per slot: lockstep front + 1 that reached it (0 outside an update)
+  std::vector<uint16_t> walked_;  // per hex: edges walked by the current refreshShares (0 outside it)
+  std::vector<int64_t> delta_;    // per sheet id: change of twice its Euler characteristic (0 outside an update)
+  size_t slotsTouched_ = 0, sheetSlotsTouched_ = 0;
+  bool reflooded_ = false;
 };
 
 // Hex ids whose gluings or corners an edit log changed (created, removed, re-glued, renumbered).
