@@ -206,12 +206,14 @@ void DualTracker::propagateSigns(const Complex& cx, const std::vector<Slot>& slo
 
 // Adds (sign +1) or removes (-1) these hexes' counts in selfHexes_ (a hex counts once per sheet it has two slots on).
 void DualTracker::countSelfHexes(const std::vector<HexId>& hexes, int sign) {
-  for (HexId h : hexes) {
-    const auto& s = dual_.sheetOf[size_t(h)];
-    for (int a = 0; a < 3; ++a) {
-      const int32_t id = s[size_t(a)];
-      if (id >= 0 && slotsOnSheet(s, id) >= 2 && (a == 0 || id != s[0]) && (a < 2 || s[2] != s[1])) selfHexes_[size_t(id)] += sign;
-    }
+  for (HexId h : hexes) countSelfHex(h, sign);
+}
+
+void DualTracker::countSelfHex(HexId h, int sign) {
+  const auto& s = dual_.sheetOf[size_t(h)];
+  for (int a = 0; a < 3; ++a) {
+    const int32_t id = s[size_t(a)];
+    if (id >= 0 && slotsOnSheet(s, id) >= 2 && (a == 0 || id != s[0]) && (a < 2 || s[2] != s[1])) selfHexes_[size_t(id)] += sign;
   }
 }
 
@@ -606,10 +608,7 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
     for (Slot t : piece) recount.push_back(t.hex);
   std::vector<int32_t> merged;
   for (size_t k = 0; k < old.size(); ++k)
-    if (owner[k] >= 0 && keepOf[size_t(owner[k])] != old[k]) {
-      merged.push_back(old[k]);
-      for (Slot t : dual_.sheets[size_t(old[k])].slots) recount.push_back(t.hex);
-    }
+    if (owner[k] >= 0 && keepOf[size_t(owner[k])] != old[k]) merged.push_back(old[k]);
   std::sort(recount.begin(), recount.end());
   recount.erase(std::unique(recount.begin(), recount.end()), recount.end());
   countSelfHexes(recount, -1);
@@ -675,18 +674,40 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
     (reused ? change.sheetsChanged : change.sheetsCreated).push_back(id);
   }
   // Remainders: merged old sheets and new slots join the kept id; loops are what the pieces did not take.
+  // Merged sheets are re-labelled hex by hex (their slot lists are sorted by hex), each hex's
+  // self-intersection count redone around it.
   std::vector<std::vector<Slot>> joining(parent.size());
   size_t relabelled = 0;
+  auto join = [&](size_t g, const std::vector<Slot>& run) {  // run sorted
+    auto& slots = dual_.sheets[size_t(keepOf[g])].slots;
+    const size_t mid = slots.size();
+    slots.insert(slots.end(), run.begin(), run.end());
+    std::inplace_merge(slots.begin(), slots.begin() + std::ptrdiff_t(mid), slots.end());
+  };
+  for (size_t g = 0; g < parent.size(); ++g) {
+    const int32_t keep = keepOf[g];
+    if (keep < 0) continue;
+    auto& slots = dual_.sheets[size_t(keep)].slots;
+    slots.erase(std::remove_if(slots.begin(), slots.end(), [&](Slot t) { return label(t) != keep; }), slots.end());
+  }
   for (int32_t x : merged) {
-    const int32_t keep = keepOf[size_t(owner[oldIndex(x)])];
+    const size_t g = size_t(owner[oldIndex(x)]);
+    const int32_t keep = keepOf[g];
     const int8_t turn = flipOf[oldIndex(x)] ? -1 : 1;
-    for (Slot t : dual_.sheets[size_t(x)].slots)
-      if (label(t) == x) {
-        signs[slotIndex(t)] = int8_t(signs[slotIndex(t)] * turn);
-        move(t, keep);
-        joining[size_t(owner[oldIndex(x)])].push_back(t);
-        ++relabelled;
+    std::vector<Slot> run = std::move(dual_.sheets[size_t(x)].slots);
+    run.erase(std::remove_if(run.begin(), run.end(), [&](Slot t) { return label(t) != x; }), run.end());
+    for (size_t i = 0; i < run.size();) {
+      const HexId h = run[i].hex;
+      const bool alone = !std::binary_search(recount.begin(), recount.end(), h);
+      if (alone) countSelfHex(h, -1);
+      for (; i < run.size() && run[i].hex == h; ++i) {
+        signs[slotIndex(run[i])] = int8_t(signs[slotIndex(run[i])] * turn);
+        move(run[i], keep);
       }
+      if (alone) countSelfHex(h, +1);
+    }
+    relabelled += run.size();
+    join(g, run);
     dual_.sheets[size_t(x)].slots.clear();
     dual_.sheets[size_t(x)].alive = false;
     change.sheetsRemoved.push_back(x);
@@ -696,22 +717,16 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
     signs[slotIndex(t)] = flipOf[old.size() + i] ? -1 : 1;
     const int32_t g = find(front_[slotIndex(t)] - 1);
     move(t, keepOf[size_t(g)]);
-    joining[size_t(g)].push_back(t);
+    joining[size_t(g)].push_back(t);  // sorted: newInRest is
   }
   for (size_t g = 0; g < parent.size(); ++g) {
     const int32_t keep = keepOf[g];
     if (keep < 0) continue;
-    Sheet& sh = dual_.sheets[size_t(keep)];
     int64_t loops = 0;
     for (size_t k = 0; k < old.size(); ++k)
       if (owner[k] == int32_t(g)) loops += dual_.sheets[size_t(old[k])].boundaryLoops - loopsTaken[k];
-    auto& slots = sh.slots;
-    slots.erase(std::remove_if(slots.begin(), slots.end(), [&](Slot t) { return label(t) != keep; }), slots.end());
-    std::sort(joining[g].begin(), joining[g].end());
-    const size_t mid = slots.size();
-    slots.insert(slots.end(), joining[g].begin(), joining[g].end());
-    std::inplace_merge(slots.begin(), slots.begin() + std::ptrdiff_t(mid), slots.end());
-    sh.boundaryLoops = int(loops);
+    join(g, joining[g]);
+    dual_.sheets[size_t(keep)].boundaryLoops = int(loops);
     change.sheetsChanged.push_back(keep);
   }
   for (size_t k = 0; k < old.size(); ++k)
@@ -791,22 +806,21 @@ size_t relabel(const Complex& cx, const std::vector<HexId>& touched, std::vector
       if (id >= 0) old.push_back(id);
   std::sort(old.begin(), old.end());
   old.erase(std::unique(old.begin(), old.end()), old.end());
-  std::vector<Slot> seeds;
+  // Every new component holds a touched slot (its other slots kept their gluings), so the live
+  // touched slots are enough seeds.
   for (int id : old) {
-    for (Slot s : list[size_t(id)].slots) {
-      of[size_t(s.hex)][size_t(s.axis)] = parked(id);
-      seeds.push_back(s);
-    }
+    for (Slot s : list[size_t(id)].slots) of[size_t(s.hex)][size_t(s.axis)] = parked(id);
+    visited += list[size_t(id)].slots.size();
     list[size_t(id)].alive = false;
     list[size_t(id)].slots.clear();
   }
+  std::vector<Slot> seeds;
   for (HexId h : touched) {
     if (!cx.isHex(h)) {
       of[size_t(h)] = {-1, -1, -1};
       continue;
     }
-    for (int a = 0; a < 3; ++a)
-      if (of[size_t(h)][size_t(a)] == -1) seeds.push_back({h, a});
+    for (int a = 0; a < 3; ++a) seeds.push_back({h, a});
   }
   std::sort(seeds.begin(), seeds.end());
   seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
@@ -871,10 +885,11 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
   auto walk = [&](Slot s, Chord& ch, std::vector<int32_t>& previous) {
     ch.id = kTemp;
     walkChord(cx, s, ch, chordOf, &previous);
-    std::vector<Slot> sorted = ch.slots;
-    std::sort(sorted.begin(), sorted.end());
-    for (size_t i = 1; i < sorted.size(); ++i)
-      if (sorted[i].hex == sorted[i - 1].hex) ch.selfIntersecting = true;
+    for (Slot t : ch.slots) {  // a hex met twice (walked_ is free between refreshes)
+      ch.selfIntersecting = ch.selfIntersecting || walked_[size_t(t.hex)];
+      walked_[size_t(t.hex)] = 1;
+    }
+    for (Slot t : ch.slots) walked_[size_t(t.hex)] = 0;
   };
   slotsTouched_ += relabel(cx, touched, dual_.chordOf, dual_.chords, walk, change.chordsCreated, change.chordsChanged,
                            change.chordsRemoved);

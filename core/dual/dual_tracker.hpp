@@ -57,6 +57,7 @@ class DualTracker {
   bool touchesBoundary(const Complex& cx, const std::vector<HexId>& touched) const;
   void propagateSigns(const Complex& cx, const std::vector<Slot>& unsigned_);
   void countSelfHexes(const std::vector<HexId>& hexes, int sign);
+  void countSelfHex(HexId h, int sign);
   Dual dual_;
   std::vector<int32_t> selfHexes_;  // per sheet id: hexes with two or more slots on it
   SheetFlooder flooder_;            // its signs() persist: one orientation per orientable sheet
