@@ -141,3 +141,55 @@ TEST_CASE("dual tracker: after an exact undo, releaseRetiredTail gives the redon
   CHECK(again.dual.chordsCreated == first.dual.chordsCreated);
   CHECK(again.dual.chordsChanged == first.dual.chordsChanged);
 }
+
+namespace {
+struct CollapseCost {
+  size_t explored = 0, merged = 0, chordSlots = 0, undoExplored = 0;
+};
+// Face collapse (or a hex push then ring collapse) at the centre of an n^3 grid, dual kept by the
+// tracker, checked against a fresh extraction, then undone; what each update touched.
+CollapseCost collapseAtCentre(int n, bool ring) {
+  Complex cx = makeGrid(n, n, n);
+  DualTracker tracker(cx);
+  auto id = [&](int i, int j, int k) { return std::to_string(i + n * (j + n * k)); };
+  const int c = n / 2;
+  std::string step = "facecollapse h" + id(c, c, c) + "e11 h" + id(c, c, c) + "f1 h" + id(c, c + 1, c) + "f1";
+  if (ring) {
+    const HexId first = cx.hexCapacity();
+    applyStepTracked(cx, tracker, parseOpStep("hexpush h" + id(c, c, c) + "f5"));
+    step = "ringcollapse h" + std::to_string(first + 2) + "e";
+    const HexId ringHex = cx.hexCapacity() - 4;  // the ring chord's axis there names the edge
+    for (int a = 0; a < 3; ++a)
+      if (tracker.dual().chords[size_t(tracker.dual().chordOf[size_t(ringHex)][size_t(a)])].closed) step += std::to_string(4 * a);
+  }
+  StepReport r = applyStepTracked(cx, tracker, parseOpStep(step));
+  CHECK_FALSE(tracker.lastUpdateReflooded());
+  compareDuals(cx, tracker.dual(), extractDual(cx));
+  CollapseCost cost{tracker.sheetSlotsTouched() - tracker.mergedSlots(), tracker.mergedSlots(), tracker.chordSlotsTouched(), 0};
+  cx.undo(r.result.edits);
+  tracker.update(cx, r.result.edits, keepsSheetTopology(r.result));
+  CHECK_FALSE(tracker.lastUpdateReflooded());
+  compareDuals(cx, tracker.dual(), extractDual(cx));
+  cost.undoExplored = tracker.sheetSlotsTouched();
+  return cost;
+}
+}  // namespace
+
+// TK03 §4.4: a collapse changes the dual in one place; the lockstep flood explores that place, not
+// the sheets it cuts (which grow as n^2). Counted in slots, not timed.
+TEST_CASE("dual tracker: ring and face collapse updates explore O(region) sheet slots (30^3 and 60^3)") {
+  for (bool ring : {false, true}) {
+    CAPTURE(ring);
+    const CollapseCost small = collapseAtCentre(30, ring), big = collapseAtCentre(60, ring);
+    MESSAGE((ring ? "ring" : "face") << " collapse, 30^3 / 60^3: explored " << small.explored << " / " << big.explored
+                                     << ", merged " << small.merged << " / " << big.merged << ", chord slots "
+                                     << small.chordSlots << " / " << big.chordSlots << ", undo explored "
+                                     << small.undoExplored << " / " << big.undoExplored);
+    CHECK(big.explored == small.explored);  // the same region, whatever the grid size
+    CHECK(big.explored < 200);
+    // Both collapses merge two parallel layer sheets (n^2 slots each): re-labelling one (less the
+    // slot the ring collapse removes) is the price of per-slot ids.
+    CHECK(small.merged == (ring ? 30 * 30 - 1 : 30 * 30));
+    CHECK(big.merged == (ring ? 60 * 60 - 1 : 60 * 60));
+  }
+}

@@ -745,6 +745,7 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
     sh.topology = classifySurface(sh.euler, sh.boundaryLoops, sh.orientable);
   }
   sheetSlotsTouched_ += reached.size() + relabelled;
+  mergedSlots_ = relabelled;
   clearFronts();
   return true;
 }
@@ -760,6 +761,7 @@ DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bo
   front_.resize(3 * cap, 0);
   slotsTouched_ = 0;
   sheetSlotsTouched_ = 0;
+  mergedSlots_ = 0;
   reflooded_ = false;
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());

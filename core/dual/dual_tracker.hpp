@@ -43,6 +43,8 @@ class DualTracker {
   // The same for sheets and chords apart; and whether the last update's sheets were re-flooded.
   size_t sheetSlotsTouched() const { return sheetSlotsTouched_; }
   size_t chordSlotsTouched() const { return slotsTouched_ - sheetSlotsTouched_; }
+  // Of the sheet slots: those re-labelled because two old sheets merged (the smaller ones' slots).
+  size_t mergedSlots() const { return mergedSlots_; }
   bool lastUpdateReflooded() const { return reflooded_; }
 
  private:
@@ -70,7 +72,7 @@ class DualTracker {
   std::vector<int32_t> front_;    // per slot: lockstep front + 1 that reached it (0 outside an update)
   std::vector<uint16_t> walked_;  // per hex: edges walked by the current refreshShares (0 outside it)
   std::vector<int64_t> delta_;    // per sheet id: change of twice its Euler characteristic (0 outside an update)
-  size_t slotsTouched_ = 0, sheetSlotsTouched_ = 0;
+  size_t slotsTouched_ = 0, sheetSlotsTouched_ = 0, mergedSlots_ = 0;
   bool reflooded_ = false;
 };
 
