@@ -221,6 +221,13 @@ class Complex {
   static uint32_t pack(HexId h, int f, int o) { return (uint32_t(h) << 6) | uint32_t(f << 3) | uint32_t(o); }
   void requireHex(HexId h, const char* what) const;
   void validateLinks(const std::vector<int32_t>& edgeClass) const;
+  struct VertexStar {
+    std::vector<std::pair<HexId, int>> corners;
+    std::vector<int> link;  // union-find over 3 edge incidences per corner
+    std::vector<std::pair<int64_t, int32_t>> index;  // hash of (hex, corner) -> place in corners
+    int64_t edges = 0, boundarySides = 0;
+  };
+  void walkStar(HexId h, int corner, VertexStar& star) const;
 
   std::vector<std::array<VertexId, 8>> verts_;
   std::vector<std::array<uint32_t, 6>> glue_;

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <tuple>
 
 #include "complex/complex.hpp"
 #include "complex/manifold.hpp"
@@ -201,8 +202,10 @@ void Complex::validateLinks(const std::vector<int32_t>& edgeClass) const {
 namespace hexdual {
 
 void Complex::validateAround(const std::vector<HexId>& hexList) const {
-  std::vector<VertexId> verts;
-  for (HexId h : hexList) {
+  std::vector<std::tuple<VertexId, int32_t, int>> firstCorner;  // vertex, place in hexList, corner
+  firstCorner.reserve(8 * hexList.size());
+  for (size_t order = 0; order < hexList.size(); ++order) {
+    const HexId h = hexList[order];
     if (!isHex(h)) continue;
     for (int c = 0; c < 8; ++c) {
       VertexId v = verts_[h][c];
@@ -210,7 +213,7 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
         if (verts_[h][d] == v)
           fail("hex " + std::to_string(h) + " uses vertex " + std::to_string(v) + " at corners " + std::to_string(d) +
                " and " + std::to_string(c));
-      verts.push_back(v);
+      firstCorner.emplace_back(v, int32_t(order), c);
     }
     for (int f = 0; f < 6; ++f) {
       Gluing g = gluing(h, f);
@@ -226,35 +229,98 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
       }
     }
   }
-  std::sort(verts.begin(), verts.end());
-  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-  // Vertex links, found by walking from one corner: connected, and a sphere or a disk.
-  for (VertexId v : verts) {
-    if (tolerated(nonManifold_, v)) continue;
-    HexId h0 = -1;
-    int c0 = -1;
-    for (HexId h : hexList)
-      if (isHex(h))
-        for (int c = 0; c < 8 && h0 < 0; ++c)
-          if (verts_[h][c] == v) {
-            h0 = h;
-            c0 = c;
-          }
-    auto corners = cornersOfVertex(h0, c0);
-    std::string name = "vertex " + std::to_string(v);
-    if ((int32_t)corners.size() != refs_[v])
-      fail(name + " is non-manifold: its link is not connected");
-    int64_t boundarySides = 0;
-    std::vector<EdgeRef> edges;
-    for (auto [h, c] : corners) {
-      for (int f : facesOfCorner(c)) boundarySides += gluing(h, f).boundary();
-      for (int e : edgesOfCorner(c)) edges.push_back(canonical(EdgeRef{h, e}));
-    }
-    std::sort(edges.begin(), edges.end());
-    int64_t linkV = std::unique(edges.begin(), edges.end()) - edges.begin();
-    std::string why = linkEulerProblem(linkV, int64_t(corners.size()), boundarySides);
-    if (!why.empty()) fail(name + " " + why);
+  // Vertex links, found by walking from the first corner met: connected, and a sphere or a disk.
+  std::sort(firstCorner.begin(), firstCorner.end());
+  VertexStar star;
+  for (size_t i = 0; i < firstCorner.size(); ++i) {
+    const auto [v, order, c0] = firstCorner[i];
+    if ((i > 0 && std::get<0>(firstCorner[i - 1]) == v) || tolerated(nonManifold_, v)) continue;
+    walkStar(hexList[size_t(order)], c0, star);
+    if ((int32_t)star.corners.size() != refs_[v]) fail("vertex " + std::to_string(v) + " is non-manifold: its link is not connected");
+    std::string why = linkEulerProblem(star.edges, int64_t(star.corners.size()), star.boundarySides);
+    if (!why.empty()) fail("vertex " + std::to_string(v) + " " + why);
   }
+}
+
+// The star of a vertex by walking gluings from one corner: its corners, its boundary sides, and its
+// edges as classes of (corner, edge) incidences joined across glued faces (each edge's cycle or fan
+// round the vertex), without walking whole edge cycles or allocating once warm.
+void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
+  st.corners.assign(1, {h0, c0});
+  st.link.assign({0, 1, 2});
+  st.boundarySides = 0;
+  // Open-addressing index of the corners met (key hex * 8 + corner), doubled when half full.
+  auto slotOf = [&](int64_t key) {
+    size_t m = st.index.size() - 1, k = size_t(key * 0x9E3779B97F4A7C15ull >> 20) & m;
+    while (st.index[k].first >= 0 && st.index[k].first != key) k = (k + 1) & m;
+    return k;
+  };
+  auto grow = [&] {
+    std::vector<std::pair<int64_t, int32_t>> old(std::max<size_t>(64, 2 * st.index.size()), {-1, 0});
+    std::swap(old, st.index);
+    for (auto& e : old)
+      if (e.first >= 0) st.index[slotOf(e.first)] = e;
+  };
+  // Small stars (most) are searched linearly; from kIndexed corners on, through the index.
+  constexpr size_t kIndexed = 24;
+  auto indexAll = [&] {
+    st.index.assign(64, {-1, 0});
+    while (2 * st.corners.size() > st.index.size()) st.index.resize(2 * st.index.size());
+    std::fill(st.index.begin(), st.index.end(), std::pair<int64_t, int32_t>{-1, 0});
+    for (size_t j = 0; j < st.corners.size(); ++j) {
+      const int64_t key = int64_t(st.corners[j].first) * 8 + st.corners[j].second;
+      st.index[slotOf(key)] = {key, int32_t(j)};
+    }
+  };
+  auto root = [&](int x) {
+    while (st.link[size_t(x)] != x) x = st.link[size_t(x)] = st.link[size_t(st.link[size_t(x)])];
+    return x;
+  };
+  int classes = 3;
+  for (size_t i = 0; i < st.corners.size(); ++i) {
+    const auto [h, c] = st.corners[i];
+    for (int f : facesOfCorner(c)) {
+      const Gluing g = gluing(h, f);
+      if (g.boundary()) {
+        ++st.boundarySides;
+        continue;
+      }
+      const int c2 = mappedCorner(h, f, c);
+      size_t j = 0;
+      bool found = false;
+      if (st.corners.size() < kIndexed) {
+        while (j < st.corners.size() && !(st.corners[j].first == g.hex && st.corners[j].second == c2)) ++j;
+        found = j < st.corners.size();
+      } else {
+        const int64_t key = int64_t(g.hex) * 8 + c2;
+        const size_t at = slotOf(key);
+        found = st.index[at].first == key;
+        j = found ? size_t(st.index[at].second) : st.corners.size();
+        if (!found) {
+          st.index[at] = {key, int32_t(j)};
+          if (2 * (j + 1) > st.index.size()) grow();
+        }
+      }
+      if (!found) {
+        st.corners.push_back({g.hex, c2});
+        if (st.corners.size() == kIndexed) indexAll();
+        for (int k = 0; k < 3; ++k) st.link.push_back(int(3 * j) + k);
+        classes += 3;
+      }
+      // The two edges of c in face f (along the axes other than f's normal) and their images.
+      for (int e : edgesOfCorner(c)) {
+        if (axisOfEdge(e) == axisOfFace(f)) continue;
+        const int d = kEdgeCorners[size_t(e)][0] == c ? kEdgeCorners[size_t(e)][1] : kEdgeCorners[size_t(e)][0];
+        const int e2 = edgeBetween(c2, mappedCorner(h, f, d));
+        const int x = root(int(3 * i) + axisOfEdge(e)), y = root(int(3 * j) + axisOfEdge(e2));
+        if (x != y) {
+          st.link[size_t(std::max(x, y))] = std::min(x, y);
+          --classes;
+        }
+      }
+    }
+  }
+  st.edges = classes;
 }
 
 }  // namespace hexdual
