@@ -1,7 +1,6 @@
 #include "dual/dual_tracker.hpp"
 
 #include <algorithm>
-#include <map>
 #include <climits>
 #include <numeric>
 
@@ -234,34 +233,41 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
   // Components of the unlabelled (new) slots, and the existing sheets each one touches.
   std::vector<std::vector<Slot>> comps;
   std::vector<std::vector<int32_t>> joins;
-  std::map<std::pair<HexId, int>, size_t> compOf;
+  // A new slot's component is marked in front_ (ci + 1) while this runs.
+  auto clearMarks = [&] {
+    for (const auto& comp : comps)
+      for (Slot t : comp) front_[slotIndex(t)] = 0;
+  };
   for (HexId h : touched) {
     if (!cx.isHex(h)) continue;
     for (int a = 0; a < 3; ++a) {
-      if (dual_.sheetOf[size_t(h)][size_t(a)] >= 0 || compOf.count({h, a})) continue;
+      if (dual_.sheetOf[size_t(h)][size_t(a)] >= 0 || front_[slotIndex({h, a})]) continue;
       size_t ci = comps.size();
       comps.push_back({{h, a}});
       joins.emplace_back();
-      compOf[{h, a}] = ci;
+      front_[slotIndex({h, a})] = int32_t(ci + 1);
       for (size_t i = 0; i < comps[ci].size(); ++i) {
         Slot cur = comps[ci][i];
-        for (int f = 0; f < 6; ++f) {
-          if (tables::axisOfFace(f) == cur.axis) continue;
-          Gluing g = cx.gluing(cur.hex, f);
-          if (g.boundary()) continue;
-          Slot n{g.hex, mapAxisAcross(cx, cur.hex, f, cur.axis)};
+        for (int f : kParallelFaces[size_t(cur.axis)]) {
+          Slot n;
+          int flip;
+          if (!sheetNeighbour(cx, cur, f, n, flip)) continue;
           int32_t id = size_t(n.hex) < cap ? dual_.sheetOf[size_t(n.hex)][size_t(n.axis)] : -1;
           if (id >= 0) {
             if (std::find(joins[ci].begin(), joins[ci].end(), id) == joins[ci].end()) joins[ci].push_back(id);
-          } else if (!compOf.count({n.hex, n.axis})) {
-            compOf[{n.hex, n.axis}] = ci;
+          } else if (!front_[slotIndex(n)]) {
+            front_[slotIndex(n)] = int32_t(ci + 1);
             comps[ci].push_back(n);
           }
         }
       }
-      if (joins[ci].size() > 1) return false;  // two sheets would merge: not a local change
+      if (joins[ci].size() > 1) {  // two sheets would merge: not a local change
+        clearMarks();
+        return false;
+      }
     }
   }
+  clearMarks();
   // Shares move with the edit but each sheet's sum (its Euler characteristic) does not: the
   // operation keeps every sheet's topology.
   refreshShares(cx, touched, [](Slot, int, int) {});
