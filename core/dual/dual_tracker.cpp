@@ -120,6 +120,9 @@ DualTracker::DualTracker(const Complex& cx) {
     for (int a = 0; a < 3; ++a) share_[3 * size_t(h) + size_t(a)] = shareOf(cx, h, a, edgeMarks_[size_t(h)]);
   front_.assign(3 * cap, 0);
   delta_.assign(dual_.sheets.size(), 0);
+  chordPos_.assign(3 * cap, 0);
+  for (const Chord& ch : dual_.chords)
+    for (size_t i = 0; i < ch.slots.size(); ++i) chordPos_[slotIndex(ch.slots[i])] = int32_t(i);
 }
 
 template <class OnChange>
@@ -803,10 +806,10 @@ int chooseId(const std::vector<int32_t>& previous, std::vector<int>& taken, size
 // Re-labels the sheets or chords (`list`, per-slot labels `of`) through the touched hexes: every
 // old one touched is cleared and its slots re-walked from seeds (with `walk`, labelling kTemp),
 // and each component found keeps the smallest old id it holds. Sheets and chords alike.
-template <class Entity, class Walk>
+template <class Entity, class Walk, class Unchanged>
 size_t relabel(const Complex& cx, const std::vector<HexId>& touched, std::vector<std::array<int32_t, 3>>& of,
                std::vector<Entity>& list, Walk walk, std::vector<int>& created, std::vector<int>& changed,
-               std::vector<int>& removed) {
+               std::vector<int>& removed, Unchanged unchanged) {
   size_t visited = 0;
   std::vector<int> old;
   for (HexId h : touched)
@@ -814,6 +817,7 @@ size_t relabel(const Complex& cx, const std::vector<HexId>& touched, std::vector
       if (id >= 0) old.push_back(id);
   std::sort(old.begin(), old.end());
   old.erase(std::unique(old.begin(), old.end()), old.end());
+  old.erase(std::remove_if(old.begin(), old.end(), unchanged), old.end());
   // Every new component holds a touched slot (its other slots kept their gluings), so the live
   // touched slots are enough seeds.
   for (int id : old) {
@@ -871,7 +875,7 @@ void DualTracker::updateSheetsByFlood(const Complex& cx, const std::vector<HexId
   };
   refreshShares(cx, touched, [](Slot, int, int) {});  // the floods measure each sheet whole
   sheetSlotsTouched_ += relabel(cx, touched, dual_.sheetOf, dual_.sheets, walk, change.sheetsCreated, change.sheetsChanged,
-                                change.sheetsRemoved);
+                                change.sheetsRemoved, [](int) { return false; });
   for (HexId h : touched)
     if (!cx.isHex(h))
       for (int a = 0; a < 3; ++a) flooder_.signs()[3 * size_t(h) + size_t(a)] = 0;
@@ -899,8 +903,43 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
     }
     for (Slot t : ch.slots) walked_[size_t(t.hex)] = 0;
   };
+  // A chord whose touched slots still have the same neighbours along it (read from the slot's
+  // place in its list) is unchanged: it is not re-walked.
+  auto unchanged = [&](int id) {
+    const Chord& ch = dual_.chords[size_t(id)];
+    const size_t len = ch.slots.size();
+    for (HexId h : touched)
+      for (int a = 0; a < 3; ++a) {
+        if (dual_.chordOf[size_t(h)][size_t(a)] != id) continue;
+        const size_t p = size_t(chordPos_[3 * size_t(h) + size_t(a)]);
+        if (!cx.isHex(h) || p >= len || !(ch.slots[p] == Slot{h, a})) return false;
+        auto along = [&](int face, Slot& n) {
+          Gluing g = cx.gluing(h, face);
+          if (g.boundary()) return false;
+          n = {g.hex, tables::axisOfFace(g.face)};
+          return true;
+        };
+        Slot lo, hi, prev, next;
+        const bool hasLo = along(2 * a, lo), hasHi = along(2 * a + 1, hi);
+        const bool hasPrev = p > 0 || ch.closed, hasNext = p + 1 < len || ch.closed;
+        if (hasPrev) prev = ch.slots[p > 0 ? p - 1 : len - 1];
+        if (hasNext) next = ch.slots[p + 1 < len ? p + 1 : 0];
+        auto same = [](bool x, Slot s, bool y, Slot t) { return x == y && (!x || s == t); };
+        if (!(same(hasLo, lo, hasPrev, prev) && same(hasHi, hi, hasNext, next)) &&
+            !(same(hasLo, lo, hasNext, next) && same(hasHi, hi, hasPrev, prev)))
+          return false;
+      }
+    return true;
+  };
   slotsTouched_ += relabel(cx, touched, dual_.chordOf, dual_.chords, walk, change.chordsCreated, change.chordsChanged,
-                           change.chordsRemoved);
+                           change.chordsRemoved, unchanged);
+  chordPos_.resize(3 * dual_.chordOf.size(), 0);
+  auto place = [&](int id) {
+    const auto& slots = dual_.chords[size_t(id)].slots;
+    for (size_t i = 0; i < slots.size(); ++i) chordPos_[3 * size_t(slots[i].hex) + size_t(slots[i].axis)] = int32_t(i);
+  };
+  for (int id : change.chordsCreated) place(id);
+  for (int id : change.chordsChanged) place(id);
 }
 
 }  // namespace hexdual

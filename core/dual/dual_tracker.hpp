@@ -71,6 +71,7 @@ class DualTracker {
   std::vector<int8_t> share_;
   std::vector<int32_t> front_;    // per slot: lockstep front + 1 that reached it (0 outside an update)
   std::vector<uint16_t> walked_;  // per hex: edges walked by the current refreshShares (0 outside it)
+  std::vector<int32_t> chordPos_;  // per slot: its place in its chord's slot list
   std::vector<int64_t> delta_;    // per sheet id: change of twice its Euler characteristic (0 outside an update)
   size_t slotsTouched_ = 0, sheetSlotsTouched_ = 0, mergedSlots_ = 0;
   bool reflooded_ = false;
