@@ -40,6 +40,17 @@ namespace {
 
 constexpr uint16_t kNearBoundary = uint16_t(1u << 15);
 
+// The sheet or chord ids on the slots of these hexes, ascending, once each.
+std::vector<int32_t> idsThrough(const std::vector<std::array<int32_t, 3>>& of, const std::vector<HexId>& hexes) {
+  std::vector<int32_t> ids;
+  for (HexId h : hexes)
+    for (int32_t id : of[size_t(h)])
+      if (id >= 0) ids.push_back(id);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
 size_t slotIndex(Slot s) { return 3 * size_t(s.hex) + size_t(s.axis); }
 
 // Twice slot (h, a)'s share of its sheet's Euler characteristic V - E + F: its quad, minus its
@@ -352,12 +363,7 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
 bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
   auto& sheetOf = dual_.sheetOf;
   auto label = [&](Slot t) { return sheetOf[size_t(t.hex)][size_t(t.axis)]; };
-  std::vector<int32_t> old;
-  for (HexId h : touched)
-    for (int32_t id : sheetOf[size_t(h)])
-      if (id >= 0) old.push_back(id);
-  std::sort(old.begin(), old.end());
-  old.erase(std::unique(old.begin(), old.end()), old.end());
+  const std::vector<int32_t> old = idsThrough(sheetOf, touched);
   for (int32_t id : old)
     if (!dual_.sheets[size_t(id)].orientable) return false;
   if (touchesBoundary(cx, touched)) return false;
@@ -811,12 +817,7 @@ size_t relabel(const Complex& cx, const std::vector<HexId>& touched, std::vector
                std::vector<Entity>& list, Walk walk, std::vector<int>& created, std::vector<int>& changed,
                std::vector<int>& removed, Unchanged unchanged) {
   size_t visited = 0;
-  std::vector<int> old;
-  for (HexId h : touched)
-    for (int32_t id : of[size_t(h)])
-      if (id >= 0) old.push_back(id);
-  std::sort(old.begin(), old.end());
-  old.erase(std::unique(old.begin(), old.end()), old.end());
+  std::vector<int32_t> old = idsThrough(of, touched);
   old.erase(std::remove_if(old.begin(), old.end(), unchanged), old.end());
   // Every new component holds a touched slot (its other slots kept their gluings), so the live
   // touched slots are enough seeds.
