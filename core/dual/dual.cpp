@@ -32,17 +32,18 @@ void SheetFlooder::clear(const std::vector<Slot>& slots) {
 }
 
 // Marks every incidence of the edge at (h, e) (its cycle, or its fan both ways to the boundary).
-void SheetFlooder::walkEdge(const Complex& cx, HexId h, int e) {
+bool SheetFlooder::walkEdge(const Complex& cx, HexId h, int e) {
   edgeSeen_[size_t(h)] |= uint16_t(1u << e);
   auto fs = facesOfEdge(e);
   for (int dir = 0; dir < 2; ++dir) {
     EdgeRef cur{h, e};
     int exit = fs[size_t(dir)];
     while (cx.stepAroundEdge(cur, exit)) {
-      if (cur.hex == h && cur.edge == e) return;  // round the cycle
+      if (cur.hex == h && cur.edge == e) return true;  // round the cycle
       edgeSeen_[size_t(cur.hex)] |= uint16_t(1u << cur.edge);
     }
   }
+  return false;
 }
 
 // Walks one boundary loop of a sheet's mid-surface from a boundary mid-edge (the side of slot
@@ -77,8 +78,9 @@ void SheetFlooder::measure(const Complex& cx, HexId h, int a, SheetStats& st) {
   if (unseen)
     for (int k = 0; k < 4; ++k)
       if ((unseen >> k) & 1u && !((edgeSeen_[size_t(h)] >> (4 * a + k)) & 1u)) {  // the walk may mark a sibling
-        walkEdge(cx, h, 4 * a + k);
+        const bool closed = walkEdge(cx, h, 4 * a + k);
         ++st.vertices;
+        if (edgeMarks) markEdge(cx, h, 4 * a + k, closed);
       }
   for (int f : kParallelFaces[a]) {
     if (!cx.isBoundary({h, f})) {
@@ -90,6 +92,20 @@ void SheetFlooder::measure(const Complex& cx, HexId h, int a, SheetStats& st) {
         ++st.loops;
       }
     }
+  }
+}
+
+// In a whole extraction (hexes in id order) the first incidence of an edge measured is its
+// smallest; a fan's hexes all reach the boundary.
+void SheetFlooder::markEdge(const Complex& cx, HexId h, int e, bool closed) {
+  (*edgeMarks)[size_t(h)] |= uint16_t(1u << e);
+  if (closed) return;
+  (*edgeMarks)[size_t(h)] |= kEdgeNearBoundary;
+  auto fs = facesOfEdge(e);
+  for (int dir = 0; dir < 2; ++dir) {
+    EdgeRef cur{h, e};
+    int exit = fs[size_t(dir)];
+    while (cx.stepAroundEdge(cur, exit)) (*edgeMarks)[size_t(cur.hex)] |= kEdgeNearBoundary;
   }
 }
 
@@ -244,7 +260,8 @@ class OrientedUnionFind {
 
 // Sheets numbered in the order of their smallest slot: labelled by one oriented union-find pass
 // over the glued quads, then each slot's share of its mid-surface measured in one more pass.
-void extractSheets(const Complex& cx, Dual& d, std::vector<int8_t>* signs) {
+void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
+  std::vector<int8_t>* signs = extras ? &extras->slotSigns : nullptr;
   int32_t* sheetOf = d.sheetOf.empty() ? nullptr : d.sheetOf[0].data();
   OrientedUnionFind uf(3 * size_t(cx.hexCapacity()));
   for (HexId h : cx.hexes())
@@ -273,6 +290,7 @@ void extractSheets(const Complex& cx, Dual& d, std::vector<int8_t>* signs) {
   std::vector<SheetStats> stats(roots.size());
   SheetFlooder flooder;
   flooder.reserve(size_t(cx.hexCapacity()));
+  if (extras) flooder.edgeMarks = &extras->edgeMarks;
   for (HexId h : cx.hexes())
     for (int a = 0; a < 3; ++a) flooder.measure(cx, h, a, stats[size_t(sheetOf[slotIndex(h, a)])]);
   d.sheets.resize(stats.size());
@@ -324,13 +342,16 @@ std::vector<int32_t> extractChords(const Complex& cx, Dual& d) {
 
 }  // namespace
 
-Dual extractDual(const Complex& cx, std::vector<int8_t>* slotSigns) {
+Dual extractDual(const Complex& cx, DualExtras* extras) {
   const size_t n = size_t(cx.hexCapacity());
   Dual d;
   d.sheetOf.assign(n, {-1, -1, -1});
   d.chordOf.assign(n, {-1, -1, -1});
-  if (slotSigns) slotSigns->assign(3 * n, 0);
-  extractSheets(cx, d, slotSigns);
+  if (extras) {
+    extras->slotSigns.assign(3 * n, 0);
+    extras->edgeMarks.assign(n, 0);
+  }
+  extractSheets(cx, d, extras);
   const std::vector<int32_t> newChordId = extractChords(cx, d);
   for (HexId h : cx.hexes()) {
     auto& c = d.chordOf[size_t(h)];

@@ -47,10 +47,18 @@ struct Dual {
 // Axis of the neighbour's hex that continues axis `a` of hex h across face f (f must be interior).
 int mapAxisAcross(const Complex& cx, HexId h, int face, int axis);
 
+// What extraction can report on the way, for DualTracker: an orientation (+1/-1) of every slot's
+// mid-quad (3 per hex), consistent across each orientable sheet; and per hex, bit e set when (h, e)
+// is its primal edge's smallest incidence, bit kEdgeNearBoundary when one of its edges reaches the boundary.
+struct DualExtras {
+  std::vector<int8_t> slotSigns;
+  std::vector<uint16_t> edgeMarks;
+};
+constexpr uint16_t kEdgeNearBoundary = uint16_t(1u << 15);
+
 // Extracts sheets and chords in linear time. Ids are deterministic: sheets and chords are
-// numbered in the order of their smallest slot (hex id, then axis). With `slotSigns` (3 per hex)
-// also an orientation of every slot's mid-quad, consistent across each orientable sheet.
-Dual extractDual(const Complex& cx, std::vector<int8_t>* slotSigns = nullptr);
+// numbered in the order of their smallest slot (hex id, then axis).
+Dual extractDual(const Complex& cx, DualExtras* extras = nullptr);
 
 // The 4 faces of a hex parallel to axis a: the sides of sheet slot (h, a). TK03 §1.1.
 constexpr std::array<std::array<int, 4>, 3> kParallelFaces = {{{2, 3, 4, 5}, {0, 1, 4, 5}, {0, 1, 2, 3}}};
@@ -89,7 +97,13 @@ class SheetFlooder {
   std::vector<int8_t>& signs() { return sign_; }
 
  private:
-  void walkEdge(const Complex& cx, HexId h, int e);
+  bool walkEdge(const Complex& cx, HexId h, int e);  // false for a fan (a boundary edge)
+  void markEdge(const Complex& cx, HexId h, int e, bool closed);
+
+ public:
+  std::vector<uint16_t>* edgeMarks = nullptr;  // when set, measure() records DualExtras::edgeMarks
+
+ private:
   void walkLoop(const Complex& cx, HexId h, int f, int a);
   std::vector<int8_t> sign_;        // per slot: orientation of its mid-quad
   std::vector<uint16_t> edgeSeen_;  // per hex: bit e set once edge incidence (h, e) is counted

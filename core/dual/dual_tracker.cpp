@@ -38,7 +38,7 @@ int slotsOnSheet(const std::array<int32_t, 3>& s, int32_t id) { return (s[0] == 
 
 namespace {
 
-constexpr uint16_t kNearBoundary = uint16_t(1u << 15);
+constexpr uint16_t kNearBoundary = kEdgeNearBoundary;
 
 // The sheet or chord ids on the slots of these hexes, ascending, once each.
 std::vector<int32_t> idsThrough(const std::vector<std::array<int32_t, 3>>& of, const std::vector<HexId>& hexes) {
@@ -101,7 +101,10 @@ bool sheetNeighbour(const Complex& cx, Slot s, int f, Slot& n, int& flip) {
 }  // namespace
 
 DualTracker::DualTracker(const Complex& cx) {
-  dual_ = extractDual(cx, &flooder_.signs());
+  DualExtras extras;
+  dual_ = extractDual(cx, &extras);
+  flooder_.signs() = std::move(extras.slotSigns);
+  edgeMarks_ = std::move(extras.edgeMarks);
   const size_t cap = size_t(cx.hexCapacity());
   flooder_.reserve(cap);
   selfHexes_.assign(dual_.sheets.size(), 0);
@@ -111,21 +114,7 @@ DualTracker::DualTracker(const Complex& cx) {
       if (slotsOnSheet(s, s[size_t(a)]) >= 2 && (a == 0 || s[size_t(a)] != s[0]) && (a < 2 || s[2] != s[1]))
         ++selfHexes_[size_t(s[size_t(a)])];
   }
-  // Smallest incidences: the first incidence of an edge met in (hex, edge) order.
-  edgeMarks_.assign(cap, 0);
   walked_.assign(cap, 0);
-  std::vector<EdgeRef> inc;
-  for (HexId h : cx.hexes())
-    for (int e = 0; e < 12; ++e) {
-      if ((walked_[size_t(h)] >> e) & 1u) continue;
-      const bool closed = edgeIncidences(cx, {h, e}, inc);
-      edgeMarks_[size_t(h)] |= uint16_t(1u << e);
-      for (EdgeRef r : inc) {
-        walked_[size_t(r.hex)] |= uint16_t(1u << r.edge);
-        if (!closed) edgeMarks_[size_t(r.hex)] |= kNearBoundary;
-      }
-    }
-  std::fill(walked_.begin(), walked_.end(), 0);
   share_.assign(3 * cap, 0);
   for (HexId h : cx.hexes())
     for (int a = 0; a < 3; ++a) share_[3 * size_t(h) + size_t(a)] = shareOf(cx, h, a, edgeMarks_[size_t(h)]);
