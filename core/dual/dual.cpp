@@ -109,6 +109,12 @@ void SheetFlooder::markEdge(const Complex& cx, HexId h, int e, bool closed) {
   }
 }
 
+int8_t slotShare(const Complex& cx, HexId h, int a, uint16_t marks) {
+  int s = 2 + 2 * __builtin_popcount((marks >> (4 * a)) & 0xFu);
+  for (int f : kParallelFaces[size_t(a)]) s -= cx.isBoundary({h, f}) ? 2 : 1;
+  return int8_t(s);
+}
+
 int SheetFlooder::walkNewLoops(const Complex& cx, HexId h, int a) {
   int loops = 0;
   for (int f : kParallelFaces[a])
@@ -353,6 +359,14 @@ Dual extractDual(const Complex& cx, DualExtras* extras) {
   }
   extractSheets(cx, d, extras);
   const std::vector<int32_t> newChordId = extractChords(cx, d);
+  if (extras) {  // the tracker's per-slot state, here where whole-mesh passes are compiled for speed
+    extras->slotShares.assign(3 * n, 0);
+    for (HexId h : cx.hexes())
+      for (int a = 0; a < 3; ++a) extras->slotShares[slotIndex(h, a)] = slotShare(cx, h, a, extras->edgeMarks[size_t(h)]);
+    extras->chordPlaces.assign(3 * n, 0);
+    for (const Chord& ch : d.chords)
+      for (size_t i = 0; i < ch.slots.size(); ++i) extras->chordPlaces[slotIndex(ch.slots[i].hex, ch.slots[i].axis)] = int32_t(i);
+  }
   for (HexId h : cx.hexes()) {
     auto& c = d.chordOf[size_t(h)];
     for (int32_t& id : c) id = newChordId[size_t(id)];

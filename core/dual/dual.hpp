@@ -53,8 +53,15 @@ int mapAxisAcross(const Complex& cx, HexId h, int face, int axis);
 struct DualExtras {
   std::vector<int8_t> slotSigns;
   std::vector<uint16_t> edgeMarks;
+  std::vector<int8_t> slotShares;   // per slot: slotShare() below
+  std::vector<int32_t> chordPlaces;  // per slot: its place in its chord's slot list
 };
 constexpr uint16_t kEdgeNearBoundary = uint16_t(1u << 15);
+
+// Twice slot (h, a)'s share of its sheet's Euler characteristic V - E + F: its quad, minus its
+// sides (interior ones are shared by two slots), plus the primal edges it holds the smallest
+// incidence of (`marks`: the hex's DualExtras::edgeMarks). A sheet's Euler characteristic is half the sum.
+int8_t slotShare(const Complex& cx, HexId h, int a, uint16_t marks);
 
 // Extracts sheets and chords in linear time. Ids are deterministic: sheets and chords are
 // numbered in the order of their smallest slot (hex id, then axis).

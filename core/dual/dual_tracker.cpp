@@ -53,14 +53,6 @@ std::vector<int32_t> idsThrough(const std::vector<std::array<int32_t, 3>>& of, c
 
 size_t slotIndex(Slot s) { return 3 * size_t(s.hex) + size_t(s.axis); }
 
-// Twice slot (h, a)'s share of its sheet's Euler characteristic V - E + F: its quad, minus its
-// sides (interior ones are shared by two slots), plus the primal edges it holds the smallest incidence of.
-int8_t shareOf(const Complex& cx, HexId h, int a, uint16_t marks) {
-  int s = 2 + 2 * __builtin_popcount((marks >> (4 * a)) & 0xFu);
-  for (int f : kParallelFaces[size_t(a)]) s -= cx.isBoundary({h, f}) ? 2 : 1;
-  return int8_t(s);
-}
-
 // The incidences of the edge at e, round its cycle or along its fan; false for a fan.
 bool edgeIncidences(const Complex& cx, EdgeRef e, std::vector<EdgeRef>& out) {
   out.assign(1, e);
@@ -115,18 +107,16 @@ DualTracker::DualTracker(const Complex& cx) {
         ++selfHexes_[size_t(s[size_t(a)])];
   }
   walked_.assign(cap, 0);
-  share_.assign(3 * cap, 0);
-  for (HexId h : cx.hexes())
-    for (int a = 0; a < 3; ++a) share_[3 * size_t(h) + size_t(a)] = shareOf(cx, h, a, edgeMarks_[size_t(h)]);
+  share_ = std::move(extras.slotShares);
+  chordPos_ = std::move(extras.chordPlaces);
   front_.assign(3 * cap, 0);
   delta_.assign(dual_.sheets.size(), 0);
-  chordPos_.assign(3 * cap, 0);
-  for (const Chord& ch : dual_.chords)
-    for (size_t i = 0; i < ch.slots.size(); ++i) chordPos_[slotIndex(ch.slots[i])] = int32_t(i);
 }
 
-template <class OnChange>
-void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& touched, OnChange onChange) {
+void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& touched, std::vector<ShareChange>* changes) {
+  auto onChange = [&](Slot t, int before, int after) {
+    if (changes) changes->push_back({t, before, after});
+  };
   bool nearBefore = false;
   std::vector<Slot> dirty;
   std::vector<HexId> met;
@@ -168,7 +158,7 @@ void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& tou
     for (HexId m : met)
       edgeMarks_[size_t(m)] = uint16_t((edgeMarks_[size_t(m)] & ~kNearBoundary) | (nearBoundary(cx, m) ? kNearBoundary : 0));
   for (Slot s : dirty) {
-    const int8_t now = shareOf(cx, s.hex, s.axis, edgeMarks_[size_t(s.hex)]);
+    const int8_t now = slotShare(cx, s.hex, s.axis, edgeMarks_[size_t(s.hex)]);
     int8_t& old = share_[slotIndex(s)];
     if (now != old) {
       onChange(s, int(old), int(now));
@@ -273,7 +263,7 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
   clearMarks();
   // Shares move with the edit but each sheet's sum (its Euler characteristic) does not: the
   // operation keeps every sheet's topology.
-  refreshShares(cx, touched, [](Slot, int, int) {});
+  refreshShares(cx, touched, nullptr);
   // Remove the slots of dead hexes.
   std::vector<int32_t> changed;
   for (HexId h : touched) {
@@ -616,10 +606,12 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
   std::sort(recount.begin(), recount.end());
   recount.erase(std::unique(recount.begin(), recount.end()), recount.end());
   countSelfHexes(recount, -1);
-  refreshShares(cx, touched, [&](Slot t, int before, int after) {
-    const int32_t id = label(t);
-    if (id >= 0) delta_[size_t(id)] += after - before;
-  });
+  std::vector<ShareChange> shareChanges;
+  refreshShares(cx, touched, &shareChanges);
+  for (const ShareChange& c : shareChanges) {
+    const int32_t id = label(c.slot);
+    if (id >= 0) delta_[size_t(id)] += c.after - c.before;
+  }
   auto move = [&](Slot t, int32_t to) {
     int32_t& id = sheetOf[size_t(t.hex)][size_t(t.axis)];
     const int c = share_[slotIndex(t)];
@@ -863,7 +855,7 @@ void DualTracker::updateSheetsByFlood(const Complex& cx, const std::vector<HexId
     std::sort(sh.slots.begin(), sh.slots.end());
     st.classify(sh);
   };
-  refreshShares(cx, touched, [](Slot, int, int) {});  // the floods measure each sheet whole
+  refreshShares(cx, touched, nullptr);  // the floods measure each sheet whole
   sheetSlotsTouched_ += relabel(cx, touched, dual_.sheetOf, dual_.sheets, walk, change.sheetsCreated, change.sheetsChanged,
                                 change.sheetsRemoved, [](int) { return false; });
   for (HexId h : touched)

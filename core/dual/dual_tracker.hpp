@@ -53,9 +53,12 @@ class DualTracker {
   void updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   // Recomputes the smallest-incidence marks of the edges through the live touched hexes and the
-  // mid-surface share of every slot whose share the edit changed; onChange(slot, old, new).
-  template <class OnChange>
-  void refreshShares(const Complex& cx, const std::vector<HexId>& touched, OnChange onChange);
+  // mid-surface share of every slot whose share the edit changed, listing the changes when asked.
+  struct ShareChange {
+    Slot slot;
+    int before, after;
+  };
+  void refreshShares(const Complex& cx, const std::vector<HexId>& touched, std::vector<ShareChange>* changes);
   bool touchesBoundary(const Complex& cx, const std::vector<HexId>& touched) const;
   void propagateSigns(const Complex& cx, const std::vector<Slot>& unsigned_);
   void countSelfHexes(const std::vector<HexId>& hexes, int sign);
