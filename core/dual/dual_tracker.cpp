@@ -97,8 +97,6 @@ DualTracker::DualTracker(const Complex& cx) {
   dual_ = extractDual(cx, &extras);
   flooder_.signs() = std::move(extras.slotSigns);
   edgeMarks_ = std::move(extras.edgeMarks);
-  const size_t cap = size_t(cx.hexCapacity());
-  flooder_.reserve(cap);
   selfHexes_.assign(dual_.sheets.size(), 0);
   for (HexId h : cx.hexes()) {
     const auto& s = dual_.sheetOf[size_t(h)];
@@ -106,11 +104,9 @@ DualTracker::DualTracker(const Complex& cx) {
       if (slotsOnSheet(s, s[size_t(a)]) >= 2 && (a == 0 || s[size_t(a)] != s[0]) && (a < 2 || s[2] != s[1]))
         ++selfHexes_[size_t(s[size_t(a)])];
   }
-  walked_.assign(cap, 0);
   share_ = std::move(extras.slotShares);
   chordPos_ = std::move(extras.chordPlaces);
-  front_.assign(3 * cap, 0);
-  delta_.assign(dual_.sheets.size(), 0);
+  delta_.assign(dual_.sheets.size(), 0);  // the scratch arrays are sized by the first update
 }
 
 void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& touched, std::vector<ShareChange>* changes) {
