@@ -224,7 +224,6 @@ class Complex {
   struct VertexStar {
     std::vector<std::pair<HexId, int>> corners;
     std::vector<int> link;  // union-find over 3 edge incidences per corner
-    std::vector<std::pair<int64_t, int32_t>> index;  // hash of (hex, corner) -> place in corners
     int64_t edges = 0, boundarySides = 0;
   };
   void walkStar(HexId h, int corner, VertexStar& star) const;

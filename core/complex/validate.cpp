@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
-#include <tuple>
 
 #include "complex/complex.hpp"
 #include "complex/manifold.hpp"
@@ -202,7 +201,8 @@ void Complex::validateLinks(const std::vector<int32_t>& edgeClass) const {
 namespace hexdual {
 
 void Complex::validateAround(const std::vector<HexId>& hexList) const {
-  std::vector<std::tuple<VertexId, int32_t, int>> firstCorner;  // vertex, place in hexList, corner
+  // vertex << 32 | place in hexList << 3 | corner: sorted, the first entry of each vertex is its first corner met
+  std::vector<uint64_t> firstCorner;
   firstCorner.reserve(8 * hexList.size());
   for (size_t order = 0; order < hexList.size(); ++order) {
     const HexId h = hexList[order];
@@ -213,7 +213,7 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
         if (verts_[h][d] == v)
           fail("hex " + std::to_string(h) + " uses vertex " + std::to_string(v) + " at corners " + std::to_string(d) +
                " and " + std::to_string(c));
-      firstCorner.emplace_back(v, int32_t(order), c);
+      firstCorner.push_back(uint64_t(uint32_t(v)) << 32 | uint64_t(order) << 3 | uint64_t(c));
     }
     for (int f = 0; f < 6; ++f) {
       Gluing g = gluing(h, f);
@@ -233,9 +233,9 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
   std::sort(firstCorner.begin(), firstCorner.end());
   VertexStar star;
   for (size_t i = 0; i < firstCorner.size(); ++i) {
-    const auto [v, order, c0] = firstCorner[i];
-    if ((i > 0 && std::get<0>(firstCorner[i - 1]) == v) || tolerated(nonManifold_, v)) continue;
-    walkStar(hexList[size_t(order)], c0, star);
+    const VertexId v = VertexId(firstCorner[i] >> 32);
+    if ((i > 0 && (firstCorner[i - 1] >> 32) == uint64_t(uint32_t(v))) || tolerated(nonManifold_, v)) continue;
+    walkStar(hexList[size_t((firstCorner[i] & 0xFFFFFFFFu) >> 3)], int(firstCorner[i] & 7u), star);
     if ((int32_t)star.corners.size() != refs_[v]) fail("vertex " + std::to_string(v) + " is non-manifold: its link is not connected");
     std::string why = linkEulerProblem(star.edges, int64_t(star.corners.size()), star.boundarySides);
     if (!why.empty()) fail("vertex " + std::to_string(v) + " " + why);
@@ -249,29 +249,6 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
   st.corners.assign(1, {h0, c0});
   st.link.assign({0, 1, 2});
   st.boundarySides = 0;
-  // Open-addressing index of the corners met (key hex * 8 + corner), doubled when half full.
-  auto slotOf = [&](int64_t key) {
-    size_t m = st.index.size() - 1, k = size_t(key * 0x9E3779B97F4A7C15ull >> 20) & m;
-    while (st.index[k].first >= 0 && st.index[k].first != key) k = (k + 1) & m;
-    return k;
-  };
-  auto grow = [&] {
-    std::vector<std::pair<int64_t, int32_t>> old(std::max<size_t>(64, 2 * st.index.size()), {-1, 0});
-    std::swap(old, st.index);
-    for (auto& e : old)
-      if (e.first >= 0) st.index[slotOf(e.first)] = e;
-  };
-  // Small stars (most) are searched linearly; from kIndexed corners on, through the index.
-  constexpr size_t kIndexed = 24;
-  auto indexAll = [&] {
-    st.index.assign(64, {-1, 0});
-    while (2 * st.corners.size() > st.index.size()) st.index.resize(2 * st.index.size());
-    std::fill(st.index.begin(), st.index.end(), std::pair<int64_t, int32_t>{-1, 0});
-    for (size_t j = 0; j < st.corners.size(); ++j) {
-      const int64_t key = int64_t(st.corners[j].first) * 8 + st.corners[j].second;
-      st.index[slotOf(key)] = {key, int32_t(j)};
-    }
-  };
   auto root = [&](int x) {
     while (st.link[size_t(x)] != x) x = st.link[size_t(x)] = st.link[size_t(st.link[size_t(x)])];
     return x;
@@ -287,23 +264,9 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
       }
       const int c2 = mappedCorner(h, f, c);
       size_t j = 0;
-      bool found = false;
-      if (st.corners.size() < kIndexed) {
-        while (j < st.corners.size() && !(st.corners[j].first == g.hex && st.corners[j].second == c2)) ++j;
-        found = j < st.corners.size();
-      } else {
-        const int64_t key = int64_t(g.hex) * 8 + c2;
-        const size_t at = slotOf(key);
-        found = st.index[at].first == key;
-        j = found ? size_t(st.index[at].second) : st.corners.size();
-        if (!found) {
-          st.index[at] = {key, int32_t(j)};
-          if (2 * (j + 1) > st.index.size()) grow();
-        }
-      }
-      if (!found) {
+      while (j < st.corners.size() && !(st.corners[j].first == g.hex && st.corners[j].second == c2)) ++j;
+      if (j == st.corners.size()) {
         st.corners.push_back({g.hex, c2});
-        if (st.corners.size() == kIndexed) indexAll();
         for (int k = 0; k < 3; ++k) st.link.push_back(int(3 * j) + k);
         classes += 3;
       }

@@ -40,6 +40,14 @@ namespace {
 
 constexpr uint16_t kNearBoundary = kEdgeNearBoundary;
 
+// Drops the slots no longer labelled `id`, keeping the order.
+void keepLabelled(std::vector<Slot>& slots, const std::vector<std::array<int32_t, 3>>& of, int32_t id) {
+  size_t k = 0;
+  for (Slot t : slots)
+    if (of[size_t(t.hex)][size_t(t.axis)] == id) slots[k++] = t;
+  slots.resize(k);
+}
+
 // The sheet or chord ids on the slots of these hexes, ascending, once each.
 std::vector<int32_t> idsThrough(const std::vector<std::array<int32_t, 3>>& of, const std::vector<HexId>& hexes) {
   std::vector<int32_t> ids;
@@ -567,16 +575,17 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
     flipOf[old.size() + i] = uint8_t(pv ^ pkeep);
   }
   // Pieces in the order of their smallest slot; a piece keeps an old id only when it is all that is left of that sheet.
-  std::vector<size_t> order(pieces.size());
+  std::vector<uint64_t> order(pieces.size());  // smallest slot << 32 | piece
   for (size_t p = 0; p < pieces.size(); ++p) {
     std::sort(pieces[p].begin(), pieces[p].end());
-    order[p] = p;
+    order[p] = uint64_t(slotIndex(pieces[p][0])) << 32 | p;
   }
-  std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return pieces[x][0] < pieces[y][0]; });
+  std::sort(order.begin(), order.end());
   std::vector<int32_t> pieceId(pieces.size(), -1);
   std::vector<uint8_t> taken(old.size(), 0);
   int32_t fresh = int32_t(dual_.sheets.size());
-  for (size_t p : order) {
+  for (uint64_t key : order) {
+    const size_t p = size_t(key & 0xFFFFFFFFu);
     int32_t best = -1;
     for (int32_t id : pieceLabels[p])
       if (id >= 0 && owner[oldIndex(id)] < 0 && !taken[oldIndex(id)] && (best < 0 || id < best)) best = id;
@@ -672,22 +681,22 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
   size_t relabelled = 0;
   auto join = [&](size_t g, const std::vector<Slot>& run) {  // run sorted
     auto& slots = dual_.sheets[size_t(keepOf[g])].slots;
-    const size_t mid = slots.size();
-    slots.insert(slots.end(), run.begin(), run.end());
-    std::inplace_merge(slots.begin(), slots.begin() + std::ptrdiff_t(mid), slots.end());
+    std::vector<Slot> both(slots.size() + run.size());
+    std::merge(slots.begin(), slots.end(), run.begin(), run.end(), both.begin());
+    slots = std::move(both);
   };
   for (size_t g = 0; g < parent.size(); ++g) {
     const int32_t keep = keepOf[g];
     if (keep < 0) continue;
     auto& slots = dual_.sheets[size_t(keep)].slots;
-    slots.erase(std::remove_if(slots.begin(), slots.end(), [&](Slot t) { return label(t) != keep; }), slots.end());
+    keepLabelled(slots, sheetOf, keep);
   }
   for (int32_t x : merged) {
     const size_t g = size_t(owner[oldIndex(x)]);
     const int32_t keep = keepOf[g];
     const int8_t turn = flipOf[oldIndex(x)] ? -1 : 1;
     std::vector<Slot> run = std::move(dual_.sheets[size_t(x)].slots);
-    run.erase(std::remove_if(run.begin(), run.end(), [&](Slot t) { return label(t) != x; }), run.end());
+    keepLabelled(run, sheetOf, x);
     for (size_t i = 0; i < run.size();) {
       const HexId h = run[i].hex;
       const bool alone = !std::binary_search(recount.begin(), recount.end(), h);
@@ -795,7 +804,10 @@ size_t relabel(const Complex& cx, const std::vector<HexId>& touched, std::vector
                std::vector<int>& removed, Unchanged unchanged) {
   size_t visited = 0;
   std::vector<int32_t> old = idsThrough(of, touched);
-  old.erase(std::remove_if(old.begin(), old.end(), unchanged), old.end());
+  size_t kept = 0;
+  for (int32_t id : old)
+    if (!unchanged(id)) old[kept++] = id;
+  old.resize(kept);
   // Every new component holds a touched slot (its other slots kept their gluings), so the live
   // touched slots are enough seeds.
   for (int id : old) {
