@@ -1,18 +1,19 @@
 #include "flips/search.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
+#include <atomic>
 #include <chrono>
-#include <deque>
+#include <exception>
+#include <functional>
 #include <map>
 #include <optional>
-#include <unordered_map>
+#include <thread>
 
 #include "complex/builders.hpp"
 #include "complex/canonical.hpp"
 #include "flips/flip.hpp"
 #include "flips/fourcube.hpp"
+#include "flips/search_state.hpp"
 #include "ops/oplog.hpp"
 #include "ops/support.hpp"
 
@@ -118,15 +119,8 @@ CanonicalLabelling regionLabelling(const Complex& cx, const std::vector<HexId>& 
   return canonicalLabelling(subcomplex(cx, regionOf(cx, host)), true);
 }
 
-struct Node {
-  std::vector<int64_t> key;
-  Complex cx;
-  int parent = -1;      // index in the same side's node list
-  OpStep step;          // the step from the parent (ids of the parent's complex)
-  int depth = 0;
-};
-
-// Candidate steps on region hexes (many are rejected by the operation itself).
+// Candidate steps on region hexes. Cheap exact preconditions (a pillow partner, a blind-chord
+// partner) are checked here so that most rejections cost no exception.
 std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<OpKind>& ops) {
   using K = OpKind;
   auto use = [&](OpKind op) { return ops.empty() || std::find(ops.begin(), ops.end(), op) != ops.end(); };
@@ -136,8 +130,8 @@ std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, con
   std::vector<QuadSide> seenQuads;
   std::vector<EdgeRef> seenEdges;
   for (HexId h : region) {
-    if (use(K::Unpillow)) out.push_back(makeStep(K::Unpillow, h));
-    if (use(K::ChordPull)) out.push_back(makeStep(K::ChordPull, h));
+    if (use(K::Unpillow) && ops::partnerSharing(cx, h, 5) >= 0) out.push_back(makeStep(K::Unpillow, h));
+    if (use(K::ChordPull) && ops::partnerSharing(cx, h, 4) >= 0) out.push_back(makeStep(K::ChordPull, h));
     for (int f = 0; f < 6; ++f) {
       Gluing g = cx.gluing(h, f);
       if (g.boundary()) continue;
@@ -236,41 +230,165 @@ OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalL
   return st;
 }
 
+
+// One side of the bidirectional search: nodes stored as (parent, index of the move in the
+// parent's move list), 8 bytes each; the state itself is replayed from the root on demand.
+struct Side {
+  Complex root;
+  std::vector<int32_t> parent;
+  std::vector<uint32_t> move;
+  FlatKeyMap index{1 << 12};
+  size_t levelBegin = 0, levelEnd = 1;  // the frontier: nodes [levelBegin, levelEnd)
+  int depth = 0;
+  size_t memoryBytes() const { return parent.capacity() * 4 + move.capacity() * 4 + index.memoryBytes(); }
+};
+
+// Replays nodes of one side in frontier order. Frontier nodes are stored in the order of their
+// parents, so consecutive nodes share most of their path: the walker undoes back to the common
+// ancestor and applies forward from there, keeping each ancestor's move list.
+class Walker {
+ public:
+  Walker(const Side& side, const std::vector<HexId>& host, const std::vector<OpKind>& ops)
+      : side_(side), host_(host), ops_(ops), cx(side.root) {
+    path_ = {0};
+    movesAt_.push_back(moves(cx, host_, ops_));
+  }
+  void goTo(int32_t node) {
+    chain_.clear();
+    for (int32_t n = node; n >= 0; n = side_.parent[size_t(n)]) chain_.push_back(n);
+    std::reverse(chain_.begin(), chain_.end());
+    size_t common = 0;
+    while (common < chain_.size() && common < path_.size() && chain_[common] == path_[common]) ++common;
+    while (path_.size() > common) {
+      cx.undo(logs_.back());
+      logs_.pop_back();
+      movesAt_.pop_back();
+      path_.pop_back();
+    }
+    for (size_t i = common; i < chain_.size(); ++i) {
+      const OpStep& m = movesAt_.back()[side_.move[size_t(chain_[i])]];
+      logs_.push_back(applyStep(cx, m).edits);
+      path_.push_back(chain_[i]);
+      movesAt_.push_back(moves(cx, host_, ops_));
+    }
+  }
+  const std::vector<OpStep>& movesHere() const { return movesAt_.back(); }
+  // The steps from the root to the current node.
+  std::vector<OpStep> steps() const {
+    std::vector<OpStep> out;
+    for (size_t i = 1; i < path_.size(); ++i) out.push_back(movesAt_[i - 1][side_.move[size_t(path_[i])]]);
+    return out;
+  }
+
+ private:
+  const Side& side_;
+  const std::vector<HexId>& host_;
+  const std::vector<OpKind>& ops_;
+  std::vector<int32_t> path_, chain_;
+  std::vector<Complex::EditLog> logs_;
+  std::vector<std::vector<OpStep>> movesAt_;
+
+ public:
+  Complex cx;
+};
+
+// A child found by a worker: not yet in its side's index when the worker saw it.
+struct Child {
+  int32_t parent;
+  uint32_t move;
+  Key128 key;
+};
+
+struct SearchContext {
+  const std::vector<HexId>& host;
+  std::vector<uint8_t> isHost;  // by hex id; ids past the end are region hexes
+  const HostSnapshot& hs;
+  const SearchOptions& opt;
+};
+
+// Expands nodes [begin, end) of side s: every move that applies, keeps the host and the region
+// cap, and reaches a state not yet stored on side s. Reads the index only (workers run in parallel).
+void expand(const SearchContext& ctx, const Side& side, size_t begin, size_t end, std::vector<Child>& out, int64_t& applied,
+            const std::function<bool()>& stop) {
+  Walker w(side, ctx.host, ctx.opt.ops);
+  RegionEncoder enc;
+  const int64_t hostCount = int64_t(ctx.host.size());
+  for (size_t n = begin; n < end; ++n) {
+    if (stop()) return;
+    w.goTo(int32_t(n));
+    const auto& ms = w.movesHere();
+    for (size_t i = 0; i < ms.size(); ++i) {
+      OpResult r;
+      try {
+        r = applyStep(w.cx, ms[i]);
+      } catch (const Error&) {
+        continue;
+      }
+      ++applied;
+      bool keep = w.cx.numHexes() - hostCount <= ctx.opt.maxRegionHexes;
+      Key128 key;
+      if (keep) {
+        key = enc.key(w.cx, ctx.isHost);
+        keep = side.index.find(key) < 0 && localityViolation(w.cx, ctx.hs).empty();
+      }
+      w.cx.undo(r.edits);
+      if (keep) out.push_back({int32_t(n), uint32_t(i), key});
+    }
+  }
+}
+
 }  // namespace
 
 SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& opt) {
   auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   HostSnapshot hs = snapshot(pb.start, pb.host);
-  std::vector<HexId> host = hs.host;
-  SearchResult res;
-  std::deque<Node> side[2];  // deque: references stay valid while nodes are added
-  std::map<std::vector<int64_t>, int> index[2];
-  for (int s = 0; s < 2; ++s) {
-    Node n;
-    n.cx = s == 0 ? pb.start : pb.goal;
-    n.key = regionLabelling(n.cx, host).form;
-    index[s][n.key] = 0;
-    side[s].push_back(std::move(n));
+  const std::vector<HexId>& host = hs.host;
+  SearchContext ctx{host, {}, hs, opt};
+  for (HexId h : host) {
+    if (size_t(h) >= ctx.isHost.size()) ctx.isHost.resize(size_t(h) + 1, 0);
+    ctx.isHost[size_t(h)] = 1;
   }
-  auto pathTo = [&](int s, int i) {
-    std::vector<int> chain;
-    for (; i >= 0; i = side[s][size_t(i)].parent) chain.push_back(i);
-    std::reverse(chain.begin(), chain.end());
-    return chain;
+  SearchResult res;
+  Side side[2];
+  RegionEncoder enc;
+  for (int s = 0; s < 2; ++s) {
+    side[s].root = s == 0 ? pb.start : pb.goal;
+    side[s].parent = {-1};
+    side[s].move = {0};
+    side[s].index.insert(enc.key(side[s].root, ctx.isHost), 0);
+  }
+  auto stored = [&] { return int64_t(side[0].parent.size() + side[1].parent.size()); };
+  auto memory = [&] { return side[0].memoryBytes() + side[1].memoryBytes(); };
+  auto finishStats = [&] {
+    res.statesExplored = stored();
+    res.memoryBytes = std::max(res.memoryBytes, memory());
+    if (res.found) res.depthSearched = int(res.steps.size());
+    res.seconds = elapsed();
+    return res;
   };
+  if (side[1].index.find(enc.key(side[0].root, ctx.isHost)) >= 0) {
+    res.found = true;
+    res.stoppedBy = "found";
+    return finishStats();
+  }
   // Joins the forward path to node fi with the backward path from the goal to node bi (same key).
-  auto finish = [&](int fi, int bi) {
-    std::vector<OpStep> steps;
-    auto fchain = pathTo(0, fi);
-    for (size_t k = 1; k < fchain.size(); ++k) steps.push_back(side[0][size_t(fchain[k])].step);
-    Complex cur = side[0][size_t(fi)].cx;
-    auto bchain = pathTo(1, bi);  // goal ... bi
-    for (size_t k = bchain.size() - 1; k > 0; --k) {
-      const Node& here = side[1][size_t(bchain[k])];
-      const Node& prev = side[1][size_t(bchain[k - 1])];
-      // A local move from cur reaching prev's state: first among the generated moves (this also
-      // picks the side that keeps host vertex ids for splits), else the translated inverse.
+  auto finish = [&](int32_t fi, int32_t bi) {
+    Walker wf(side[0], host, opt.ops), wb(side[1], host, opt.ops);
+    wf.goTo(fi);
+    wb.goTo(bi);
+    std::vector<OpStep> steps = wf.steps(), back = wb.steps();
+    // The backward chain's states: goal = chain[0], ..., chain[k] = the meeting state.
+    std::vector<Complex> chain{pb.goal};
+    for (const OpStep& st : back) {
+      chain.push_back(chain.back());
+      applyStep(chain.back(), st);
+    }
+    Complex cur = wf.cx;
+    for (size_t k = back.size(); k > 0; --k) {
+      Key128 want = enc.key(chain[k - 1], ctx.isHost);
+      // A local move from cur reaching the previous state: first among the generated moves (this
+      // also picks the side that keeps host vertex ids for splits), else the translated inverse.
       std::optional<OpStep> chosen;
       for (const OpStep& m : moves(cur, host, {})) {
         OpResult r;
@@ -279,7 +397,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
         } catch (const Error&) {
           continue;
         }
-        bool hit = localityViolation(cur, hs).empty() && regionLabelling(cur, host).form == prev.key;
+        bool hit = enc.key(cur, ctx.isHost) == want && localityViolation(cur, hs).empty();
         cur.undo(r.edits);
         if (hit) {
           chosen = m;
@@ -287,9 +405,9 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
         }
       }
       if (!chosen) {
-        Complex tmp = prev.cx;
-        OpResult r = applyStep(tmp, here.step);
-        if (!r.inverse) throw Error("search: " + formatOpStep(here.step) + " has no inverse step (" + r.noInverse + ")");
+        Complex tmp = chain[k - 1];
+        OpResult r = applyStep(tmp, back[k - 1]);
+        if (!r.inverse) throw Error("search: " + formatOpStep(back[k - 1]) + " has no inverse step (" + r.noInverse + ")");
         chosen = translateStep(*r.inverse, regionLabelling(tmp, host), regionLabelling(cur, host), host);
       }
       applyStep(cur, *chosen);
@@ -299,71 +417,93 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     res.steps = steps;
     res.stoppedBy = "found";
   };
-  if (side[0][0].key == side[1][0].key) {
-    res.found = true;
-    res.stoppedBy = "found";
-    return res;
-  }
-  std::vector<int> frontier[2] = {{0}, {0}};
-  int depth[2] = {0, 0};
-  while (depth[0] + depth[1] < opt.maxDepth) {
-    int s = frontier[0].size() <= frontier[1].size() ? 0 : 1;
-    std::vector<int> next;
-    for (int i : frontier[s]) {
-      Complex& cx = side[s][size_t(i)].cx;
-      for (const OpStep& m : moves(cx, host, opt.ops)) {
-        if (elapsed() > opt.maxSeconds) {
-          res.stoppedBy = "time";
-          goto done;
-        }
-        OpResult r;
+  const int threads = std::max(1, opt.threads);
+  std::atomic<bool> timeUp{false};
+  auto stop = [&] {
+    if (!timeUp && elapsed() > opt.maxSeconds) timeUp = true;
+    return bool(timeUp);
+  };
+  while (side[0].depth + side[1].depth < opt.maxDepth) {
+    int s = side[0].levelEnd - side[0].levelBegin <= side[1].levelEnd - side[1].levelBegin ? 0 : 1;
+    Side& me = side[s];
+    Side& other = side[1 - s];
+    const size_t levelStart = me.parent.size();
+    // Chunks of the frontier, split between the threads; children merge in frontier order, so
+    // node ids and the result do not depend on the thread count.
+    const size_t chunk = 512;
+    for (size_t b = me.levelBegin; b < me.levelEnd; b += chunk) {
+      size_t e = std::min(me.levelEnd, b + chunk);
+      std::vector<std::vector<Child>> found(static_cast<size_t>(threads));
+      std::vector<int64_t> applied(static_cast<size_t>(threads), 0);
+      std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
+      auto work = [&](int t) {
+        size_t per = (e - b + size_t(threads) - 1) / size_t(threads);
+        size_t lo = std::min(e, b + per * size_t(t)), hi = std::min(e, lo + per);
         try {
-          r = applyStep(cx, m);
-        } catch (const Error&) {
-          continue;
+          expand(ctx, me, lo, hi, found[size_t(t)], applied[size_t(t)], stop);
+        } catch (...) {
+          errors[size_t(t)] = std::current_exception();
         }
-        std::string why = localityViolation(cx, hs);
-        if (std::getenv("HEXDUAL_SEARCH_TRACE")) std::fprintf(stderr, "%s -> %s\n", formatOpStep(m).c_str(), why.c_str());
-        bool ok = why.empty() && int(regionOf(cx, host).size()) <= opt.maxRegionHexes;
-        std::vector<int64_t> key;
-        if (ok) key = regionLabelling(cx, host).form;
-        Complex child;
-        if (ok && !index[s].count(key)) child = cx;
-        cx.undo(r.edits);
-        ++res.statesExplored;
-        if (!ok || index[s].count(key)) continue;
-        Node n;
-        n.key = key;
-        n.cx = std::move(child);
-        n.parent = i;
-        n.step = m;
-        n.depth = depth[s] + 1;
-        int id = int(side[s].size());
-        index[s][key] = id;
-        side[s].push_back(std::move(n));
-        next.push_back(id);
-        auto other = index[1 - s].find(key);
-        if (other != index[1 - s].end()) {
-          if (s == 0) finish(id, other->second);
-          else finish(other->second, id);
-          goto done;
+      };
+      if (threads == 1) {
+        work(0);
+      } else {
+        std::vector<std::thread> pool;
+        for (int t = 0; t < threads; ++t) pool.emplace_back(work, t);
+        for (auto& th : pool) th.join();
+      }
+      for (auto& err : errors)
+        if (err) std::rethrow_exception(err);
+      for (int64_t a : applied) res.movesApplied += a;
+      for (const auto& list : found)
+        for (const Child& c : list) {
+          int32_t id = int32_t(me.parent.size());
+          if (me.index.insert(c.key, id) != id) continue;
+          me.parent.push_back(c.parent);
+          me.move.push_back(c.move);
+          int32_t there = other.index.find(c.key);
+          if (there >= 0) {
+            if (s == 0) finish(id, there);
+            else finish(there, id);
+            return finishStats();
+          }
         }
-        if (int64_t(side[0].size() + side[1].size()) > opt.maxStates) {
-          res.stoppedBy = "states";
-          goto done;
-        }
+      res.memoryBytes = std::max(res.memoryBytes, memory());
+      if (timeUp) {
+        res.stoppedBy = "time";
+        res.message = "stopped by the time limit (" + std::to_string(opt.maxSeconds) + " s) during depth " +
+                      std::to_string(side[0].depth + side[1].depth + 1);
+        return finishStats();
+      }
+      if (stored() > opt.maxStates) {
+        res.stoppedBy = "states";
+        res.message = "stopped at the state cap (--max-states " + std::to_string(opt.maxStates) + ") during depth " +
+                      std::to_string(side[0].depth + side[1].depth + 1);
+        return finishStats();
+      }
+      // A hash set grows by doubling: stop before the next growth could pass the memory limit.
+      if (double(memory()) + double(me.index.memoryBytes()) * 2 > opt.maxMemoryMB * 1048576.0) {
+        res.stoppedBy = "memory";
+        res.message = "stopped by the memory guard (--max-memory " + std::to_string(int64_t(opt.maxMemoryMB)) +
+                      " MB; " + std::to_string(memory() >> 20) + " MB in use) during depth " +
+                      std::to_string(side[0].depth + side[1].depth + 1);
+        return finishStats();
       }
     }
-    frontier[s] = next;
-    ++depth[s];
-    res.depthSearched = depth[0] + depth[1];
-    if (frontier[s].empty()) break;
+    me.levelBegin = levelStart;
+    me.levelEnd = me.parent.size();
+    ++me.depth;
+    res.depthSearched = side[0].depth + side[1].depth;
+    res.levels.push_back({s, me.depth, int64_t(me.levelEnd - me.levelBegin), stored(), res.movesApplied, elapsed()});
+    if (opt.progress) opt.progress(res.levels.back());
+    if (me.levelBegin == me.levelEnd) {
+      // No new state on this side: every sequence of any length (within the region cap) was seen.
+      res.stoppedBy = "exhausted";
+      return finishStats();
+    }
   }
-  if (res.stoppedBy.empty()) res.stoppedBy = "depth";
-done:
-  if (res.found) res.depthSearched = int(res.steps.size());
-  res.seconds = elapsed();
-  return res;
+  res.stoppedBy = "depth";
+  return finishStats();
 }
 
 void verifyDecomposition(const SearchProblem& pb, const std::vector<OpStep>& steps) {

@@ -1,0 +1,67 @@
+// Compact state storage for the decomposition search: 128-bit keys of a region's canonical form,
+// a flat open-addressing hash set of them, and the region encoder that computes them without
+// copying the complex.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "complex/complex.hpp"
+
+namespace hexdual {
+
+// 128 bits of a canonical form: two independent 64-bit hashes. The search treats equal keys as
+// equal states; every sequence it returns is replayed and checked exactly (verifyDecomposition).
+struct Key128 {
+  uint64_t lo = 0, hi = 0;
+  bool empty() const { return lo == 0 && hi == 0; }
+  friend bool operator==(Key128 a, Key128 b) { return a.lo == b.lo && a.hi == b.hi; }
+  friend bool operator!=(Key128 a, Key128 b) { return !(a == b); }
+};
+
+// Two independent 64-bit hashes of a word sequence (never the all-zero key, which marks empty slots).
+Key128 hashWords(const std::vector<int64_t>& words);
+
+// Open addressing, linear probing, load ≤ 1/2: 24 bytes per slot. Maps a key to an int32 value.
+class FlatKeyMap {
+ public:
+  explicit FlatKeyMap(size_t initialSlots = 1024);
+  // The value stored for key, or -1.
+  int32_t find(Key128 k) const;
+  // Inserts key -> value unless present; returns the value now stored.
+  int32_t insert(Key128 k, int32_t value);
+  size_t size() const { return size_; }
+  size_t slots() const { return slots_.size(); }
+  size_t memoryBytes() const { return slots_.size() * sizeof(Slot); }
+
+ private:
+  struct Slot {
+    Key128 key;
+    int32_t value = -1;
+  };
+  void grow();
+  std::vector<Slot> slots_;
+  size_t size_ = 0;
+};
+
+// Canonical form of the region of cx (the hexes with inRegion[h] != 0) with its boundary vertex ids
+// fixed — the same isomorphism classes as canonicalForm(subcomplex(cx, region), true) — encoded
+// from table lookups into reused buffers. A quad glued to a hex outside the region counts as
+// region boundary. Not thread-safe: one encoder per thread.
+class RegionEncoder {
+ public:
+  // The canonical word sequence (valid until the next call).
+  const std::vector<int64_t>& form(const Complex& cx, const std::vector<uint8_t>& inRegion);
+  Key128 key(const Complex& cx, const std::vector<uint8_t>& inRegion) { return hashWords(form(cx, inRegion)); }
+
+ private:
+  void encodeFrom(const Complex& cx, const std::vector<uint8_t>& inRegion, HexId start, int frame, std::vector<int64_t>& out);
+  std::vector<uint32_t> hexStamp_, vertexStamp_, keepStamp_;
+  std::vector<int32_t> hexLabel_, vertexLabel_;
+  std::vector<int8_t> hexFrame_;
+  std::vector<HexId> order_;
+  std::vector<int64_t> best_, cur_;
+  uint32_t stamp_ = 0, keepGen_ = 0;
+};
+
+}  // namespace hexdual

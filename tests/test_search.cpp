@@ -1,0 +1,158 @@
+// The decomposition search engine: its hash map, its region keys, its replay, its limits.
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <random>
+
+#include "complex/canonical.hpp"
+#include "flips/flip.hpp"
+#include "ops/ops.hpp"
+#include "flips/fourcube.hpp"
+#include "flips/search.hpp"
+#include "flips/search_state.hpp"
+#include "ops/oplog.hpp"
+
+using namespace hexdual;
+
+TEST_CASE("FlatKeyMap: insert keeps the first value, finds every key after growth, misses absent keys") {
+  const uint32_t seed = 1401;
+  std::printf("FlatKeyMap seed %u\n", seed);
+  std::mt19937_64 rng(seed);
+  FlatKeyMap m(16);
+  std::vector<Key128> keys;
+  for (int i = 0; i < 5000; ++i) keys.push_back({rng(), rng()});
+  for (int i = 0; i < 5000; ++i) CHECK(m.insert(keys[size_t(i)], i) == i);
+  CHECK(m.size() == 5000);
+  CHECK(m.slots() == 16384);  // load stays at or below one half
+  for (int i = 0; i < 5000; ++i) CHECK(m.insert(keys[size_t(i)], -7) == i);
+  CHECK(m.size() == 5000);
+  for (int i = 0; i < 5000; ++i) CHECK(m.find(keys[size_t(i)]) == i);
+  for (int i = 0; i < 1000; ++i) CHECK(m.find({rng(), rng()}) == -1);
+  // Keys equal in their low word only are still told apart.
+  FlatKeyMap n;
+  CHECK(n.insert({5, 1}, 1) == 1);
+  CHECK(n.insert({5, 2}, 2) == 2);
+  CHECK(n.find({5, 1}) == 1);
+  CHECK(n.find({5, 2}) == 2);
+  CHECK(n.find({5, 3}) == -1);
+}
+
+TEST_CASE("hashWords: never the empty key; order and length matter") {
+  CHECK_FALSE(hashWords({}).empty());
+  CHECK(hashWords({1, 2}) != hashWords({2, 1}));
+  CHECK(hashWords({0}) != hashWords({0, 0}));
+  CHECK(hashWords({3, -4}) == hashWords({3, -4}));
+}
+
+namespace {
+std::vector<uint8_t> hostMask(const std::vector<HexId>& host) {
+  std::vector<uint8_t> m;
+  for (HexId h : host) {
+    if (size_t(h) >= m.size()) m.resize(size_t(h) + 1, 0);
+    m[size_t(h)] = 1;
+  }
+  return m;
+}
+std::vector<HexId> regionHexes(const Complex& cx, const std::vector<uint8_t>& isHost) {
+  std::vector<HexId> r;
+  for (HexId h : cx.hexes())
+    if (size_t(h) >= isHost.size() || !isHost[size_t(h)]) r.push_back(h);
+  return r;
+}
+}  // namespace
+
+TEST_CASE("RegionEncoder keys agree with canonical forms of the region (random local moves, fixed seed)") {
+  const uint32_t seed = 2026;
+  std::printf("RegionEncoder seed %u\n", seed);
+  std::mt19937 rng(seed);
+  SearchProblem pb = flipProblem("3-5e");
+  auto isHost = hostMask(pb.host);
+  RegionEncoder enc;
+  // States reached by short random walks of hex pushes, pillows and chord pushes in the region.
+  std::vector<Complex> states{pb.start, pb.goal};
+  for (int walk = 0; walk < 12; ++walk) {
+    Complex cx = pb.start;
+    for (int step = 0; step < 3; ++step) {
+      auto region = regionHexes(cx, isHost);
+      HexId h = region[rng() % region.size()];
+      int f = int(rng() % 6);
+      try {
+        if (rng() % 2) hexPush(cx, {h, f});
+        else pillow(cx, {h, f});
+      } catch (const Error&) {
+      }
+      states.push_back(cx);
+    }
+  }
+  int equalPairs = 0;
+  for (size_t i = 0; i < states.size(); ++i)
+    for (size_t j = 0; j < states.size(); ++j) {
+      bool sameForm = canonicalForm(subcomplex(states[i], regionHexes(states[i], isHost)), true) ==
+                      canonicalForm(subcomplex(states[j], regionHexes(states[j], isHost)), true);
+      CHECK((enc.key(states[i], isHost) == enc.key(states[j], isHost)) == sameForm);
+      equalPairs += sameForm && i != j;
+    }
+  CHECK(equalPairs > 0);  // the walks revisit states, so equality is exercised too
+  // The goal differs from the start; the flip done by its stored steps equals the goal.
+  CHECK(enc.key(pb.start, isHost) != enc.key(pb.goal, isHost));
+  Complex viaSteps = pb.start;
+  for (const OpStep& st : parseOpLog("v1;hexpush h0f0;facecollapse h3e8 h8f2 h4f3;facesplit h7f4 h13f2;chordpull h4").steps)
+    applyStep(viaSteps, st);
+  CHECK(enc.key(viaSteps, isHost) == enc.key(pb.goal, isHost));
+}
+
+TEST_CASE("the search engine finds the known short decompositions again, the same with 1 and 2 threads") {
+  SearchOptions o;
+  o.maxDepth = 3;
+  SearchResult r26 = searchDecomposition(flipProblem("2-6"), o);
+  CHECK(r26.found);
+  CHECK(formatOpLog({1, r26.steps}) == "v1;hexpush h0f0");
+  SearchResult r17 = searchDecomposition(flipProblem("1-7"), o);
+  REQUIRE(r17.found);
+  CHECK(formatOpLog({1, r17.steps}) == "v1;pillow h0f1;hexpush h0f1");
+  SearchResult r71 = searchDecomposition(flipProblem("7-1"), o);
+  REQUIRE(r71.found);
+  CHECK(r71.steps.size() == 2);
+  verifyDecomposition(flipProblem("7-1"), r71.steps);
+  o.maxDepth = 4;
+  SearchProblem pb = flipProblem("3-5e");
+  SearchResult one = searchDecomposition(pb, o);
+  o.threads = 2;
+  SearchResult two = searchDecomposition(pb, o);
+  REQUIRE(one.found);
+  REQUIRE(two.found);
+  CHECK(one.steps.size() == 4);
+  verifyDecomposition(pb, one.steps);
+  CHECK(formatOpLog({1, one.steps}) == formatOpLog({1, two.steps}));
+  CHECK(one.statesExplored == two.statesExplored);
+  CHECK(one.movesApplied == two.movesApplied);
+  CHECK(one.memoryBytes > 0);
+  CHECK(one.memoryBytes < size_t(one.statesExplored) * 100 + (1u << 20));
+}
+
+TEST_CASE("search limits: the state cap and the memory guard stop with a message; an exhausted space says so") {
+  SearchProblem pb = flipProblem("4-4v");
+  SearchOptions o;
+  o.maxDepth = 6;
+  o.maxStates = 300;
+  SearchResult capped = searchDecomposition(pb, o);
+  CHECK_FALSE(capped.found);
+  CHECK(capped.stoppedBy == "states");
+  CHECK(capped.message.rfind("stopped at the state cap (--max-states 300) during depth ", 0) == 0);
+  CHECK(capped.statesExplored > 300);
+  o.maxStates = 1000000;
+  o.maxMemoryMB = 0.01;
+  SearchResult guarded = searchDecomposition(pb, o);
+  CHECK(guarded.stoppedBy == "memory");
+  CHECK(guarded.message.rfind("stopped by the memory guard (--max-memory 0 MB; ", 0) == 0);
+  // Hex pulls alone: the 2-6 before side (two hexes) has no hex pull, so the start side is empty
+  // after one level and no sequence of any length exists.
+  o = SearchOptions{};
+  o.maxDepth = 9;
+  o.ops = {OpKind::HexPull};
+  SearchResult none = searchDecomposition(flipProblem("2-6"), o);
+  CHECK_FALSE(none.found);
+  CHECK(none.stoppedBy == "exhausted");
+  CHECK(none.depthSearched == 1);
+  CHECK(none.statesExplored == 2);
+}
