@@ -45,7 +45,7 @@ const char* kUsage =
     "                                            apply a flip to the named hexes\n"
     "  hexdual flip verify --all [--json]        check every stored decomposition in host meshes\n"
     "  hexdual flip search NAME --max-depth D [--max-seconds S] [--max-states N] [--ops a,b]\n"
-    "                   [--threads T] [--max-memory MB] [--max-region H]\n"
+    "                   [--threads T] [--max-memory MB] [--max-region H] [--symmetry]\n"
     "                                            search atomic sequences for a flip\n"
     "Reading (every command): .vtk (legacy 2.0-5.1), .vtu, .msh (2.2, 4.1), .mesh, .meshb, .hxd, any of\n"
     "them gzipped; --hexes-only reads the hexahedra of a file that also has tets, prisms or pyramids.\n";
@@ -53,7 +53,7 @@ const char* kUsage =
 struct Args {
   std::vector<std::string> positional;
   std::string output, ops, at, local, jsonDir, svgDir;
-  bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false;
+  bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false;
   int sheet = -1, rings = 2;
   int maxDepth = 4;
   double maxSeconds = 60;
@@ -102,6 +102,8 @@ Args parseArgs(int argc, char** argv, int from) {
       } catch (const std::exception&) {
         throw Error(s + " needs a number, not '" + v + "'");
       }
+    } else if (s == "--symmetry") {
+      a.symmetry = true;
     } else if (s == "--via-atomic") {
       a.viaAtomic = true;
     } else if (s == "--all") {
@@ -268,6 +270,7 @@ int runFlip(const Args& a) {
     o.threads = a.threads;
     o.maxMemoryMB = a.maxMemory;
     o.maxRegionHexes = a.maxRegion;
+    o.symmetry = a.symmetry;
     o.progress = [](const SearchLevel& l) {
       std::cerr << "depth " << l.depth << (l.side ? " from the goal: " : " from the start: ") << l.newStates << " new states, "
                 << l.storedStates << " stored, " << l.movesApplied << " moves applied, " << l.seconds << " s\n";
@@ -281,7 +284,7 @@ int runFlip(const Args& a) {
     std::cout << formatDecomposition(label, r, o) << "\n";
     std::cerr << (r.found ? "found " + std::to_string(r.steps.size()) + " steps (verified)" : "none found") << "; stopped by "
               << r.stoppedBy << " after " << r.statesExplored << " states, " << r.movesApplied << " moves applied, "
-              << (r.memoryBytes >> 20) << " MB\n";
+              << (r.memoryBytes >> 20) << " MB" << (r.symmetries > 1 ? ", " + std::to_string(r.symmetries) + " symmetries" : "") << "\n";
     if (!r.message.empty()) std::cerr << r.message << "\n";
     return 0;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <functional>
 #include <map>
@@ -304,11 +305,95 @@ struct SearchContext {
   std::vector<uint8_t> isHost;  // by hex id; ids past the end are region hexes
   const HostSnapshot& hs;
   const SearchOptions& opt;
+  std::vector<std::vector<VertexId>> symmetries;  // vertex maps fixing host, start and goal (not the identity)
+  Key128 key(RegionEncoder& enc, const Complex& cx) const {
+    return symmetries.empty() ? enc.key(cx, isHost) : enc.key(cx, isHost, symmetries);
+  }
 };
 
-// Expands nodes [begin, end) of side s: every move that applies, keeps the host and the region
-// cap, and reaches a state not yet stored on side s. Reads the index only (workers run in parallel).
-void expand(const SearchContext& ctx, const Side& side, size_t begin, size_t end, std::vector<Child>& out, int64_t& applied,
+// Candidate vertex maps: for the 4-cube boundary its 384 symmetries (vertex id = coordinate
+// bits), otherwise the 48 symmetries of the bounding box of the vertex positions.
+std::vector<std::vector<VertexId>> candidateMaps(const Complex& cx) {
+  std::vector<std::vector<VertexId>> out;
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  if (cx.numHexes() == 8 && cx.vertexCapacity() == 16) {
+    std::array<int, 4> p{0, 1, 2, 3};
+    do {
+      for (int flip = 0; flip < 16; ++flip) {
+        std::vector<VertexId> m(16);
+        for (int v = 0; v < 16; ++v) {
+          int w = 0;
+          for (int i = 0; i < 4; ++i) w |= (((v >> i) & 1) ^ ((flip >> i) & 1)) << p[size_t(i)];
+          m[size_t(v)] = w;
+        }
+        out.push_back(m);
+      }
+    } while (std::next_permutation(p.begin(), p.end()));
+    return out;
+  }
+  std::map<std::array<long, 3>, VertexId> at;
+  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  auto coords = [](Vec3 q) { return std::array<double, 3>{q.x, q.y, q.z}; };
+  for (VertexId v : cx.vertices()) {
+    auto c = coords(cx.position(v));
+    for (int i = 0; i < 3; ++i) lo[size_t(i)] = std::min(lo[size_t(i)], c[size_t(i)]), hi[size_t(i)] = std::max(hi[size_t(i)], c[size_t(i)]);
+    at[{std::lround(2 * c[0]), std::lround(2 * c[1]), std::lround(2 * c[2])}] = v;
+  }
+  for (auto& pm : perms)
+    for (int flip = 0; flip < 8; ++flip) {
+      std::vector<VertexId> m(size_t(cx.vertexCapacity()), -1);
+      bool ok = true;
+      for (VertexId v : cx.vertices()) {
+        auto c = coords(cx.position(v));
+        std::array<double, 3> d{};
+        for (int i = 0; i < 3; ++i) {
+          double x = c[size_t(pm[i])];
+          d[size_t(i)] = (flip >> i) & 1 ? lo[size_t(pm[i])] + hi[size_t(pm[i])] - x : x;
+        }
+        auto it = at.find({std::lround(2 * d[0]), std::lround(2 * d[1]), std::lround(2 * d[2])});
+        if (it == at.end()) ok = false;
+        else m[size_t(v)] = it->second;
+      }
+      if (ok) out.push_back(m);
+    }
+  return out;
+}
+
+// The symmetries of a problem: vertex maps that carry the host onto itself and leave the
+// canonical forms of start and goal unchanged (so a path up to symmetry ends at the goal itself).
+std::vector<std::vector<VertexId>> problemSymmetries(const SearchProblem& pb, const std::vector<uint8_t>& isHost) {
+  RegionEncoder enc;
+  const std::vector<int64_t> start = enc.form(pb.start, isHost), goal = enc.form(pb.goal, isHost);
+  std::vector<std::array<VertexId, 8>> hostSets;
+  auto sortedVerts = [](std::array<VertexId, 8> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  for (HexId h : pb.host) hostSets.push_back(sortedVerts(pb.start.hexVertices(h)));
+  std::sort(hostSets.begin(), hostSets.end());
+  std::vector<std::vector<VertexId>> out;
+  for (const auto& m : candidateMaps(pb.start)) {
+    bool identity = true;
+    for (size_t v = 0; v < m.size(); ++v) identity = identity && (m[v] == VertexId(v) || m[v] < 0);
+    if (identity) continue;
+    std::vector<std::array<VertexId, 8>> images;
+    for (HexId h : pb.host) {
+      auto v = pb.start.hexVertices(h);
+      for (VertexId& x : v) x = m[size_t(x)];
+      images.push_back(sortedVerts(v));
+    }
+    std::sort(images.begin(), images.end());
+    if (images != hostSets) continue;
+    if (enc.form(pb.start, isHost, &m) != start || enc.form(pb.goal, isHost, &m) != goal) continue;
+    out.push_back(m);
+  }
+  return out;
+}
+
+// Expands nodes [begin, end) of `side`: every move that applies, keeps the host and the region
+// cap, and reaches a state not yet stored there; stops at a state the other side stored. Reads
+// the indexes only (workers run in parallel; the merge after them writes).
+void expand(const SearchContext& ctx, const Side& side, const Side& other, size_t begin, size_t end, std::vector<Child>& out, int64_t& applied,
             const std::function<bool()>& stop) {
   Walker w(side, ctx.host, ctx.opt.ops);
   RegionEncoder enc;
@@ -328,11 +413,13 @@ void expand(const SearchContext& ctx, const Side& side, size_t begin, size_t end
       bool keep = w.cx.numHexes() - hostCount <= ctx.opt.maxRegionHexes;
       Key128 key;
       if (keep) {
-        key = enc.key(w.cx, ctx.isHost);
+        key = ctx.key(enc, w.cx);
         keep = side.index.find(key) < 0 && localityViolation(w.cx, ctx.hs).empty();
       }
       w.cx.undo(r.edits);
-      if (keep) out.push_back({int32_t(n), uint32_t(i), key});
+      if (!keep) continue;
+      out.push_back({int32_t(n), uint32_t(i), key});
+      if (other.index.find(key) >= 0) return;  // the two searches meet: the merge stops here
     }
   }
 }
@@ -344,19 +431,21 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   HostSnapshot hs = snapshot(pb.start, pb.host);
   const std::vector<HexId>& host = hs.host;
-  SearchContext ctx{host, {}, hs, opt};
+  SearchContext ctx{host, {}, hs, opt, {}};
   for (HexId h : host) {
     if (size_t(h) >= ctx.isHost.size()) ctx.isHost.resize(size_t(h) + 1, 0);
     ctx.isHost[size_t(h)] = 1;
   }
+  if (opt.symmetry) ctx.symmetries = problemSymmetries(pb, ctx.isHost);
   SearchResult res;
+  res.symmetries = int(ctx.symmetries.size()) + 1;
   Side side[2];
   RegionEncoder enc;
   for (int s = 0; s < 2; ++s) {
     side[s].root = s == 0 ? pb.start : pb.goal;
     side[s].parent = {-1};
     side[s].move = {0};
-    side[s].index.insert(enc.key(side[s].root, ctx.isHost), 0);
+    side[s].index.insert(ctx.key(enc, side[s].root), 0);
   }
   auto stored = [&] { return int64_t(side[0].parent.size() + side[1].parent.size()); };
   auto memory = [&] { return side[0].memoryBytes() + side[1].memoryBytes(); };
@@ -367,7 +456,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     res.seconds = elapsed();
     return res;
   };
-  if (side[1].index.find(enc.key(side[0].root, ctx.isHost)) >= 0) {
+  if (side[1].index.find(ctx.key(enc, side[0].root)) >= 0) {
     res.found = true;
     res.stoppedBy = "found";
     return finishStats();
@@ -386,7 +475,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     }
     Complex cur = wf.cx;
     for (size_t k = back.size(); k > 0; --k) {
-      Key128 want = enc.key(chain[k - 1], ctx.isHost);
+      Key128 want = ctx.key(enc, chain[k - 1]);
       // A local move from cur reaching the previous state: first among the generated moves (this
       // also picks the side that keeps host vertex ids for splits), else the translated inverse.
       std::optional<OpStep> chosen;
@@ -397,7 +486,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
         } catch (const Error&) {
           continue;
         }
-        bool hit = enc.key(cur, ctx.isHost) == want && localityViolation(cur, hs).empty();
+        bool hit = ctx.key(enc, cur) == want && localityViolation(cur, hs).empty();
         cur.undo(r.edits);
         if (hit) {
           chosen = m;
@@ -408,7 +497,10 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
         Complex tmp = chain[k - 1];
         OpResult r = applyStep(tmp, back[k - 1]);
         if (!r.inverse) throw Error("search: " + formatOpStep(back[k - 1]) + " has no inverse step (" + r.noInverse + ")");
-        chosen = translateStep(*r.inverse, regionLabelling(tmp, host), regionLabelling(cur, host), host);
+        CanonicalLabelling from = regionLabelling(tmp, host), to = regionLabelling(cur, host);
+        if (from.form != to.form)
+          throw Error("search: the paths meet only up to a symmetry where a generated move is missing; search again without symmetry");
+        chosen = translateStep(*r.inverse, from, to, host);
       }
       applyStep(cur, *chosen);
       steps.push_back(*chosen);
@@ -440,7 +532,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
         size_t per = (e - b + size_t(threads) - 1) / size_t(threads);
         size_t lo = std::min(e, b + per * size_t(t)), hi = std::min(e, lo + per);
         try {
-          expand(ctx, me, lo, hi, found[size_t(t)], applied[size_t(t)], stop);
+          expand(ctx, me, other, lo, hi, found[size_t(t)], applied[size_t(t)], stop);
         } catch (...) {
           errors[size_t(t)] = std::current_exception();
         }

@@ -44,6 +44,7 @@ struct SearchOptions {
   int maxRegionHexes = 16;       // prune states whose region grows beyond this
   int threads = 1;               // threads over the frontier (the result does not depend on it)
   double maxMemoryMB = 4096;     // stop before the stored states could pass this
+  bool symmetry = false;         // store one state per orbit of the problem's symmetries
   std::function<void(const SearchLevel&)> progress;  // called after every completed level
 };
 
@@ -58,6 +59,7 @@ struct SearchResult {
   std::string stoppedBy;  // "found", "depth", "exhausted", "states", "time", "memory"
   std::string message;    // why the search stopped early, for the user
   std::vector<SearchLevel> levels;
+  int symmetries = 1;     // the order of the symmetry group used (1: none)
 };
 
 SearchResult searchDecomposition(const SearchProblem& problem, const SearchOptions& options);

@@ -170,7 +170,7 @@ void RegionEncoder::encodeFrom(const Complex& cx, const std::vector<uint8_t>& is
     for (int b = 0; b < 8; ++b) {
       VertexId v = cx.vertex(h, T.corner[size_t(fr)][size_t(b)]);
       if (keepStamp_[size_t(v)] == keepGen_) {
-        out.push_back(-2 - int64_t(v));
+        out.push_back(-2 - int64_t(mapped(v)));
       } else {
         if (vertexStamp_[size_t(v)] != stamp_) {
           vertexStamp_[size_t(v)] = stamp_;
@@ -195,8 +195,17 @@ void RegionEncoder::encodeFrom(const Complex& cx, const std::vector<uint8_t>& is
   out.push_back(int64_t(order_.size()));
 }
 
-const std::vector<int64_t>& RegionEncoder::form(const Complex& cx, const std::vector<uint8_t>& isHost) {
+Key128 RegionEncoder::key(const Complex& cx, const std::vector<uint8_t>& isHost,
+                          const std::vector<std::vector<VertexId>>& symmetries) {
+  Key128 best = key(cx, isHost);
+  for (const auto& map : symmetries) best = std::min(best, hashWords(form(cx, isHost, &map)));
+  return best;
+}
+
+const std::vector<int64_t>& RegionEncoder::form(const Complex& cx, const std::vector<uint8_t>& isHost,
+                                                const std::vector<VertexId>* relabel) {
   const FrameTables& T = frameTables();
+  relabel_ = relabel;
   size_t nh = size_t(cx.hexCapacity()), nv = size_t(cx.vertexCapacity());
   if (hexStamp_.size() < nh) {
     hexStamp_.resize(nh, 0);
@@ -230,8 +239,9 @@ const std::vector<int64_t>& RegionEncoder::form(const Complex& cx, const std::ve
       if (!g.boundary() && !outside(isHost, g.hex)) continue;
       std::array<VertexId, 4> v, s;
       for (int p = 0; p < 4; ++p) {
-        v[size_t(p)] = cx.vertex(h, kFaceCorners[size_t(f)][size_t(p)]);
-        keepStamp_[size_t(v[size_t(p)])] = keepGen_;
+        VertexId x = cx.vertex(h, kFaceCorners[size_t(f)][size_t(p)]);
+        keepStamp_[size_t(x)] = keepGen_;
+        v[size_t(p)] = mapped(x);
       }
       s = v;
       std::sort(s.begin(), s.end());

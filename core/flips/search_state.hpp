@@ -17,6 +17,7 @@ struct Key128 {
   bool empty() const { return lo == 0 && hi == 0; }
   friend bool operator==(Key128 a, Key128 b) { return a.lo == b.lo && a.hi == b.hi; }
   friend bool operator!=(Key128 a, Key128 b) { return !(a == b); }
+  friend bool operator<(Key128 a, Key128 b) { return a.hi != b.hi ? a.hi < b.hi : a.lo < b.lo; }
 };
 
 // Two independent 64-bit hashes of a word sequence (never the all-zero key, which marks empty slots).
@@ -50,9 +51,15 @@ class FlatKeyMap {
 // region boundary. Not thread-safe: one encoder per thread.
 class RegionEncoder {
  public:
-  // The canonical word sequence (valid until the next call).
-  const std::vector<int64_t>& form(const Complex& cx, const std::vector<uint8_t>& inRegion);
-  Key128 key(const Complex& cx, const std::vector<uint8_t>& inRegion) { return hashWords(form(cx, inRegion)); }
+  // The canonical word sequence (valid until the next call). With `relabel`, boundary vertex v
+  // is written as relabel[v] (ids past its end as themselves): the form of the image of the region
+  // under a vertex map, as long as that map preserves the host.
+  const std::vector<int64_t>& form(const Complex& cx, const std::vector<uint8_t>& isHost,
+                                   const std::vector<VertexId>* relabel = nullptr);
+  Key128 key(const Complex& cx, const std::vector<uint8_t>& isHost) { return hashWords(form(cx, isHost)); }
+  // The smallest key over the identity and the given vertex maps (symmetries of the host): one
+  // key for a state and all its images under the symmetries.
+  Key128 key(const Complex& cx, const std::vector<uint8_t>& isHost, const std::vector<std::vector<VertexId>>& symmetries);
 
  private:
   void encodeFrom(const Complex& cx, const std::vector<uint8_t>& inRegion, HexId start, int frame, std::vector<int64_t>& out);
@@ -60,6 +67,10 @@ class RegionEncoder {
   std::vector<int32_t> hexLabel_, vertexLabel_;
   std::vector<int8_t> hexFrame_;
   std::vector<HexId> order_;
+  VertexId mapped(VertexId v) const {
+    return relabel_ && size_t(v) < relabel_->size() ? (*relabel_)[size_t(v)] : v;
+  }
+  const std::vector<VertexId>* relabel_ = nullptr;
   std::vector<int64_t> best_, cur_;
   uint32_t stamp_ = 0, keepGen_ = 0;
 };
