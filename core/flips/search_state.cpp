@@ -29,40 +29,40 @@ Key128 hashWords(const std::vector<int64_t>& words) {
 FlatKeyMap::FlatKeyMap(size_t initialSlots) {
   size_t n = 16;
   while (n < initialSlots) n <<= 1;
-  slots_.resize(n);
+  keys_.resize(n);
+  values_.resize(n, -1);
 }
 
 int32_t FlatKeyMap::find(Key128 k) const {
-  size_t mask = slots_.size() - 1;
+  size_t mask = keys_.size() - 1;
   for (size_t i = size_t(k.lo) & mask;; i = (i + 1) & mask) {
-    const Slot& s = slots_[i];
-    if (s.key.empty()) return -1;
-    if (s.key == k) return s.value;
+    if (keys_[i].empty()) return -1;
+    if (keys_[i] == k) return values_[i];
   }
 }
 
 int32_t FlatKeyMap::insert(Key128 k, int32_t value) {
-  if (2 * (size_ + 1) > slots_.size()) grow();
-  size_t mask = slots_.size() - 1;
+  if (10 * (size_ + 1) > 7 * keys_.size()) grow();
+  size_t mask = keys_.size() - 1;
   for (size_t i = size_t(k.lo) & mask;; i = (i + 1) & mask) {
-    Slot& s = slots_[i];
-    if (s.key.empty()) {
-      s.key = k;
-      s.value = value;
+    if (keys_[i].empty()) {
+      keys_[i] = k;
+      values_[i] = value;
       ++size_;
       return value;
     }
-    if (s.key == k) return s.value;
+    if (keys_[i] == k) return values_[i];
   }
 }
 
 void FlatKeyMap::grow() {
-  std::vector<Slot> old;
-  old.swap(slots_);
-  slots_.resize(old.size() * 2);
+  std::vector<Key128> oldKeys(keys_.size() * 2);
+  std::vector<int32_t> oldValues(values_.size() * 2, -1);
+  oldKeys.swap(keys_);
+  oldValues.swap(values_);
   size_ = 0;
-  for (const Slot& s : old)
-    if (!s.key.empty()) insert(s.key, s.value);
+  for (size_t i = 0; i < oldKeys.size(); ++i)
+    if (!oldKeys[i].empty()) insert(oldKeys[i], oldValues[i]);
 }
 
 namespace {
