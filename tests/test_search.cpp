@@ -179,3 +179,42 @@ TEST_CASE("search limits: the state cap and the memory guard stop with a message
   CHECK(none.depthSearched == 1);
   CHECK(none.statesExplored == 2);
 }
+
+#include "ops/candidates.hpp"
+
+TEST_CASE("invariants behind the search bounds: each operation's change of H and of V - H") {
+  // Chord push and pull change H by +2 / -2 and keep V - H; the hex push adds 4 hexes. So a
+  // sequence of chord pushes and pulls doing a hex push has (pushes - pulls) = 2: its length is
+  // even. Pillows and face collapses (and their inverses) are the only steps that change V - H.
+  const uint32_t seed = 77;
+  std::printf("invariants seed %u\n", seed);
+  std::mt19937 rng(seed);
+  SearchProblem pb = flipProblem("2-6");
+  Complex cx = pb.start;
+  const Counts goal = pb.goal.counts(), start = pb.start.counts();
+  CHECK(goal.hexes - start.hexes == 4);
+  CHECK(goal.vertices - goal.hexes == start.vertices - start.hexes);
+  int pushes = 0, pulls = 0;
+  for (int step = 0; step < 8; ++step) {
+    OpKind kind = step % 3 == 2 ? OpKind::ChordPull : OpKind::ChordPush;
+    auto cs = candidates(cx, kind);
+    if (cs.empty()) continue;
+    OpResult r = applyStep(cx, cs[rng() % cs.size()]);
+    CHECK(r.dH == (kind == OpKind::ChordPush ? 2 : -2));
+    CHECK(r.dV == r.dH);
+    (kind == OpKind::ChordPush ? pushes : pulls) += 1;
+  }
+  CHECK(pushes >= 4);
+  CHECK(pulls >= 1);
+  Complex g = pb.start;
+  auto hp = candidates(g, OpKind::HexPush);
+  REQUIRE_FALSE(hp.empty());
+  OpResult r = applyStep(g, hp[0]);
+  CHECK(r.dH == 4);
+  CHECK(r.dV - r.dH == 0);
+  Complex p = pb.start;
+  auto pl = candidates(p, OpKind::Pillow);
+  REQUIRE_FALSE(pl.empty());
+  OpResult rp = applyStep(p, pl[0]);
+  CHECK(rp.dV - rp.dH == 2);
+}
