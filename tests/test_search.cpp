@@ -153,6 +153,23 @@ TEST_CASE("symmetry reduction: the groups of the problems; fewer states, the sam
   CHECK(searchDecomposition(tripleChordPushProblem(), o).symmetries == 6);
 }
 
+TEST_CASE("ring splits are generated forward: the goal side undoes ring collapses, so 3-5c is found at depth 4") {
+  // 3-5c = hexpush, hexpush, ringcollapse, unpillow: from the goal side the ring collapse is a
+  // ring split. Without forward ring splits the 2+2 split of depth 4 cannot meet.
+  SearchProblem pb = flipProblem("3-5c");
+  SearchOptions o;
+  o.maxDepth = 4;
+  o.symmetry = true;
+  SearchResult with = searchDecomposition(pb, o);
+  REQUIRE(with.found);
+  CHECK(with.steps.size() == 4);
+  verifyDecomposition(pb, with.steps);
+  o.ringSplitMax = 0;
+  SearchResult without = searchDecomposition(pb, o);
+  CHECK_FALSE(without.found);
+  CHECK(without.stoppedBy == "depth");
+}
+
 TEST_CASE("search limits: the state cap and the memory guard stop with a message; an exhausted space says so") {
   SearchProblem pb = flipProblem("4-4v");
   SearchOptions o;

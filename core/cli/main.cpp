@@ -45,7 +45,7 @@ const char* kUsage =
     "                                            apply a flip to the named hexes\n"
     "  hexdual flip verify --all [--json]        check every stored decomposition in host meshes\n"
     "  hexdual flip search NAME --max-depth D [--max-seconds S] [--max-states N] [--ops a,b]\n"
-    "                   [--threads T] [--max-memory MB] [--max-region H] [--symmetry]\n"
+    "                   [--threads T] [--max-memory MB] [--max-region H] [--ring-split L] [--symmetry]\n"
     "                                            search atomic sequences for a flip\n"
     "Reading (every command): .vtk (legacy 2.0-5.1), .vtu, .msh (2.2, 4.1), .mesh, .meshb, .hxd, any of\n"
     "them gzipped; --hexes-only reads the hexahedra of a file that also has tets, prisms or pyramids.\n";
@@ -58,7 +58,7 @@ struct Args {
   int maxDepth = 4;
   double maxSeconds = 60;
   int64_t maxStates = 200000;
-  int threads = 1, maxRegion = 16;
+  int threads = 1, maxRegion = 16, ringSplit = 8;
   double maxMemory = 4096;
 };
 
@@ -88,7 +88,7 @@ Args parseArgs(int argc, char** argv, int from) {
       if (i + 1 >= argc) throw Error("--ops needs an operation log");
       a.ops = argv[++i];
     } else if (s == "--at" || s == "--max-depth" || s == "--max-seconds" || s == "--max-states" || s == "--threads" ||
-               s == "--max-memory" || s == "--max-region") {
+               s == "--max-memory" || s == "--max-region" || s == "--ring-split") {
       if (i + 1 >= argc) throw Error(s + " needs a value");
       std::string v = argv[++i];
       try {
@@ -99,6 +99,7 @@ Args parseArgs(int argc, char** argv, int from) {
         if (s == "--threads") a.threads = std::stoi(v);
         if (s == "--max-memory") a.maxMemory = std::stod(v);
         if (s == "--max-region") a.maxRegion = std::stoi(v);
+        if (s == "--ring-split") a.ringSplit = std::stoi(v);
       } catch (const std::exception&) {
         throw Error(s + " needs a number, not '" + v + "'");
       }
@@ -271,6 +272,7 @@ int runFlip(const Args& a) {
     o.maxMemoryMB = a.maxMemory;
     o.maxRegionHexes = a.maxRegion;
     o.symmetry = a.symmetry;
+    o.ringSplitMax = a.ringSplit;
     o.progress = [](const SearchLevel& l) {
       std::cerr << "depth " << l.depth << (l.side ? " from the goal: " : " from the start: ") << l.newStates << " new states, "
                 << l.storedStates << " stored, " << l.movesApplied << " moves applied, " << l.seconds << " s\n";

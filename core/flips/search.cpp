@@ -120,9 +120,112 @@ CanonicalLabelling regionLabelling(const Complex& cx, const std::vector<HexId>& 
   return canonicalLabelling(subcomplex(cx, regionOf(cx, host)), true);
 }
 
+// Ring splits generated forward (TK03 §4.4, the inverse of a ring collapse): every closed loop of
+// region edges, at most `maxLen` long, with two strips of quads along it — f_k and g_k share the
+// loop's k-th edge, f_k and f_k+1 share an edge across the loop (so do the g's). Each loop is
+// started once, at its smallest edge walked from its smaller vertex; both sides of f_0 are tried
+// (the side of f_0 keeps the loop's vertex ids). Every quad must have a region side.
+void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int maxLen, std::vector<OpStep>& out) {
+  if (maxLen < 2) return;
+  auto verts = [&](QuadSide s) {
+    std::array<VertexId, 4> v;
+    for (int p = 0; p < 4; ++p) v[size_t(p)] = cx.vertex(s.hex, kFaceCorners[size_t(s.face)][size_t(p)]);
+    return v;
+  };
+  auto other = [&](QuadSide s, VertexId v, VertexId away) {  // v's neighbour in quad s other than `away`
+    auto fv = verts(s);
+    for (int p = 0; p < 4; ++p)
+      if (fv[size_t(p)] == v) return fv[size_t((p + 1) & 3)] == away ? fv[size_t((p + 3) & 3)] : fv[size_t((p + 1) & 3)];
+    return VertexId(-1);
+  };
+  auto cornerIn = [&](HexId h, VertexId v) {
+    for (int c = 0; c < 8; ++c)
+      if (cx.vertex(h, c) == v) return c;
+    return -1;
+  };
+  // The canonical incidence of the edge a-b of quad s.
+  auto edgeOf = [&](QuadSide s, VertexId a, VertexId b) {
+    return cx.canonical(EdgeRef{s.hex, edgeBetween(cornerIn(s.hex, a), cornerIn(s.hex, b))});
+  };
+  auto touchesRegion = [&](QuadSide s) { return !isHost(host, s.hex) || !isHost(host, cx.gluing(s).hex); };
+  // The quads around edge a-b of quad s (closed stars only), as canonical sides.
+  auto quadsAround = [&](QuadSide s, VertexId a, VertexId b, std::vector<QuadSide>& qs) {
+    qs.clear();
+    EdgeRef e = edgeOf(s, a, b);
+    bool closed = false;
+    cx.edgeCycle(e, &closed);
+    if (!closed) return;
+    auto st = ops::closedEdgeStar(cx, e, "search");
+    for (size_t k = 0; k < st.inc.size(); ++k) qs.push_back(cx.canonical(QuadSide{st.inc[k].hex, st.exitFace[k]}));
+  };
+  std::vector<std::pair<QuadSide, QuadSide>> bands;
+  std::vector<VertexId> loop;
+  EdgeRef first{};
+  std::vector<std::vector<QuadSide>> fq(size_t(maxLen) + 1), gq(size_t(maxLen) + 1);
+  // Extends the strips from band k (ending at vertex `at`, coming from `from`).
+  std::function<void(VertexId, VertexId)> extend = [&](VertexId from, VertexId at) {
+    const size_t k = bands.size();
+    QuadSide f = bands.back().first, g = bands.back().second;
+    VertexId wf = other(f, at, from), wg = other(g, at, from);
+    if (at == loop[0]) {  // back at the start: f_0 and g_0 must continue the strips
+      QuadSide f0 = bands[0].first, g0 = bands[0].second;
+      if (k >= 2 && other(f0, at, loop[1]) == wf && other(g0, at, loop[1]) == wg && edgeOf(f0, at, wf) == edgeOf(f, at, wf) &&
+          edgeOf(g0, at, wg) == edgeOf(g, at, wg))
+        for (QuadSide s0 : {f0, QuadSide{cx.gluing(f0).hex, cx.gluing(f0).face}}) {
+          OpStep st{OpKind::RingSplit, {OpArg::of(s0, g0)}, 0};
+          for (size_t j = 1; j < k; ++j) st.args.push_back(OpArg::of(bands[j].first, bands[j].second));
+          out.push_back(st);
+        }
+      return;
+    }
+    if (int(k) >= maxLen) return;
+    quadsAround(f, at, wf, fq[k]);
+    quadsAround(g, at, wg, gq[k]);
+    for (QuadSide f2 : fq[k]) {
+      if (f2 == f || !touchesRegion(f2)) continue;
+      VertexId u = other(f2, at, wf);
+      for (QuadSide g2 : gq[k]) {
+        if (g2 == g || g2 == f2 || !touchesRegion(g2) || other(g2, at, wg) != u) continue;
+        EdgeRef e = edgeOf(f2, at, u);
+        if (!(edgeOf(g2, at, u) == e) || !(first < e)) continue;
+        if (u != loop[0] && std::find(loop.begin(), loop.end(), u) != loop.end()) continue;
+        bands.push_back({f2, g2});
+        loop.push_back(u);
+        extend(at, u);
+        loop.pop_back();
+        bands.pop_back();
+      }
+    }
+  };
+  std::vector<EdgeRef> seen;
+  for (HexId h : regionOf(cx, host))
+    for (int e = 0; e < 12; ++e) {
+      EdgeRef ce = cx.canonical(EdgeRef{h, e});
+      if (std::find(seen.begin(), seen.end(), ce) != seen.end()) continue;
+      seen.push_back(ce);
+      bool closed = false;
+      cx.edgeCycle(ce, &closed);
+      if (!closed) continue;
+      VertexId a = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][0]), b = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][1]);
+      if (b < a) std::swap(a, b);
+      auto st = ops::closedEdgeStar(cx, ce, "search");
+      std::vector<QuadSide> qs;
+      for (size_t k = 0; k < st.inc.size(); ++k) qs.push_back(cx.canonical(QuadSide{st.inc[k].hex, st.exitFace[k]}));
+      first = ce;
+      for (size_t i = 0; i < qs.size(); ++i)
+        for (size_t j = 0; j < qs.size(); ++j) {
+          if (i == j || !touchesRegion(qs[i]) || !touchesRegion(qs[j])) continue;
+          if (j < i) continue;  // f and g swapped give the same split
+          bands = {{qs[i], qs[j]}};
+          loop = {a, b};
+          extend(a, b);
+        }
+    }
+}
+
 // Candidate steps on region hexes. Cheap exact preconditions (a pillow partner, a blind-chord
 // partner) are checked here so that most rejections cost no exception.
-std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<OpKind>& ops) {
+std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<OpKind>& ops, int ringSplitMax) {
   using K = OpKind;
   auto use = [&](OpKind op) { return ops.empty() || std::find(ops.begin(), ops.end(), op) != ops.end(); };
   std::vector<OpStep> out;
@@ -179,6 +282,7 @@ std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, con
         }
     }
   }
+  if (use(K::RingSplit)) appendRingSplits(cx, host, ringSplitMax, out);
   return out;
 }
 
@@ -249,10 +353,13 @@ struct Side {
 // ancestor and applies forward from there, keeping each ancestor's move list.
 class Walker {
  public:
-  Walker(const Side& side, const std::vector<HexId>& host, const std::vector<OpKind>& ops)
-      : side_(side), host_(host), ops_(ops), cx(side.root) {
+  Walker(const Side& side, const std::vector<HexId>& host, const SearchOptions& opt)
+      : side_(side), host_(host), ops_(opt.ops), cx(side.root) {
+    ringMax_ = [&opt, this] {
+      return std::min(opt.ringSplitMax, opt.maxRegionHexes - int(cx.numHexes() - int64_t(host_.size())));
+    };
     path_ = {0};
-    movesAt_.push_back(moves(cx, host_, ops_));
+    movesAt_.push_back(moves(cx, host_, ops_, ringMax_()));
   }
   void goTo(int32_t node) {
     chain_.clear();
@@ -270,7 +377,7 @@ class Walker {
       const OpStep& m = movesAt_.back()[side_.move[size_t(chain_[i])]];
       logs_.push_back(applyStep(cx, m).edits);
       path_.push_back(chain_[i]);
-      movesAt_.push_back(moves(cx, host_, ops_));
+      movesAt_.push_back(moves(cx, host_, ops_, ringMax_()));
     }
   }
   const std::vector<OpStep>& movesHere() const { return movesAt_.back(); }
@@ -288,6 +395,7 @@ class Walker {
   std::vector<int32_t> path_, chain_;
   std::vector<Complex::EditLog> logs_;
   std::vector<std::vector<OpStep>> movesAt_;
+  std::function<int()> ringMax_;  // ring splits: loops up to the region cap's headroom
 
  public:
   Complex cx;
@@ -395,7 +503,7 @@ std::vector<std::vector<VertexId>> problemSymmetries(const SearchProblem& pb, co
 // the indexes only (workers run in parallel; the merge after them writes).
 void expand(const SearchContext& ctx, const Side& side, const Side& other, size_t begin, size_t end, std::vector<Child>& out, int64_t& applied,
             const std::function<bool()>& stop) {
-  Walker w(side, ctx.host, ctx.opt.ops);
+  Walker w(side, ctx.host, ctx.opt);
   RegionEncoder enc;
   const int64_t hostCount = int64_t(ctx.host.size());
   for (size_t n = begin; n < end; ++n) {
@@ -463,7 +571,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
   }
   // Joins the forward path to node fi with the backward path from the goal to node bi (same key).
   auto finish = [&](int32_t fi, int32_t bi) {
-    Walker wf(side[0], host, opt.ops), wb(side[1], host, opt.ops);
+    Walker wf(side[0], host, opt), wb(side[1], host, opt);
     wf.goTo(fi);
     wb.goTo(bi);
     std::vector<OpStep> steps = wf.steps(), back = wb.steps();
@@ -479,7 +587,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
       // A local move from cur reaching the previous state: first among the generated moves (this
       // also picks the side that keeps host vertex ids for splits), else the translated inverse.
       std::optional<OpStep> chosen;
-      for (const OpStep& m : moves(cur, host, {})) {
+      for (const OpStep& m : moves(cur, host, {}, opt.ringSplitMax)) {
         OpResult r;
         try {
           r = applyStep(cur, m);

@@ -44,6 +44,7 @@ struct SearchOptions {
   int maxRegionHexes = 16;       // prune states whose region grows beyond this
   int threads = 1;               // threads over the frontier (the result does not depend on it)
   double maxMemoryMB = 4096;     // stop before the stored states could pass this
+  int ringSplitMax = 8;          // ring splits generated forward: loops of at most this many edges (0: none)
   bool symmetry = false;         // store one state per orbit of the problem's symmetries
   std::function<void(const SearchLevel&)> progress;  // called after every completed level
 };
