@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <functional>
 #include <map>
@@ -671,7 +672,9 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
       res.memoryBytes = std::max(res.memoryBytes, memory());
       if (timeUp) {
         res.stoppedBy = "time";
-        res.message = "stopped by the time limit (" + std::to_string(opt.maxSeconds) + " s) during depth " +
+        char secs[32];
+        std::snprintf(secs, sizeof secs, "%g", opt.maxSeconds);
+        res.message = "stopped by the time limit (--max-seconds " + std::string(secs) + ") during depth " +
                       std::to_string(side[0].depth + side[1].depth + 1);
         return finishStats();
       }
