@@ -121,6 +121,19 @@ CanonicalLabelling regionLabelling(const Complex& cx, const std::vector<HexId>& 
   return canonicalLabelling(subcomplex(cx, regionOf(cx, host)), true);
 }
 
+// The star of edge e of hex h when its cycle closes and it was not seen before (`seen` collects
+// canonical incidences); `ce` is the canonical incidence.
+bool freshClosedStar(const Complex& cx, HexId h, int e, std::vector<EdgeRef>& seen, EdgeRef& ce, ops::EdgeStar& st) {
+  ce = cx.canonical(EdgeRef{h, e});
+  if (std::find(seen.begin(), seen.end(), ce) != seen.end()) return false;
+  seen.push_back(ce);
+  bool closed = false;
+  cx.edgeCycle(ce, &closed);
+  if (!closed) return false;
+  st = ops::closedEdgeStar(cx, ce, "search");
+  return true;
+}
+
 // Ring splits generated forward (TK03 §4.4, the inverse of a ring collapse): every closed loop of
 // region edges, at most `maxLen` long, with two strips of quads along it — f_k and g_k share the
 // loop's k-th edge, f_k and f_k+1 share an edge across the loop (so do the g's). Each loop is
@@ -201,15 +214,11 @@ void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int max
   std::vector<EdgeRef> seen;
   for (HexId h : regionOf(cx, host))
     for (int e = 0; e < 12; ++e) {
-      EdgeRef ce = cx.canonical(EdgeRef{h, e});
-      if (std::find(seen.begin(), seen.end(), ce) != seen.end()) continue;
-      seen.push_back(ce);
-      bool closed = false;
-      cx.edgeCycle(ce, &closed);
-      if (!closed) continue;
+      EdgeRef ce;
+      ops::EdgeStar st;
+      if (!freshClosedStar(cx, h, e, seen, ce, st)) continue;
       VertexId a = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][0]), b = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][1]);
       if (b < a) std::swap(a, b);
-      auto st = ops::closedEdgeStar(cx, ce, "search");
       std::vector<QuadSide> qs;
       for (size_t k = 0; k < st.inc.size(); ++k) qs.push_back(cx.canonical(QuadSide{st.inc[k].hex, st.exitFace[k]}));
       first = ce;
@@ -265,13 +274,9 @@ std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, con
     for (int e = 0; e < 12; ++e) {
       if (use(K::RingCollapse) && (e & 2) == 0) out.push_back(makeStep(K::RingCollapse, EdgeRef{h, e}));
       if (!use(K::ChordPush) && !use(K::FaceCollapse)) continue;
-      EdgeRef ce = cx.canonical(EdgeRef{h, e});
-      if (std::find(seenEdges.begin(), seenEdges.end(), ce) != seenEdges.end()) continue;
-      seenEdges.push_back(ce);
-      bool closed = false;
-      cx.edgeCycle(ce, &closed);
-      if (!closed) continue;
-      auto st = ops::closedEdgeStar(cx, ce, "search");
+      EdgeRef ce;
+      ops::EdgeStar st;
+      if (!freshClosedStar(cx, h, e, seenEdges, ce, st)) continue;
       size_t n = st.inc.size();
       auto touches = [&](size_t k) { return inRegion(st.inc[k].hex) || inRegion(st.inc[(k + 1) % n].hex); };
       for (size_t i = 0; i < n; ++i)
