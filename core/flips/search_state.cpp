@@ -145,8 +145,8 @@ bool outside(const std::vector<uint8_t>& isHost, HexId h) { return size_t(h) < i
 
 }  // namespace
 
-void RegionEncoder::encodeFrom(const Complex& cx, const std::vector<uint8_t>& isHost, HexId start, int frame,
-                               std::vector<int64_t>& out) {
+bool RegionEncoder::encodeFrom(const Complex& cx, const std::vector<uint8_t>& isHost, HexId start, int frame,
+                               std::vector<int64_t>& out, const std::vector<int64_t>* bound) {
   const FrameTables& T = frameTables();
   ++stamp_;
   if (stamp_ == 0) {  // wrapped: clear the stamps once
@@ -162,6 +162,17 @@ void RegionEncoder::encodeFrom(const Complex& cx, const std::vector<uint8_t>& is
     hexFrame_[size_t(h)] = int8_t(fr);
     order_.push_back(h);
   };
+  // Words go out compared with `bound` as they come: the encoding stops as soon as it is larger.
+  bool tied = bound != nullptr;
+  auto emit = [&](int64_t w) {
+    if (tied) {
+      size_t i = out.size();
+      if (i >= bound->size() || w > (*bound)[i]) return false;
+      if (w < (*bound)[i]) tied = false;
+    }
+    out.push_back(w);
+    return true;
+  };
   label(start, frame);
   out.clear();
   for (size_t i = 0; i < order_.size(); ++i) {
@@ -169,43 +180,49 @@ void RegionEncoder::encodeFrom(const Complex& cx, const std::vector<uint8_t>& is
     int fr = hexFrame_[size_t(h)];
     for (int b = 0; b < 8; ++b) {
       VertexId v = cx.vertex(h, T.corner[size_t(fr)][size_t(b)]);
+      int64_t w;
       if (keepStamp_[size_t(v)] == keepGen_) {
-        out.push_back(-2 - int64_t(mapped(v)));
+        w = -2 - int64_t(mapped(v));
       } else {
         if (vertexStamp_[size_t(v)] != stamp_) {
           vertexStamp_[size_t(v)] = stamp_;
           vertexLabel_[size_t(v)] = nextVertex++;
         }
-        out.push_back(vertexLabel_[size_t(v)]);
+        w = vertexLabel_[size_t(v)];
       }
+      if (!emit(w)) return false;
     }
     for (int cf = 0; cf < 6; ++cf) {
       Gluing g = cx.gluing(h, T.face[size_t(fr)][size_t(cf)]);
       if (g.boundary() || outside(isHost, g.hex)) {
-        out.push_back(-1);
-        out.push_back(0);
+        if (!emit(-1) || !emit(0)) return false;
         continue;
       }
       int nf = T.across[size_t(((fr * 6 + cf) * 6 + g.face) * 8 + g.orient)];
       if (hexStamp_[size_t(g.hex)] != stamp_) label(g.hex, nf);
-      out.push_back(hexLabel_[size_t(g.hex)]);
-      out.push_back(T.relative[size_t(hexFrame_[size_t(g.hex)])][size_t(nf)]);
+      if (!emit(hexLabel_[size_t(g.hex)]) || !emit(T.relative[size_t(hexFrame_[size_t(g.hex)])][size_t(nf)])) return false;
     }
   }
-  out.push_back(int64_t(order_.size()));
-}
-
-Key128 RegionEncoder::key(const Complex& cx, const std::vector<uint8_t>& isHost,
-                          const std::vector<std::vector<VertexId>>& symmetries) {
-  Key128 best = key(cx, isHost);
-  for (const auto& map : symmetries) best = std::min(best, hashWords(form(cx, isHost, &map)));
-  return best;
+  if (!emit(int64_t(order_.size()))) return false;
+  return !tied || out.size() < bound->size();  // equal to the bound is no improvement
 }
 
 const std::vector<int64_t>& RegionEncoder::form(const Complex& cx, const std::vector<uint8_t>& isHost,
                                                 const std::vector<VertexId>* relabel) {
+  maps_.assign(1, relabel);
+  return minForm(cx, isHost);
+}
+
+Key128 RegionEncoder::key(const Complex& cx, const std::vector<uint8_t>& isHost,
+                          const std::vector<std::vector<VertexId>>& symmetries) {
+  maps_.assign(1, nullptr);
+  for (const auto& m : symmetries) maps_.push_back(&m);
+  return hashWords(minForm(cx, isHost));
+}
+
+const std::vector<int64_t>& RegionEncoder::minForm(const Complex& cx, const std::vector<uint8_t>& isHost) {
   const FrameTables& T = frameTables();
-  relabel_ = relabel;
+  relabel_ = nullptr;
   size_t nh = size_t(cx.hexCapacity()), nv = size_t(cx.vertexCapacity());
   if (hexStamp_.size() < nh) {
     hexStamp_.resize(nh, 0);
@@ -222,14 +239,8 @@ const std::vector<int64_t>& RegionEncoder::form(const Complex& cx, const std::ve
     keepGen_ = 1;
   }
   // Region boundary sides (mesh boundary or glued outside the region): their vertices keep their
-  // ids; the start flags are the sides with the smallest vertex set.
-  struct Start {
-    HexId h;
-    int f;
-    std::array<VertexId, 4> v;
-  };
-  std::array<VertexId, 4> minSet{};
-  std::vector<Start> starts;
+  // ids; under each vertex map, the start flags are the sides with the smallest vertex set.
+  sides_.clear();
   HexId regionSize = 0;
   for (HexId h : cx.hexes()) {
     if (outside(isHost, h)) continue;
@@ -237,69 +248,87 @@ const std::vector<int64_t>& RegionEncoder::form(const Complex& cx, const std::ve
     for (int f = 0; f < 6; ++f) {
       Gluing g = cx.gluing(h, f);
       if (!g.boundary() && !outside(isHost, g.hex)) continue;
-      std::array<VertexId, 4> v, s;
+      BoundarySide bs{h, f, {}};
       for (int p = 0; p < 4; ++p) {
-        VertexId x = cx.vertex(h, kFaceCorners[size_t(f)][size_t(p)]);
-        keepStamp_[size_t(x)] = keepGen_;
-        v[size_t(p)] = mapped(x);
+        bs.v[size_t(p)] = cx.vertex(h, kFaceCorners[size_t(f)][size_t(p)]);
+        keepStamp_[size_t(bs.v[size_t(p)])] = keepGen_;
       }
-      s = v;
-      std::sort(s.begin(), s.end());
-      if (starts.empty() || s < minSet) {
-        starts.clear();
-        minSet = s;
-      }
-      if (s == minSet) starts.push_back({h, f, v});
+      sides_.push_back(bs);
     }
   }
   best_.clear();
   if (regionSize == 0) return best_;
-  if (starts.empty()) {
+  if (sides_.empty()) {
     // A region without boundary (cut off from the host: never a local state): any encoding will do.
     for (HexId h : cx.hexes())
       if (!outside(isHost, h)) {
-        encodeFrom(cx, isHost, h, 0, best_);
+        encodeFrom(cx, isHost, h, 0, best_, nullptr);
         best_.push_back(-4);
         return best_;
       }
   }
-  auto frameOf = [&](const Start& st) {
-    // Canonical corner 0 on the smallest vertex, x toward its smaller neighbour in the quad, z inward.
-    int p0 = int(std::min_element(st.v.begin(), st.v.end()) - st.v.begin());
+  // Canonical corner 0 on the smallest (mapped) vertex, x toward its smaller neighbour, z inward.
+  auto frameOf = [&](const BoundarySide& bs, const std::array<VertexId, 4>& v) {
+    int p0 = int(std::min_element(v.begin(), v.end()) - v.begin());
     int pn = (p0 + 1) & 3, pp = (p0 + 3) & 3;
-    int p1 = st.v[size_t(pn)] < st.v[size_t(pp)] ? pn : pp, p2 = p1 == pn ? pp : pn;
-    int c0 = kFaceCorners[size_t(st.f)][size_t(p0)], c1 = kFaceCorners[size_t(st.f)][size_t(p1)],
-        c2 = kFaceCorners[size_t(st.f)][size_t(p2)];
+    int p1 = v[size_t(pn)] < v[size_t(pp)] ? pn : pp, p2 = p1 == pn ? pp : pn;
+    int c0 = kFaceCorners[size_t(bs.f)][size_t(p0)], c1 = kFaceCorners[size_t(bs.f)][size_t(p1)],
+        c2 = kFaceCorners[size_t(bs.f)][size_t(p2)];
     std::array<int8_t, 8> F{};
     for (int b = 0; b < 8; ++b) {
       int bits[3] = {cornerBit(c0, 0), cornerBit(c0, 1), cornerBit(c0, 2)};
-      for (int a = 0; a < 3; ++a) {
-        if ((b & 1) && cornerBit(c1, a) != cornerBit(c0, a)) bits[a] ^= 1;
-        if ((b & 2) && cornerBit(c2, a) != cornerBit(c0, a)) bits[a] ^= 1;
+      for (int x = 0; x < 3; ++x) {
+        if ((b & 1) && cornerBit(c1, x) != cornerBit(c0, x)) bits[x] ^= 1;
+        if ((b & 2) && cornerBit(c2, x) != cornerBit(c0, x)) bits[x] ^= 1;
       }
-      if (b & 4) bits[axisOfFace(st.f)] ^= 1;
+      if (b & 4) bits[axisOfFace(bs.f)] ^= 1;
       F[size_t(b)] = int8_t(cornerAt(bits[0], bits[1], bits[2]));
     }
     return T.indexOf(F);
   };
-  size_t bestStart = 0;
-  for (size_t i = 0; i < starts.size(); ++i) {
-    encodeFrom(cx, isHost, starts[i].h, frameOf(starts[i]), cur_);
-    if (best_.empty() || cur_ < best_) {
-      best_.swap(cur_);
-      bestStart = i;
+  const std::vector<VertexId>* bestMap = nullptr;
+  size_t bestSide = 0;
+  int bestFrame = 0;
+  // Four ids sorted by a 5-comparator network (this runs for every side under every map).
+  auto sorted4 = [](std::array<VertexId, 4> a) {
+    auto cs = [&](int i, int j) {
+      if (a[size_t(j)] < a[size_t(i)]) std::swap(a[size_t(i)], a[size_t(j)]);
+    };
+    cs(0, 1), cs(2, 3), cs(0, 2), cs(1, 3), cs(1, 2);
+    return a;
+  };
+  mappedSides_.resize(sides_.size());
+  for (const std::vector<VertexId>* m : maps_) {
+    relabel_ = m;
+    std::array<VertexId, 4> minSet{};
+    for (size_t i = 0; i < sides_.size(); ++i) {
+      auto& [v, s] = mappedSides_[i];
+      for (int p = 0; p < 4; ++p) v[size_t(p)] = mapped(sides_[i].v[size_t(p)]);
+      s = sorted4(v);
+      if (i == 0 || s < minSet) minSet = s;
+    }
+    for (size_t i = 0; i < sides_.size(); ++i) {
+      if (mappedSides_[i].second != minSet) continue;
+      int fr = frameOf(sides_[i], mappedSides_[i].first);
+      if (encodeFrom(cx, isHost, sides_[i].h, fr, cur_, best_.empty() ? nullptr : &best_)) {
+        best_.swap(cur_);
+        bestMap = m;
+        bestSide = i;
+        bestFrame = fr;
+      }
     }
   }
   // A region in several pieces: the pieces not reached are appended from their first hex (not
   // canonical, so such states may be stored twice, never merged wrongly).
   if (best_.back() < int64_t(regionSize)) {
+    relabel_ = bestMap;
     std::vector<uint8_t> reached(nh, 0);
-    encodeFrom(cx, isHost, starts[bestStart].h, frameOf(starts[bestStart]), cur_);  // marks what it reached
+    encodeFrom(cx, isHost, sides_[bestSide].h, bestFrame, cur_, nullptr);  // marks what it reached
     for (HexId h : cx.hexes())
       if (!outside(isHost, h) && hexStamp_[size_t(h)] == stamp_) reached[size_t(h)] = 1;
     for (HexId h : cx.hexes()) {
       if (outside(isHost, h) || reached[size_t(h)]) continue;
-      encodeFrom(cx, isHost, h, 0, cur_);
+      encodeFrom(cx, isHost, h, 0, cur_, nullptr);
       best_.push_back(-3);
       for (int64_t w : cur_) best_.push_back(w);
       for (HexId x : order_) reached[size_t(x)] = 1;

@@ -3,7 +3,9 @@
 // copying the complex.
 #pragma once
 #include <cstddef>
+#include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "complex/complex.hpp"
@@ -60,7 +62,20 @@ class RegionEncoder {
   Key128 key(const Complex& cx, const std::vector<uint8_t>& isHost, const std::vector<std::vector<VertexId>>& symmetries);
 
  private:
-  void encodeFrom(const Complex& cx, const std::vector<uint8_t>& inRegion, HexId start, int frame, std::vector<int64_t>& out);
+  // Encodes from a start flag into `out`; with a bound, stops early and returns false unless the
+  // result is smaller than the bound.
+  bool encodeFrom(const Complex& cx, const std::vector<uint8_t>& isHost, HexId start, int frame, std::vector<int64_t>& out,
+                  const std::vector<int64_t>* bound);
+  // The smallest encoding over the vertex maps in maps_ (nullptr: the identity) and their start flags.
+  const std::vector<int64_t>& minForm(const Complex& cx, const std::vector<uint8_t>& isHost);
+  struct BoundarySide {
+    HexId h;
+    int f;
+    std::array<VertexId, 4> v;
+  };
+  std::vector<BoundarySide> sides_;
+  std::vector<std::pair<std::array<VertexId, 4>, std::array<VertexId, 4>>> mappedSides_;  // mapped, sorted
+  std::vector<const std::vector<VertexId>*> maps_;
   std::vector<uint32_t> hexStamp_, vertexStamp_, keepStamp_;
   std::vector<int32_t> hexLabel_, vertexLabel_;
   std::vector<int8_t> hexFrame_;
