@@ -507,8 +507,8 @@ std::vector<std::vector<VertexId>> problemSymmetries(const SearchProblem& pb, co
 // Expands nodes [begin, end) of `side`: every move that applies, keeps the host and the region
 // cap, and reaches a state not yet stored there; stops at a state the other side stored. Reads
 // the indexes only (workers run in parallel; the merge after them writes).
-void expand(const SearchContext& ctx, const Side& side, const Side& other, size_t begin, size_t end, std::vector<Child>& out, int64_t& applied,
-            const std::function<bool()>& stop) {
+void expand(const SearchContext& ctx, const Side& side, const Side& other, bool fromGoal, size_t begin, size_t end,
+            std::vector<Child>& out, int64_t& applied, const std::function<bool()>& stop) {
   Walker w(side, ctx.host, ctx.opt);
   RegionEncoder enc;
   const int64_t hostCount = int64_t(ctx.host.size());
@@ -524,7 +524,9 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, size_
         continue;
       }
       ++applied;
-      bool keep = w.cx.numHexes() - hostCount <= ctx.opt.maxRegionHexes;
+      // From the goal side a move stands for its inverse step: a move without one (a ring collapse
+      // whose side quad was glued to the ring itself) is no step of a decomposition.
+      bool keep = w.cx.numHexes() - hostCount <= ctx.opt.maxRegionHexes && (!fromGoal || r.inverse);
       Key128 key;
       if (keep) {
         key = ctx.key(enc, w.cx);
@@ -646,7 +648,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
         size_t per = (e - b + size_t(threads) - 1) / size_t(threads);
         size_t lo = std::min(e, b + per * size_t(t)), hi = std::min(e, lo + per);
         try {
-          expand(ctx, me, other, lo, hi, found[size_t(t)], applied[size_t(t)], stop);
+          expand(ctx, me, other, s == 1, lo, hi, found[size_t(t)], applied[size_t(t)], stop);
         } catch (...) {
           errors[size_t(t)] = std::current_exception();
         }
