@@ -6,11 +6,11 @@
 
 #include "complex/canonical.hpp"
 #include "flips/flip.hpp"
-#include "ops/ops.hpp"
 #include "flips/fourcube.hpp"
 #include "flips/search.hpp"
 #include "flips/search_state.hpp"
 #include "ops/oplog.hpp"
+#include "ops/ops.hpp"
 
 using namespace hexdual;
 
@@ -77,8 +77,10 @@ TEST_CASE("RegionEncoder keys agree with canonical forms of the region (random l
       HexId h = region[rng() % region.size()];
       int f = int(rng() % 6);
       try {
-        if (rng() % 2) hexPush(cx, {h, f});
-        else pillow(cx, {h, f});
+        if (rng() % 2)
+          hexPush(cx, {h, f});
+        else
+          pillow(cx, {h, f});
       } catch (const Error&) {
       }
       states.push_back(cx);
@@ -96,7 +98,8 @@ TEST_CASE("RegionEncoder keys agree with canonical forms of the region (random l
   // The goal differs from the start; the flip done by its stored steps equals the goal.
   CHECK(enc.key(pb.start, isHost) != enc.key(pb.goal, isHost));
   Complex viaSteps = pb.start;
-  for (const OpStep& st : parseOpLog("v1;hexpush h0f0;facecollapse h3e8 h8f2 h4f3;facesplit h7f4 h13f2;chordpull h4").steps)
+  for (const OpStep& st :
+       parseOpLog("v1;hexpush h0f0;facecollapse h3e8 h8f2 h4f3;facesplit h7f4 h13f2;chordpull h4").steps)
     applyStep(viaSteps, st);
   CHECK(enc.key(viaSteps, isHost) == enc.key(pb.goal, isHost));
 }

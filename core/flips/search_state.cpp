@@ -71,8 +71,8 @@ namespace {
 // All steps of the encoding are lookups in these tables, computed once.
 struct FrameTables {
   std::array<std::array<int8_t, 8>, 48> corner{};
-  std::array<std::array<int8_t, 6>, 48> face{};                  // canonical face k -> actual face
-  std::array<std::array<int8_t, 48>, 48> relative{};             // index of a^-1 o b
+  std::array<std::array<int8_t, 6>, 48> face{};                      // canonical face k -> actual face
+  std::array<std::array<int8_t, 48>, 48> relative{};                 // index of a^-1 o b
   std::vector<int8_t> across = std::vector<int8_t>(48 * 6 * 6 * 8);  // neighbour's frame across canonical face k
 
   static int bitsOf(int vtk) { return cornerBit(vtk, 0) | (cornerBit(vtk, 1) << 1) | (cornerBit(vtk, 2) << 2); }
@@ -200,7 +200,8 @@ bool RegionEncoder::encodeFrom(const Complex& cx, const std::vector<uint8_t>& is
       }
       int nf = T.across[size_t(((fr * 6 + cf) * 6 + g.face) * 8 + g.orient)];
       if (hexStamp_[size_t(g.hex)] != stamp_) label(g.hex, nf);
-      if (!emit(hexLabel_[size_t(g.hex)]) || !emit(T.relative[size_t(hexFrame_[size_t(g.hex)])][size_t(nf)])) return false;
+      if (!emit(hexLabel_[size_t(g.hex)]) || !emit(T.relative[size_t(hexFrame_[size_t(g.hex)])][size_t(nf)]))
+        return false;
     }
   }
   if (!emit(int64_t(order_.size()))) return false;

@@ -2,8 +2,8 @@
 // a flat open-addressing hash set of them, and the region encoder that computes them without
 // copying the complex.
 #pragma once
-#include <cstddef>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -59,13 +59,14 @@ class RegionEncoder {
   Key128 key(const Complex& cx, const std::vector<uint8_t>& isHost) { return hashWords(form(cx, isHost)); }
   // The smallest key over the identity and the given vertex maps (symmetries of the host): one
   // key for a state and all its images under the symmetries.
-  Key128 key(const Complex& cx, const std::vector<uint8_t>& isHost, const std::vector<std::vector<VertexId>>& symmetries);
+  Key128 key(const Complex& cx, const std::vector<uint8_t>& isHost,
+             const std::vector<std::vector<VertexId>>& symmetries);
 
  private:
   // Encodes from a start flag into `out`; with a bound, stops early and returns false unless the
   // result is smaller than the bound.
-  bool encodeFrom(const Complex& cx, const std::vector<uint8_t>& isHost, HexId start, int frame, std::vector<int64_t>& out,
-                  const std::vector<int64_t>* bound);
+  bool encodeFrom(const Complex& cx, const std::vector<uint8_t>& isHost, HexId start, int frame,
+                  std::vector<int64_t>& out, const std::vector<int64_t>* bound);
   // The smallest encoding over the vertex maps in maps_ (nullptr: the identity) and their start flags.
   const std::vector<int64_t>& minForm(const Complex& cx, const std::vector<uint8_t>& isHost);
   struct BoundarySide {
@@ -80,9 +81,7 @@ class RegionEncoder {
   std::vector<int32_t> hexLabel_, vertexLabel_;
   std::vector<int8_t> hexFrame_;
   std::vector<HexId> order_;
-  VertexId mapped(VertexId v) const {
-    return relabel_ && size_t(v) < relabel_->size() ? (*relabel_)[size_t(v)] : v;
-  }
+  VertexId mapped(VertexId v) const { return relabel_ && size_t(v) < relabel_->size() ? (*relabel_)[size_t(v)] : v; }
   const std::vector<VertexId>* relabel_ = nullptr;
   std::vector<int64_t> best_, cur_;
   uint32_t stamp_ = 0, keepGen_ = 0;
