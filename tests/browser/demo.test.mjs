@@ -3,10 +3,10 @@
 // Screenshots land in build/screenshots/ (desktop 1200 px and phone 375 px wide).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { startServer, startBrowser, root, screenshotDir } from './harness.mjs';
+import { startServer, startBrowser, screenshotDir } from './harness.mjs';
+import { explorerPage, differing, cli } from './explorer_page.mjs';
 
 let server, context, page;
 const errors = [];
@@ -22,50 +22,14 @@ after(async () => {
   server?.stop();
 });
 
-function cli(...args) {
-  return execFileSync(join(root, 'build/native/hexdual'), args).toString();
-}
 function nativeInfo(kind, dims) {
   const file = `/tmp/hexdual_browser_${kind}_${dims}.hxd`;
   cli(kind, dims, '-o', file);
   return JSON.parse(cli('info', file, '--json'));
 }
 
-async function open(hash) {
-  await page.goto('about:blank');
-  await page.goto(server.url + hash);
-  await page.waitForFunction(() => window.hexdual?.ready === true, null, { timeout: 30000 });
-  await settle();
-}
-// Two animation frames: the view has drawn what the state says.
-const settle = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-const shownCounts = () => page.$$eval('[data-count]', (tds) => Object.fromEntries(tds.map((td) => [td.dataset.count, Number(td.textContent)])));
-const state = () => page.evaluate(() => {
-  const s = window.hexdual.store.get();
-  return { steps: s.steps, at: s.at, selection: s.selection, report: s.report, diagrams: s.diagrams.map((d) => d.sheet), hexes: s.mesh.counts.hexes };
-});
-const project = (hex, face) => page.evaluate(([h, f]) => window.hexdual.view.project(h, f), [hex, face]);
-const hash = () => decodeURIComponent(new URL(page.url()).hash).replace(/\+/g, ' ');
-
-// RGBA pixels of a canvas region (page coordinates, CSS px).
-async function pixels(x, y, w, h) {
-  return page.evaluate(([x, y, w, h]) => {
-    const c = window.hexdual.view.canvas;
-    const r = c.getBoundingClientRect();
-    const sx = c.width / r.width;
-    const tmp = document.createElement('canvas');
-    tmp.width = Math.round(w * sx);
-    tmp.height = Math.round(h * sx);
-    const g = tmp.getContext('2d');
-    g.drawImage(c, (x - r.left) * sx, (y - r.top) * sx, w * sx, h * sx, 0, 0, tmp.width, tmp.height);
-    return Array.from(g.getImageData(0, 0, tmp.width, tmp.height).data);
-  }, [x, y, w, h]);
-}
-function differing(a, b) {
-  let n = 0;
-  for (let i = 0; i < a.length; i += 4) if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 40) n++;
-  return n;
-}
+let open, settle, shownCounts, state, project, hash, pixels;
+before(() => ({ open, settle, shownCounts, state, project, hash, pixels } = explorerPage(page, server)));
 
 test('default page: the 3x3x3 grid with the native counts, lists and a hover id', async () => {
   await open('');
