@@ -44,11 +44,13 @@ export function createView3d(container, options = {}) {
   const geometry = { rb: null, key: null, hexSlot: null, centres: null, radii: null, hexCount: 0 };
   const solid = new THREE.Mesh(
     new THREE.BufferGeometry(),
-    new THREE.MeshStandardMaterial({ vertexColors: true, roughness: 0.7, side: THREE.DoubleSide, alphaTest: 0.5 }),
+    // Lambert and front faces: SwiftShader (software GL) spends its frame on fragments. A slice
+    // turns on both sides so the cut hexes show their insides.
+    new THREE.MeshLambertMaterial({ vertexColors: true, alphaTest: 0.5 }),
   );
   const faint = new THREE.Mesh(
     solid.geometry,
-    new THREE.MeshStandardMaterial({ vertexColors: true, transparent: true, depthWrite: false, roughness: 0.8, side: THREE.DoubleSide }),
+    new THREE.MeshLambertMaterial({ vertexColors: true, transparent: true, depthWrite: false }),
   );
   faint.renderOrder = 2;
   // The hexes the last step created, drawn again over everything while the rest is dimmed (x-ray):
@@ -56,7 +58,7 @@ export function createView3d(container, options = {}) {
   // only, so each (convex) hex draws as itself.
   const fresh = new THREE.Mesh(
     new THREE.BufferGeometry(),
-    new THREE.MeshStandardMaterial({ vertexColors: true, roughness: 0.7, transparent: true, depthWrite: false, depthTest: false }),
+    new THREE.MeshLambertMaterial({ vertexColors: true, transparent: true, depthWrite: false, depthTest: false }),
   );
   fresh.renderOrder = 2.5;
   fresh.visible = false;
@@ -532,6 +534,7 @@ export function createView3d(container, options = {}) {
         const at = box.min.getComponent(slice.axis) + slice.at * (box.max.getComponent(slice.axis) - box.min.getComponent(slice.axis));
         clipPlane.set(n, at);
       }
+      solid.material.side = slice && !view.shell ? THREE.DoubleSide : THREE.FrontSide;
       for (const obj of [solid, faint, fresh, edgeLines, ...overlay.children]) {
         obj.material.clippingPlanes = view.shell ? [] : planes;
         obj.material.needsUpdate = true;
