@@ -4,9 +4,10 @@
 // Each change stores a report: created and removed hexes, changed sheets and chords.
 import { Mesh } from '../wasm/index.js';
 
-// Bytes of wasm heap per hex while building and drawing (complex, dual, render buffers), measured
-// on grids; 2 GiB is the most a wasm32 heap can grow to.
-const BYTES_PER_HEX = 1700;
+// Bytes of wasm heap per hex: 170-190 stay allocated after the complex and its dual (grids of
+// 0.1 to 6.3 M hexes, heapBytes()), with headroom for peaks while building; a big mesh draws only
+// its shell, so render buffers add little. 2 GiB is the most a wasm32 heap can grow to.
+const BYTES_PER_HEX = 300;
 const HEAP_LIMIT = 2 ** 31;
 
 export function createEngine(store) {

@@ -9,6 +9,7 @@ import { startServer, startBrowser, screenshotDir } from './harness.mjs';
 import { explorerPage, differing, cli } from './explorer_page.mjs';
 
 let server, context, page;
+let open, settle, shownCounts, state, project, hash, pixels;
 const errors = [];
 
 before(async () => {
@@ -16,6 +17,7 @@ before(async () => {
   context = await startBrowser();
   page = await context.newPage();
   page.on('pageerror', (e) => errors.push(e.message));
+  ({ open, settle, shownCounts, state, project, hash, pixels } = explorerPage(page, server));
 });
 after(async () => {
   await context?.close();
@@ -27,9 +29,6 @@ function nativeInfo(kind, dims) {
   cli(kind, dims, '-o', file);
   return JSON.parse(cli('info', file, '--json'));
 }
-
-let open, settle, shownCounts, state, project, hash, pixels;
-before(() => ({ open, settle, shownCounts, state, project, hash, pixels } = explorerPage(page, server)));
 
 test('default page: the 3x3x3 grid with the native counts, lists and a hover id', async () => {
   await open('');
