@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates the sheet-diagram figures of docs/sheet-diagrams.md and the before/after figures of
-# docs/operations.md (needs the native build and
+# docs/operations.md (needs the native and wasm builds, and
 # rsvg-convert from Debian's librsvg2-bin). Usage: bash docs/figures.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -45,4 +45,5 @@ fig op-facecollapse-after "$T/facecollapse.hxd" 6                  # ... merge i
 fig torus-polygon docs/examples/torus-shell.hxd 0              # a torus sheet cut open: a b a^-1 b^-1
 fig klein-polygon docs/examples/klein-shell.hxd 0              # a Klein-bottle sheet: three seams, two twisted
 fig mobius-polygon docs/examples/twisted-ring.hxd 0            # a Moebius-band sheet: a boundary a boundary
+node docs/primal-figures.mjs                                   # primal before/after of each operation
 rm -rf "$T"
