@@ -5,23 +5,17 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { startServer, startBrowser, screenshotDir } from './harness.mjs';
-import { explorerPage, differing, cli } from './explorer_page.mjs';
+import { screenshotDir } from './harness.mjs';
+import { openBrowser, explorerPage, differing, cli } from './explorer_page.mjs';
 
-let server, context, page, x;
-const errors = [];
+let b, page, x, errors;
 
 before(async () => {
-  server = await startServer();
-  context = await startBrowser();
-  page = await context.newPage();
-  page.on('pageerror', (e) => errors.push(e.message));
-  x = explorerPage(page, server);
+  b = await openBrowser();
+  ({ page, errors } = b);
+  x = explorerPage(page, b.server);
 });
-after(async () => {
-  await context?.close();
-  server?.stop();
-});
+after(() => b?.close());
 
 // Whether the pixel at a page position shows one of the two greens of created hexes (lit and shaded).
 async function greenAt(p) {
@@ -128,12 +122,7 @@ test('exports: PNG with the state URL, the SVG of a diagram, every writable mesh
   // A dropped file: the start mesh as .hxd plus the steps, which replay to the same state.
   const file = '/tmp/hexdual_browser_drop2.hxd';
   cli('grid', '2x2x2', '-o', file);
-  const dropped = readFileSync(file, 'utf8');
-  await page.evaluate((text) => {
-    const dt = new DataTransfer();
-    dt.items.add(new File([text], 'cube8.hxd'));
-    for (const type of ['dragenter', 'dragover', 'drop']) document.body.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true }));
-  }, dropped);
+  await x.dropFile(readFileSync(file, 'utf8'), 'cube8.hxd');
   await page.waitForFunction(() => window.hexdual.store.get().mesh.counts.hexes === 8);
   await page.evaluate(() => window.hexdual.actions.apply('pillow h0f1'));
   assert.equal((await x.shownCounts()).hexes, 10);

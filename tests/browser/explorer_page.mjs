@@ -2,10 +2,20 @@
 // read the shown counts and the app state, project hexes to the page, read canvas pixels.
 import { execFileSync } from 'node:child_process';
 import { join } from 'node:path';
-import { root } from './harness.mjs';
+import { root, startServer, startBrowser } from './harness.mjs';
 
 export function cli(...args) {
   return execFileSync(join(root, 'build/native/hexdual'), args).toString();
+}
+
+/** A server, a browser and one page whose uncaught errors collect in `errors`. */
+export async function openBrowser() {
+  const server = await startServer();
+  const context = await startBrowser();
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  return { server, context, page, errors, close: async () => (await context.close(), server.stop()) };
 }
 
 /** Explorer helpers bound to one page and server. */
@@ -25,6 +35,12 @@ export function explorerPage(page, server) {
       const s = window.hexdual.store.get();
       return { steps: s.steps, at: s.at, selection: s.selection, report: s.report, diagrams: s.diagrams.map((d) => d.sheet), hexes: s.mesh.counts.hexes, error: s.error };
     }),
+    /** Drops a file with this text on the page, as dragging it from the desktop does. */
+    dropFile: (text, name) => page.evaluate(([text, name]) => {
+      const dt = new DataTransfer();
+      dt.items.add(new File([text], name));
+      for (const type of ['dragenter', 'dragover', 'drop']) document.body.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true }));
+    }, [text, name]),
     project: (hex, face) => page.evaluate(([h, f]) => window.hexdual.view.project(h, f), [hex, face]),
     hash: () => decodeURIComponent(new URL(page.url()).hash).replace(/\+/g, ' '),
     // RGBA pixels of a canvas region (page coordinates, CSS px).
