@@ -97,6 +97,14 @@ TEST_CASE("dual overlay: one mid-surface quad per sheet slot, chords through dua
       found = true;
   }
   CHECK(found);
+
+  // Only hexes 0 and 1 (the row y = 0): their 6 slots; the x-chord through both (3 segments), one
+  // end segment of each y-chord, both segments of their z-chords.
+  const std::vector<HexId> only{0, 1};
+  DualOverlay part = buildDualOverlay(cx, d, &only);
+  CHECK(part.sheetTriangle.size() == 12);
+  CHECK(part.chordSegment.size() == 3 + 1 + 1 + 2 + 2);
+  CHECK(part.dualVertexHex == std::vector<int32_t>{0, 1});
 }
 
 TEST_CASE("render buffers: a shell draws only the hexes seen from outside or from a cut; `always` adds hidden ones") {

@@ -78,9 +78,13 @@ val viewDualPoints(double complexAddress) {
   });
 }
 
-val viewDualOverlay(double complexAddress, double dualAddress) {
+// `only`: hex ids whose part of the overlay is wanted (undefined: all).
+val viewDualOverlay(double complexAddress, double dualAddress, val only) {
   return guardedObject([&] {
-    DualOverlay o = buildDualOverlay(complexAt(complexAddress), dualAt(dualAddress));
+    std::vector<HexId> hexes;
+    const bool some = !only.isUndefined() && !only.isNull();
+    if (some) hexes = convertJSArrayToNumberVector<int32_t>(only);
+    DualOverlay o = buildDualOverlay(complexAt(complexAddress), dualAt(dualAddress), some ? &hexes : nullptr);
     val out = val::object();
     out.set("sheetPositions", copyOut("Float32Array", o.sheetPositions));
     out.set("sheetIndices", copyOut("Uint32Array", o.sheetIndices));

@@ -256,7 +256,8 @@ export class Mesh {
    */
   renderBuffers(options?: { shrink?: number; edges?: boolean; shell?: boolean; hidden?: Uint8Array | null; always?: Iterable<number> | null }): RenderBuffers;
   dualPoints(): Float32Array;
-  dualOverlay(): DualOverlay;
+  /** With `hexes`, only their sheet quads, dual points and the chord segments between two of them. */
+  dualOverlay(options?: { hexes?: Iterable<number> | null }): DualOverlay;
   quality(): Quality;
   hexDual(): HexDual;
   /** Flips with a stored atomic decomposition that apply near the pick, for flip(name, hexes, { viaAtomic: true }). */

@@ -387,12 +387,16 @@ export class Mesh {
   dualPoints() {
     return viewCall(module().viewDualPoints(this.#live().complexAddress())).points;
   }
-  /** Sheet mid-surfaces (triangles with sheet ids), chord polylines (segments with chord ids), dual vertices. */
-  dualOverlay() {
+  /**
+   * Sheet mid-surfaces (triangles with sheet ids), chord polylines (segments with chord ids), dual
+   * vertices; with `hexes`, only their part (the chord segments between two of them).
+   */
+  dualOverlay({ hexes = null } = {}) {
     const raw = this.#live();
+    const ids = hexes === null ? null : Int32Array.from(hexes, (h) => integer('dualOverlay: hexes: hex id', h));
     const dual = raw.dualAddress();
     if (!dual) check(null);
-    return viewCall(module().viewDualOverlay(raw.complexAddress(), dual));
+    return viewCall(module().viewDualOverlay(raw.complexAddress(), dual, ids));
   }
   /** Scaled Jacobian per hex id, the inverted hexes (<= 0), and the range over live hexes. */
   quality() {

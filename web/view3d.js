@@ -365,10 +365,18 @@ export function createView3d(container, options = {}) {
     requestRender();
   }
 
+  function drawnHexIds() {
+    const th = geometry.rb.triangleHex;
+    const ids = new Int32Array(geometry.hexCount);
+    for (let k = 0; k < ids.length; k++) ids[k] = th[12 * k];
+    return ids;
+  }
+
   // ---- dual overlay (TK03 Fig. 1) ----
   function buildOverlay(mesh) {
     clearGroup(overlay);
-    const o = mesh.dualOverlay();
+    // A shell's overlay covers the drawn hexes only (all of 47^3 is 311k sheet quads).
+    const o = view.shell ? mesh.dualOverlay({ hexes: drawnHexIds() }) : mesh.dualOverlay();
     const nTri = o.sheetTriangle.length;
     const sheetColors = new Float32Array(o.sheetPositions.length);
     const cache = new Map();

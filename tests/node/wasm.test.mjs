@@ -81,6 +81,14 @@ test('render buffers of a shell: the hexes seen from outside or from a cut, plus
   assert.throws(() => m.renderBuffers({ hidden: [1] }), { message: 'renderBuffers: hidden must be a Uint8Array (one byte per hex id)' });
   assert.throws(() => m.renderBuffers({ always: [1.5] }), { message: 'renderBuffers: always: hex id must be an integer, not 1.5' });
   m.delete();
+  // The overlay of a part: hexes 0 and 1 of a 2x2x1 grid have 6 sheet quads and 9 chord segments.
+  const g = Mesh.grid(2, 2, 1);
+  const part = g.dualOverlay({ hexes: [0, 1] });
+  assert.equal(part.sheetTriangle.length, 12);
+  assert.equal(part.chordSegment.length, 9);
+  assert.deepEqual([...part.dualVertexHex], [0, 1]);
+  assert.equal(g.dualOverlay().chordSegment.length, 20);
+  g.delete();
 });
 
 test('flip places: the flips whose before side is at a hex, a quad or an edge, each applicable', () => {
