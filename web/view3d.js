@@ -486,7 +486,10 @@ export function createView3d(container, options = {}) {
       const report = state.report && state.report.key === state.meshKey ? state.report : null;
       const drawn = { slice: shell ? state.slice : null, always: shell && report ? report.created : null };
       const geomKey = `${state.meshKey}|${state.shrink}${shell && state.slice ? `|${state.slice.axis}:${state.slice.at}` : ''}`;
+      // Frames are drawn only when something here changed (other panels' changes draw nothing).
+      let dirty = false;
       if (geometry.key !== geomKey) {
+        dirty = true;
         const t0 = performance.now();
         const sameMesh = geometry.key && geometry.key.split('|')[0] === state.meshKey;
         const sameStart = geometry.key && geometry.key.split('|')[0].split(':')[0] === state.meshKey.split(':')[0];
@@ -505,6 +508,7 @@ export function createView3d(container, options = {}) {
       const pk = paintKeyOf(state);
       if (paintKey !== pk) {
         paintKey = pk;
+        dirty = true;
         paint(hexColors(state));
         showFresh(report && hasFaint ? report.created : null);
         lastSelection = null;
@@ -512,20 +516,25 @@ export function createView3d(container, options = {}) {
       if (lastSelection !== state.selection) {
         lastSelection = state.selection;
         drawMarks(state.selection, lastHover);
+        dirty = true;
       }
-      if (!state.ghosts && ghosts.children.length) clearGroup(ghosts);
+      if (!state.ghosts && ghosts.children.length) {
+        clearGroup(ghosts);
+        dirty = true;
+      }
       const ok = state.overlay ? `${geomKey}` : null;
       if (overlayKey !== ok) {
         overlayKey = ok;
+        dirty = true;
         if (ok) buildOverlay(mesh);
         else clearGroup(overlay);
       }
-      const sliceKey = state.slice ? `${state.slice.axis}:${state.slice.at}` : '';
+      const sliceKey = state.slice ? `${view.shell}:${state.slice.axis}:${state.slice.at}` : '';
       if (view.sliceKey !== sliceKey) {
         view.sliceKey = sliceKey;
         view.setSlice(state.slice);
       }
-      requestRender();
+      if (dirty) requestRender();
     },
     setHover(hover) {
       lastHover = hover;

@@ -152,6 +152,12 @@ test('a big mesh: only its shell is drawn, a selection rebuilds no geometry, a s
   await x.settle();
   assert.deepEqual((await x.state()).selection, { kind: 'sheet', id: 3 });
   assert.equal((await view()).builds, v0.builds, 'selecting a sheet rebuilt no geometry');
+  // A change the 3D view does not show (a notice) draws no frame.
+  const frames = () => page.evaluate(() => window.hexdual.view.frames);
+  const f0 = await frames();
+  await page.evaluate(() => window.hexdual.actions.set({ notice: 'nothing to draw' }));
+  await x.settle();
+  assert.equal(await frames(), f0);
   // Cutting at the middle of z draws the hexes on the cut as well (what the shell exposes).
   await page.evaluate(() => window.hexdual.actions.set({ slice: { axis: 2, at: 0.5 } }));
   await x.settle();
