@@ -1,6 +1,13 @@
 // Wasm benchmark in Node: `node bench/bench_wasm.mjs build N [REPS]` prints one JSON line with the
-// same fields as `hexdual_bench build N` (times are medians of the warm repetitions).
+// same fields as `hexdual_bench build N` (times are medians of the warm repetitions). Times are CPU
+// time of the process (user + system, `process.cpuUsage`), like the native bench's, so a loaded
+// machine does not inflate one side of a wasm/native ratio.
 import { init, Mesh } from 'hexdual';
+
+const cpuMs = () => {
+  const { user, system } = process.cpuUsage();
+  return (user + system) / 1000;
+};
 
 const [, , what, nArg, repsArg] = process.argv;
 if ((what !== 'build' && what !== 'layout') || !nArg) {
@@ -17,9 +24,9 @@ if (what === 'layout') {
   const time = (f) => {
     const times = [];
     for (let r = 0; r < reps; r++) {
-      const t0 = performance.now();
+      const t0 = cpuMs();
       f();
-      times.push(performance.now() - t0);
+      times.push(cpuMs() - t0);
     }
     times.sort((a, b) => a - b);
     return +times[Math.floor(times.length / 2)].toFixed(3);
@@ -36,11 +43,11 @@ await init();
 const build = [], dual = [];
 let sizes, bytes;
 for (let r = 0; r < reps; r++) {
-  const t0 = performance.now();
+  const t0 = cpuMs();
   const m = Mesh.grid(n, n, n);
-  const t1 = performance.now();
+  const t1 = cpuMs();
   sizes = m.dualSizes();
-  const t2 = performance.now();
+  const t2 = cpuMs();
   bytes = m.memoryBytes();
   m.delete();
   build.push(t1 - t0);
