@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -96,4 +97,43 @@ TEST_CASE("dual overlay: one mid-surface quad per sheet slot, chords through dua
       found = true;
   }
   CHECK(found);
+
+  // Only hexes 0 and 1 (the row y = 0): their 6 slots; the x-chord through both (3 segments), one
+  // end segment of each y-chord, both segments of their z-chords.
+  const std::vector<HexId> only{0, 1};
+  DualOverlay part = buildDualOverlay(cx, d, &only);
+  CHECK(part.sheetTriangle.size() == 12);
+  CHECK(part.chordSegment.size() == 3 + 1 + 1 + 2 + 2);
+  CHECK(part.dualVertexHex == std::vector<int32_t>{0, 1});
+}
+
+TEST_CASE("render buffers: a shell draws only the hexes seen from outside or from a cut; `always` adds hidden ones") {
+  Complex cx = makeGrid(3, 3, 3);
+  auto has = [](const std::vector<HexId>& v, HexId h) { return std::find(v.begin(), v.end(), h) != v.end(); };
+  DrawnHexes shell;
+  shell.shell = true;
+  std::vector<HexId> drawn = drawnHexes(cx, shell);
+  CHECK(drawn.size() == 26);
+  CHECK_FALSE(has(drawn, 13));
+  CHECK(buildRenderBuffers(cx, 0.15, false, shell).triangleHex.size() == 12 * 26);
+
+  // Cutting away the top layer (z = 2: hexes 18..26) exposes the centre hex 13 below it.
+  DrawnHexes cut = shell;
+  cut.hidden.assign(27, 0);
+  for (HexId h = 18; h < 27; ++h) cut.hidden[size_t(h)] = 1;
+  drawn = drawnHexes(cx, cut);
+  CHECK(drawn.size() == 18);
+  CHECK(has(drawn, 13));
+  CHECK_FALSE(has(drawn, 22));
+
+  // A pillow at the centre creates two interior hexes: drawn only when asked for.
+  OpResult r = applyStep(cx, "pillow h13f5");
+  CHECK(drawnHexes(cx, shell).size() == 26);
+  DrawnHexes withCreated = shell;
+  withCreated.always = r.createdHexes;
+  drawn = drawnHexes(cx, withCreated);
+  CHECK(drawn.size() == 28);
+  CHECK(has(drawn, r.createdHexes[0]));
+  CHECK(has(drawn, r.createdHexes[1]));
+  CHECK(drawnHexes(cx, {}).size() == 29);
 }

@@ -250,12 +250,18 @@ export class Mesh {
   validate(): void;
   save(format: Format, options?: { binary?: boolean }): Uint8Array;
   // ---- view data (explorer) ----
-  renderBuffers(options?: { shrink?: number; edges?: boolean }): RenderBuffers;
+  /**
+   * Which hexes: all; with `shell` only those with a face on the boundary or next to a hidden hex;
+   * `hidden[h]` != 0 leaves hex h out (one byte per hex id); `always` are drawn regardless.
+   */
+  renderBuffers(options?: { shrink?: number; edges?: boolean; shell?: boolean; hidden?: Uint8Array | null; always?: Iterable<number> | null }): RenderBuffers;
   dualPoints(): Float32Array;
-  dualOverlay(): DualOverlay;
+  /** With `hexes`, only their sheet quads, dual points and the chord segments between two of them. */
+  dualOverlay(options?: { hexes?: Iterable<number> | null }): DualOverlay;
   quality(): Quality;
   hexDual(): HexDual;
-  candidateSteps(op: string): string[];
+  /** Flips with a stored atomic decomposition that apply near the pick, for flip(name, hexes, { viaAtomic: true }). */
+  flipPlaces(near: Near): { name: FlipName; hexes: number[] }[];
   // ---- end of view data (explorer) ----
   delete(): void;
 }

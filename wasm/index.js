@@ -373,22 +373,30 @@ export class Mesh {
    * Triangles of every hex shrunk toward its own dual point (a pillow pair draws apart), with the
    * hex id and local face of each triangle (face k of the buffer: triangles 2k, 2k+1, vertices
    * 4k..4k+3 in `faceCorners` order); with `edges`, line segments of every hex edge too.
+   * Which hexes: all; with `shell` only those with a face on the boundary or next to a hidden hex;
+   * `hidden[h]` != 0 leaves hex h out; `always` (hex ids) are drawn regardless.
    */
-  renderBuffers({ shrink = 0.15, edges = false } = {}) {
+  renderBuffers({ shrink = 0.15, edges = false, shell = false, hidden = null, always = null } = {}) {
     finite('renderBuffers: shrink', shrink);
     if (shrink < 0 || shrink >= 1) throw new HexdualError('PRECONDITION', `renderBuffers: shrink must be in [0, 1), not ${shrink}`);
-    return viewCall(module().viewRenderBuffers(this.#live().complexAddress(), shrink, edges));
+    if (hidden !== null && !(hidden instanceof Uint8Array)) throw new HexdualError('PRECONDITION', 'renderBuffers: hidden must be a Uint8Array (one byte per hex id)');
+    const ids = always === null ? null : Int32Array.from(always, (h) => integer('renderBuffers: always: hex id', h));
+    return viewCall(module().viewRenderBuffers(this.#live().complexAddress(), shrink, edges, !!shell, hidden, ids));
   }
   /** Each hex's dual point (3 floats per hex id; tombstones hold 0): where the explorer shrinks it to. */
   dualPoints() {
     return viewCall(module().viewDualPoints(this.#live().complexAddress())).points;
   }
-  /** Sheet mid-surfaces (triangles with sheet ids), chord polylines (segments with chord ids), dual vertices. */
-  dualOverlay() {
+  /**
+   * Sheet mid-surfaces (triangles with sheet ids), chord polylines (segments with chord ids), dual
+   * vertices; with `hexes`, only their part (the chord segments between two of them).
+   */
+  dualOverlay({ hexes = null } = {}) {
     const raw = this.#live();
+    const ids = hexes === null ? null : Int32Array.from(hexes, (h) => integer('dualOverlay: hexes: hex id', h));
     const dual = raw.dualAddress();
     if (!dual) check(null);
-    return viewCall(module().viewDualOverlay(raw.complexAddress(), dual));
+    return viewCall(module().viewDualOverlay(raw.complexAddress(), dual, ids));
   }
   /** Scaled Jacobian per hex id, the inverted hexes (<= 0), and the range over live hexes. */
   quality() {
@@ -400,9 +408,15 @@ export class Mesh {
     if (!dual) check(null);
     return viewCall(module().viewHexDual(dual));
   }
-  /** Every step of one operation that applies anywhere in the mesh (each tried on a copy). */
-  candidateSteps(op) {
-    return viewCall(module().viewCandidates(this.#live().complexAddress(), op)).steps;
+  /**
+   * Flips with a stored atomic decomposition that apply near a hex, a quad ({ hex, face }) or an
+   * edge ({ hex, edge }): [{ name, hexes }], each ready for flip(name, hexes, { viaAtomic: true }).
+   */
+  flipPlaces(near) {
+    const hex = integer('flipPlaces: near.hex', near?.hex);
+    const kind = near.face !== undefined ? 'quad' : near.edge !== undefined ? 'edge' : 'hex';
+    const local = kind === 'quad' ? integer('flipPlaces: near.face', near.face) : kind === 'edge' ? integer('flipPlaces: near.edge', near.edge) : -1;
+    return viewCall(module().viewFlipPlaces(this.#live().complexAddress(), hex, kind, local)).places.map((p) => ({ name: p.name, hexes: [...p.hexes] }));
   }
   // ---- end of view data (explorer) ----
 

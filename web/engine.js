@@ -4,9 +4,10 @@
 // Each change stores a report: created and removed hexes, changed sheets and chords.
 import { Mesh } from '../wasm/index.js';
 
-// Bytes of wasm heap per hex while building and drawing (complex, dual, render buffers), measured
-// on grids; 2 GiB is the most a wasm32 heap can grow to.
-const BYTES_PER_HEX = 1700;
+// Bytes of wasm heap per hex: 170-190 stay allocated after the complex and its dual (grids of
+// 0.1 to 6.3 M hexes, heapBytes()), with headroom for peaks while building; a big mesh draws only
+// its shell, so render buffers add little. 2 GiB is the most a wasm32 heap can grow to.
+const BYTES_PER_HEX = 300;
 const HEAP_LIMIT = 2 ** 31;
 
 export function createEngine(store) {
@@ -112,6 +113,22 @@ export function createEngine(store) {
       hdKey = meshKey;
       store.set({ steps, at, meshKey, report: diffReport(before, after, result, step, meshKey), quality: s.colorBy === 'quality' ? s.mesh.quality() : null });
     },
+    /**
+     * Applies cubical flip `name` to `hexes` as its verified atomic steps, which join the timeline
+     * like typed steps (so the URL replays them). Throws on error, leaving the mesh unchanged.
+     */
+    applyFlip(name, hexes) {
+      const s = store.get();
+      const before = engine.hexDual();
+      const reports = s.mesh.flip(name, hexes, { viaAtomic: true });
+      const after = hexDualOf(s.mesh);
+      const steps = [...s.steps.slice(0, s.at), ...reports.map((r) => r.step)];
+      const meshKey = key(s.mesh, steps.length);
+      hd = after;
+      hdKey = meshKey;
+      const label = `flip ${name} at ${hexes.map((h) => 'h' + h).join(' ')} (${reports.length} steps)`;
+      store.set({ steps, at: steps.length, meshKey, report: diffReport(before, after, null, label, meshKey), quality: s.colorBy === 'quality' ? s.mesh.quality() : null });
+    },
     /** Moves to step k of the current list (0 = the start mesh). */
     goTo(k) {
       const s = store.get();
@@ -159,12 +176,6 @@ export function createEngine(store) {
       hd = null;
       store.set(stop > 0 ? { steps: [...steps], at: stop, meshKey: key(s.mesh, stop) } : { steps: [...steps], at: 0 });
       return '';
-    },
-    /** The mesh changed outside the timeline (a flip at a place): redraw; earlier steps are forgotten. */
-    touch() {
-      const s = store.get();
-      hd = null;
-      store.set({ steps: [], at: 0, meshKey: key(s.mesh, 0), report: null });
     },
     fileBytes: () => fileBytes,
   };

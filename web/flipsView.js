@@ -32,15 +32,8 @@ export function createFlipsView(root, actions, store) {
   }
   $('#flip-load').addEventListener('click', () => load(select.value));
   $('#flip-apply').addEventListener('click', () => {
-    const s = store.get();
     const hexes = ($('#flip-at').value.match(/\d+/g) || []).map(Number);
-    if (typeof s.mesh.flip !== 'function') return actions.set({ error: 'applying a flip at a place needs the package\'s mesh.flip(name, hexes); not available in this build' });
-    try {
-      s.mesh.flip(select.value, hexes, { viaAtomic: true });
-      actions.engine.touch(); // the flip is not an op-log step: the timeline cannot replay it
-    } catch (e) {
-      actions.set({ error: `flip ${select.value}: ${e.message}` });
-    }
+    actions.applyFlip(select.value, hexes);
   });
 
   function showAfter(f) {

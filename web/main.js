@@ -90,6 +90,10 @@ const actions = {
     if (!step) return store.set({ error: 'type an operation step, e.g. pillow h13f5' });
     changeMesh(() => engine.applyStep(step), `${step}: `);
   },
+  /** Applies a cubical flip at a place (hex ids of its before side) as its atomic steps. */
+  applyFlip(name, hexes) {
+    changeMesh(() => engine.applyFlip(name, hexes), `flip ${name} at ${hexes.map((h) => 'h' + h).join(' ')}: `);
+  },
   goTo(k) {
     const s = store.get();
     if (k < 0 || k > s.steps.length || k === s.at) return;

@@ -5,7 +5,9 @@ import { sheetColor, chordColor } from './colors.js';
 
 const BASE = [184, 196, 214];
 const ACCENT = [255, 122, 0];
-const CREATED = [43, 182, 115];
+// Created hexes alternate two greens, so a pillow's pair (or a blind chord's) reads as two hexes.
+const CREATED = [20, 200, 70];
+const CREATED_DARK = [0, 110, 30];
 const INVERTED = [214, 0, 170];
 
 function cssToRgb(css) {
@@ -55,7 +57,7 @@ export function selectedHexes(s) {
 export function hexColors(s) {
   const members = selectedHexes(s);
   const focus = s.focus ? new Set(s.focus.hexes) : null;
-  const created = s.report && s.report.key === s.meshKey ? new Set(s.report.created) : null;
+  const created = s.report && s.report.key === s.meshKey ? new Map(s.report.created.map((h, i) => [h, i])) : null;
   const closed = s.mesh.counts.boundaryQuads === 0;
   const quality = s.colorBy === 'quality' ? s.quality : null;
   const selColor = members ? cssToRgb(s.selection.kind === 'sheet' ? sheetColor(s.selection.id) : chordColor(s.selection.id)) : null;
@@ -70,7 +72,7 @@ export function hexColors(s) {
     if (closed && !members && !focus) a = 80;
     if (focus && focus.has(h)) (c = [90, 140, 230]), (a = 255);
     if (members && members.has(h)) (c = selColor), (a = 255);
-    if (created && created.has(h)) (c = CREATED), (a = 255);
+    if (created && created.has(h)) (c = created.get(h) % 2 ? CREATED_DARK : CREATED), (a = 255);
     if (h === selHex) (c = ACCENT), (a = 255);
     out[0] = c[0], out[1] = c[1], out[2] = c[2], out[3] = a;
     return out;

@@ -1,6 +1,6 @@
-// The operation palette: the steps the engine says apply at the selection (candidates), each with
-// a one-line explanation and its Δ(V,E,F,H); one click applies. Typed steps work too; errors show
-// next to the palette.
+// The operation palette: the steps the engine says apply at the selection (mesh.candidates with
+// `near`), each with a one-line explanation and its Δ(V,E,F,H), then the cubical flips whose before
+// side is there (mesh.flipPlaces); one click applies. Typed steps work too; errors show next to it.
 import { formatSelection } from './selection.js';
 
 const OPS = {
@@ -14,11 +14,6 @@ const OPS = {
   facecollapse: ['collapses two quads of an edge cycle into one (TK03 §4.1)', '−2,−2,0,0'],
   facesplit: ['splits two quads on the same 4 vertices apart', '+2,+2,0,0'],
 };
-const ALL_OPS = Object.keys(OPS);
-// Without the package's candidates(op, {near}), every op is enumerated over the whole mesh: only
-// affordable on small meshes.
-const ENUMERATE_MAX_HEXES = 3000;
-
 function nearOf(sel) {
   if (sel.kind === 'hex') return { hex: sel.hex };
   if (sel.kind === 'quad') return { hex: sel.hex, face: sel.face };
@@ -34,60 +29,51 @@ export function createPalette(root, actions) {
   $('#op-apply').addEventListener('click', apply);
   input.addEventListener('keydown', (e) => e.key === 'Enter' && apply());
   list.addEventListener('click', (e) => {
-    const li = e.target.closest('li[data-step]');
-    if (li) actions.apply(li.dataset.step);
+    const li = e.target.closest('li[data-step], li[data-flip]');
+    if (li?.dataset.step) actions.apply(li.dataset.step);
+    else if (li) actions.applyFlip(li.dataset.flip, li.dataset.hexes.split(',').map(Number));
   });
-  let allKey = null, all = [];
   let shownKey = null;
 
-  function enumerate(mesh) {
-    const out = [];
-    for (const op of ALL_OPS) {
-      try {
-        out.push(...mesh.candidateSteps(op));
-      } catch {
-        // an operation the engine does not enumerate: nothing to offer for it
-      }
-    }
-    return out;
-  }
-
-  /** Candidate steps at the selection: [{ step, why, delta }]. */
+  /** Candidate steps at the selection from the engine: [{ step }], or a note saying why none. */
   function candidatesFor(s) {
     const sel = s.selection;
     const near = sel && nearOf(sel);
-    if (!near) return { items: [], note: 'Select a quad, an edge or a hex to see the operations that apply there.' };
-    const m = s.mesh;
-    if (typeof m.candidates === 'function') {
-      try {
-        const found = m.candidates(undefined, { near });
-        return { items: found.map((c) => (typeof c === 'string' ? { step: c } : c)) };
-      } catch {
-        // fall through to enumeration
-      }
+    if (!near) return { items: [], flips: [], note: 'Select a quad, an edge or a hex to see the operations that apply there.' };
+    try {
+      const items = s.mesh.candidates(undefined, { near }).map((step) => ({ step }));
+      const flips = s.mesh.flipPlaces(near);
+      return { items, flips };
+    } catch (e) {
+      return { items: [], flips: [], note: `candidates at ${formatSelection(sel)}: ${e.message}` };
     }
-    if (m.counts.hexes > ENUMERATE_MAX_HEXES) return { items: [], note: `${m.counts.hexes} hexes: type a step (e.g. pillow ${formatSelection(sel)})` };
-    if (allKey !== s.meshKey) {
-      allKey = s.meshKey;
-      all = enumerate(m);
-    }
-    const exact = formatSelection(sel);
-    const re = new RegExp(`\\bh${sel.hex}(?![0-9])`);
-    const items = all.filter((step) => re.test(step)).map((step) => ({ step, exact: step.split(' ').includes(exact) }));
-    items.sort((a, b) => Number(b.exact) - Number(a.exact));
-    return { items };
+  }
+
+  function flipItem(place) {
+    const li = document.createElement('li');
+    li.className = 'flip';
+    li.dataset.flip = place.name;
+    li.dataset.hexes = place.hexes.join(',');
+    const at = place.hexes.map((h) => 'h' + h).join(' ');
+    li.innerHTML = '<span class="step"></span><span class="delta"></span><span class="why"></span>';
+    li.querySelector('.step').textContent = `flip ${place.name} at ${at}`;
+    const f = actions.flips.find((x) => x.name === place.name);
+    li.querySelector('.delta').textContent = f ? `${f.steps.length} steps` : '';
+    li.querySelector('.why').textContent = `cubical flip: replaces these ${place.hexes.length} hex${place.hexes.length > 1 ? 'es' : ''} by the other side of the 4-cube, as its verified atomic steps`;
+    li.title = `apply flip ${place.name} at ${at}`;
+    return li;
   }
 
   return {
     update(s) {
       if (!s.mesh) return;
-      $('#op-error').textContent = s.error && /^[a-z]+ h\d/.test(s.error) ? s.error : '';
+      $('#op-error').textContent = s.error && /^([a-z]+ h\d|flip )/.test(s.error) ? s.error : '';
       const key = `${s.meshKey}|${formatSelection(s.selection)}`;
       if (key === shownKey) return;
       shownKey = key;
       if (s.selection && 'hex' in s.selection && !input.value) input.placeholder = `pillow ${formatSelection(s.selection)}`;
-      const { items, note } = candidatesFor(s);
-      if (!items.length) {
+      const { items, flips, note } = candidatesFor(s);
+      if (!items.length && !flips.length) {
         list.replaceChildren(Object.assign(document.createElement('li'), { className: 'empty', textContent: note || `nothing applies at ${formatSelection(s.selection)}` }));
         return;
       }
@@ -97,13 +83,14 @@ export function createPalette(root, actions) {
           const [why, delta] = OPS[op] || ['', ''];
           const li = document.createElement('li');
           li.dataset.step = c.step;
-          const d = c.delta ? (Array.isArray(c.delta) ? c.delta.join(',') : String(c.delta)) : delta;
+          const d = delta;
           li.innerHTML = `<span class="step"></span><span class="delta">Δ(${d})</span><span class="why"></span>`;
           li.querySelector('.step').textContent = c.step;
-          li.querySelector('.why').textContent = c.why || c.explanation || why;
+          li.querySelector('.why').textContent = why;
           li.title = `apply ${c.step}`;
           return li;
         }),
+        ...flips.map(flipItem),
       );
     },
   };

@@ -130,9 +130,14 @@ export function createPanel(root, actions, view) {
     const mesh = window.hexdual.store.get().mesh;
     actions.set({ colorBy: on ? 'quality' : 'plain', quality: on ? mesh.quality() : null });
   });
+  // One slice per animation frame: a big mesh rebuilds its shell for each position of the slider.
+  let sliceFrame = 0;
   const slice = () => {
-    const axis = $('#slice-axis').value;
-    actions.set({ slice: axis === '' ? null : { axis: Number(axis), at: Number($('#slice-at').value) } });
+    cancelAnimationFrame(sliceFrame);
+    sliceFrame = requestAnimationFrame(() => {
+      const axis = $('#slice-axis').value;
+      actions.set({ slice: axis === '' ? null : { axis: Number(axis), at: Number($('#slice-at').value) } });
+    });
   };
   $('#slice-axis').addEventListener('change', slice);
   $('#slice-at').addEventListener('input', slice);

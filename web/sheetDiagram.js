@@ -176,7 +176,9 @@ function createPanel(host, actions, spec) {
     copy.setAttribute('height', String(Math.round(r.height)));
     const blob = new Blob([new XMLSerializer().serializeToString(copy)], { type: 'image/svg+xml' });
     const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(blob), download: `sheet-${spec.sheet}.svg` });
+    document.body.appendChild(a); // a detached link does not download in every browser
     a.click();
+    a.remove();
     setTimeout(() => URL.revokeObjectURL(a.href), 1000);
   }
 

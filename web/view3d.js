@@ -9,6 +9,9 @@ import { sheetColor, chordColor } from './colors.js';
 import { hexColors, paintKeyOf } from './paint.js';
 
 const EDGE_LINES_MAX_HEXES = 8000;
+// Above this many hexes only the shell is drawn (hexes with a face on the boundary or on the cut of
+// the slicing plane) plus the hexes the last step created: 47^3 draws 13k hexes, not 104k.
+export const SHELL_MIN_HEXES = 20000;
 const ACCENT = new THREE.Color('#ff7a00');
 
 function rgb(css) {
@@ -41,18 +44,29 @@ export function createView3d(container, options = {}) {
   const geometry = { rb: null, key: null, hexSlot: null, centres: null, radii: null, hexCount: 0 };
   const solid = new THREE.Mesh(
     new THREE.BufferGeometry(),
-    new THREE.MeshStandardMaterial({ vertexColors: true, roughness: 0.7, side: THREE.DoubleSide, alphaTest: 0.5 }),
+    // Lambert and front faces: SwiftShader (software GL) spends its frame on fragments. A slice
+    // turns on both sides so the cut hexes show their insides.
+    new THREE.MeshLambertMaterial({ vertexColors: true, alphaTest: 0.5 }),
   );
   const faint = new THREE.Mesh(
     solid.geometry,
-    new THREE.MeshStandardMaterial({ vertexColors: true, transparent: true, depthWrite: false, roughness: 0.8, side: THREE.DoubleSide }),
+    new THREE.MeshLambertMaterial({ vertexColors: true, transparent: true, depthWrite: false }),
   );
   faint.renderOrder = 2;
+  // The hexes the last step created, drawn again over everything while the rest is dimmed (x-ray):
+  // a change deep inside is otherwise washed out by the faint layers in front of it. Front faces
+  // only, so each (convex) hex draws as itself.
+  const fresh = new THREE.Mesh(
+    new THREE.BufferGeometry(),
+    new THREE.MeshLambertMaterial({ vertexColors: true, transparent: true, depthWrite: false, depthTest: false }),
+  );
+  fresh.renderOrder = 2.5;
+  fresh.visible = false;
   const edgeLines = new THREE.LineSegments(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0x44506a, transparent: true, opacity: 0.45 }));
   const marks = new THREE.Group(); // selected quad / edge and hover
   const overlay = new THREE.Group();
   const ghosts = new THREE.Group();
-  scene.add(solid, faint, edgeLines, overlay, ghosts, marks);
+  scene.add(solid, faint, fresh, edgeLines, overlay, ghosts, marks);
   let fitted = null;
   let paintKey = null;
   let overlayKey = null;
@@ -117,9 +131,32 @@ export function createView3d(container, options = {}) {
     Object.assign(geometry, { hexSlot, centres, radii, hexCount: n });
   }
 
-  function rebuild(mesh, shrink) {
-    const big = mesh.counts.hexes > EDGE_LINES_MAX_HEXES;
-    const rb = mesh.renderBuffers({ shrink, edges: !big });
+  // Hex ids on the far side of the slicing plane (shell mode cuts by leaving them out).
+  function hiddenBySlice(mesh, slice) {
+    const c = mesh.hexCenters();
+    const n = c.length / 3;
+    let lo = Infinity, hi = -Infinity;
+    for (let h = 0; h < n; h++) {
+      const v = c[3 * h + slice.axis]; // NaN for removed hexes: never hidden, never the range
+      if (v < lo) lo = v;
+      if (v > hi) hi = v;
+    }
+    const at = lo + slice.at * (hi - lo);
+    const hidden = new Uint8Array(n);
+    for (let h = 0; h < n; h++) hidden[h] = c[3 * h + slice.axis] > at ? 1 : 0;
+    return hidden;
+  }
+
+  function rebuild(mesh, shrink, drawn) {
+    const shell = mesh.counts.hexes >= SHELL_MIN_HEXES;
+    const big = shell || mesh.counts.hexes > EDGE_LINES_MAX_HEXES;
+    const rb = mesh.renderBuffers({
+      shrink, edges: !big, shell,
+      hidden: shell && drawn.slice ? hiddenBySlice(mesh, drawn.slice) : null,
+      always: drawn.always,
+    });
+    view.shell = shell;
+    view.builds++;
     geometry.rb = rb;
     const g = new THREE.BufferGeometry();
     g.setAttribute('position', new THREE.BufferAttribute(rb.positions, 3));
@@ -156,6 +193,21 @@ export function createView3d(container, options = {}) {
     faint.visible = hasFaint;
   }
 
+  // Shares the solid's attributes; only the index lists the created hexes' triangles.
+  function showFresh(created) {
+    const slot = (h) => (h < geometry.hexSlot.length ? geometry.hexSlot[h] : -1);
+    const ks = (created || []).map(slot).filter((k) => k >= 0);
+    fresh.visible = ks.length > 0;
+    if (!fresh.visible) return;
+    const src = geometry.rb.indices;
+    const idx = new Uint32Array(36 * ks.length);
+    ks.forEach((k, i) => idx.set(src.subarray(36 * k, 36 * k + 36), 36 * i));
+    const g = new THREE.BufferGeometry();
+    for (const name of ['position', 'normal', 'color']) g.setAttribute(name, solid.geometry.getAttribute(name));
+    g.setIndex(new THREE.BufferAttribute(idx, 1));
+    fresh.geometry = g;
+  }
+
   // ---- picking ----
   const ray = new THREE.Raycaster();
   function rayHitsTriangle(o, d, p, i0, i1, i2) {
@@ -177,7 +229,7 @@ export function createView3d(container, options = {}) {
   }
 
   function visibleHex(k) {
-    if (!view.slice) return true;
+    if (!view.slice || view.shell) return true;
     const c = geometry.centres;
     return clipPlane.distanceToPoint(new THREE.Vector3(c[3 * k], c[3 * k + 1], c[3 * k + 2])) >= 0;
   }
@@ -274,8 +326,15 @@ export function createView3d(container, options = {}) {
     // Slightly inside the face outline and lifted off it so it never z-fights.
     const n = new THREE.Vector3(...geometry.rb.normals.slice(3 * base, 3 * base + 3));
     const size = pts[0].distanceTo(pts[2]);
-    const lifted = pts.map((p) => p.clone().lerp(centre, 0.12).addScaledVector(n, 0.01 * size));
-    const g = new THREE.BufferGeometry().setFromPoints([lifted[0], lifted[1], lifted[2], lifted[0], lifted[2], lifted[3]]);
+    // A frame, not a filled quad: what a step puts at the quad (a pillow's hexes) stays visible.
+    const outer = pts.map((p) => p.clone().lerp(centre, 0.06).addScaledVector(n, 0.01 * size));
+    const inner = pts.map((p) => p.clone().lerp(centre, 0.3).addScaledVector(n, 0.01 * size));
+    const tri = [];
+    for (let q = 0; q < 4; q++) {
+      const r = (q + 1) & 3;
+      tri.push(outer[q], outer[r], inner[r], outer[q], inner[r], inner[q]);
+    }
+    const g = new THREE.BufferGeometry().setFromPoints(tri);
     const m = new THREE.Mesh(g, new THREE.MeshBasicMaterial({ color, side: THREE.DoubleSide, transparent: opacity < 1, opacity, depthTest: false }));
     m.renderOrder = 5;
     marks.add(m);
@@ -306,10 +365,18 @@ export function createView3d(container, options = {}) {
     requestRender();
   }
 
+  function drawnHexIds() {
+    const th = geometry.rb.triangleHex;
+    const ids = new Int32Array(geometry.hexCount);
+    for (let k = 0; k < ids.length; k++) ids[k] = th[12 * k];
+    return ids;
+  }
+
   // ---- dual overlay (TK03 Fig. 1) ----
   function buildOverlay(mesh) {
     clearGroup(overlay);
-    const o = mesh.dualOverlay();
+    // A shell's overlay covers the drawn hexes only (all of 47^3 is 311k sheet quads).
+    const o = view.shell ? mesh.dualOverlay({ hexes: drawnHexIds() }) : mesh.dualOverlay();
     const nTri = o.sheetTriangle.length;
     const sheetColors = new Float32Array(o.sheetPositions.length);
     const cache = new Map();
@@ -404,6 +471,8 @@ export function createView3d(container, options = {}) {
     pickMode: 'auto',
     slice: null,
     frames: 0,
+    builds: 0,
+    shell: false,
     lastFrameMs: 0,
     lastBuildMs: 0,
     canvas: el,
@@ -412,46 +481,60 @@ export function createView3d(container, options = {}) {
     update(state) {
       const mesh = state.mesh;
       if (!mesh) return;
-      const geomKey = `${state.meshKey}|${state.shrink}`;
+      // A shell also depends on the slice (what it exposes) and on the hexes the last step created.
+      const shell = mesh.counts.hexes >= SHELL_MIN_HEXES;
+      const report = state.report && state.report.key === state.meshKey ? state.report : null;
+      const drawn = { slice: shell ? state.slice : null, always: shell && report ? report.created : null };
+      const geomKey = `${state.meshKey}|${state.shrink}${shell && state.slice ? `|${state.slice.axis}:${state.slice.at}` : ''}`;
+      // Frames are drawn only when something here changed (other panels' changes draw nothing).
+      let dirty = false;
       if (geometry.key !== geomKey) {
+        dirty = true;
         const t0 = performance.now();
-        const sameMesh = geometry.key && geometry.key.split('|')[0].split(':')[0] === state.meshKey.split(':')[0];
-        prevRb = sameMesh ? geometry.rb : null;
-        rebuild(mesh, state.shrink);
+        const sameMesh = geometry.key && geometry.key.split('|')[0] === state.meshKey;
+        const sameStart = geometry.key && geometry.key.split('|')[0].split(':')[0] === state.meshKey.split(':')[0];
+        if (!sameMesh) prevRb = sameStart ? geometry.rb : null;
+        rebuild(mesh, state.shrink, drawn);
         geometry.key = geomKey;
         if (fitted !== state.meshKey.split(':')[0]) {
           fitted = state.meshKey.split(':')[0];
           if (state.camera) view.setCamera(state.camera);
           else fit(geometry.rb.positions);
         }
-        const report = state.report;
-        showGhosts(state.ghosts && report && report.key === state.meshKey ? prevRb : null, report?.removed);
+        if (!sameMesh) showGhosts(state.ghosts && report ? prevRb : null, report?.removed);
         if (!state.ghosts) clearGroup(ghosts);
         view.lastBuildMs = performance.now() - t0;
       }
       const pk = paintKeyOf(state);
       if (paintKey !== pk) {
         paintKey = pk;
+        dirty = true;
         paint(hexColors(state));
+        showFresh(report && hasFaint ? report.created : null);
         lastSelection = null;
       }
       if (lastSelection !== state.selection) {
         lastSelection = state.selection;
         drawMarks(state.selection, lastHover);
+        dirty = true;
       }
-      if (!state.ghosts && ghosts.children.length) clearGroup(ghosts);
+      if (!state.ghosts && ghosts.children.length) {
+        clearGroup(ghosts);
+        dirty = true;
+      }
       const ok = state.overlay ? `${geomKey}` : null;
       if (overlayKey !== ok) {
         overlayKey = ok;
+        dirty = true;
         if (ok) buildOverlay(mesh);
         else clearGroup(overlay);
       }
-      const sliceKey = state.slice ? `${state.slice.axis}:${state.slice.at}` : '';
+      const sliceKey = state.slice ? `${view.shell}:${state.slice.axis}:${state.slice.at}` : '';
       if (view.sliceKey !== sliceKey) {
         view.sliceKey = sliceKey;
         view.setSlice(state.slice);
       }
-      requestRender();
+      if (dirty) requestRender();
     },
     setHover(hover) {
       lastHover = hover;
@@ -468,8 +551,9 @@ export function createView3d(container, options = {}) {
         const at = box.min.getComponent(slice.axis) + slice.at * (box.max.getComponent(slice.axis) - box.min.getComponent(slice.axis));
         clipPlane.set(n, at);
       }
-      for (const obj of [solid, faint, edgeLines, ...overlay.children]) {
-        obj.material.clippingPlanes = planes;
+      solid.material.side = slice && !view.shell ? THREE.DoubleSide : THREE.FrontSide;
+      for (const obj of [solid, faint, fresh, edgeLines, ...overlay.children]) {
+        obj.material.clippingPlanes = view.shell ? [] : planes;
         obj.material.needsUpdate = true;
       }
       requestRender();
@@ -506,6 +590,10 @@ export function createView3d(container, options = {}) {
     pickAt: (x, y, mode = view.pickMode) => classify(pickAt(x, y), mode),
     get triangleCount() {
       return geometry.rb ? geometry.rb.triangleHex.length : 0;
+    },
+    /** Hexes drawn over the faint pass (the last step's created hexes while the rest is dimmed). */
+    get freshCount() {
+      return fresh.visible ? fresh.geometry.index.count / 36 : 0;
     },
     get ghostCount() {
       return ghosts.children.length;

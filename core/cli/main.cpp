@@ -45,6 +45,7 @@ const char* kUsage =
     "                                            apply a flip to the named hexes\n"
     "  hexdual flip verify --all [--json]        check every stored decomposition in host meshes\n"
     "  hexdual flip search NAME --max-depth D [--max-seconds S] [--max-states N] [--ops a,b]\n"
+    "                   [--threads T] [--max-memory MB] [--max-region H] [--ring-split L] [--symmetry]\n"
     "                                            search atomic sequences for a flip\n"
     "Reading (every command): .vtk (legacy 2.0-5.1), .vtu, .msh (2.2, 4.1), .mesh, .meshb, .hxd, any of\n"
     "them gzipped; --hexes-only reads the hexahedra of a file that also has tets, prisms or pyramids.\n";
@@ -52,11 +53,13 @@ const char* kUsage =
 struct Args {
   std::vector<std::string> positional;
   std::string output, ops, at, local, jsonDir, svgDir;
-  bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false;
+  bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false;
   int sheet = -1, rings = 2;
   int maxDepth = 4;
   double maxSeconds = 60;
   int64_t maxStates = 200000;
+  int threads = 1, maxRegion = 16, ringSplit = 8;
+  double maxMemory = 4096;
 };
 
 Args parseArgs(int argc, char** argv, int from) {
@@ -84,7 +87,8 @@ Args parseArgs(int argc, char** argv, int from) {
     } else if (s == "--ops") {
       if (i + 1 >= argc) throw Error("--ops needs an operation log");
       a.ops = argv[++i];
-    } else if (s == "--at" || s == "--max-depth" || s == "--max-seconds" || s == "--max-states") {
+    } else if (s == "--at" || s == "--max-depth" || s == "--max-seconds" || s == "--max-states" || s == "--threads" ||
+               s == "--max-memory" || s == "--max-region" || s == "--ring-split") {
       if (i + 1 >= argc) throw Error(s + " needs a value");
       std::string v = argv[++i];
       try {
@@ -92,9 +96,15 @@ Args parseArgs(int argc, char** argv, int from) {
         if (s == "--max-depth") a.maxDepth = std::stoi(v);
         if (s == "--max-seconds") a.maxSeconds = std::stod(v);
         if (s == "--max-states") a.maxStates = std::stoll(v);
+        if (s == "--threads") a.threads = std::stoi(v);
+        if (s == "--max-memory") a.maxMemory = std::stod(v);
+        if (s == "--max-region") a.maxRegion = std::stoi(v);
+        if (s == "--ring-split") a.ringSplit = std::stoi(v);
       } catch (const std::exception&) {
         throw Error(s + " needs a number, not '" + v + "'");
       }
+    } else if (s == "--symmetry") {
+      a.symmetry = true;
     } else if (s == "--via-atomic") {
       a.viaAtomic = true;
     } else if (s == "--all") {
@@ -258,6 +268,15 @@ int runFlip(const Args& a) {
     o.maxDepth = a.maxDepth;
     o.maxSeconds = a.maxSeconds;
     o.maxStates = a.maxStates;
+    o.threads = a.threads;
+    o.maxMemoryMB = a.maxMemory;
+    o.maxRegionHexes = a.maxRegion;
+    o.symmetry = a.symmetry;
+    o.ringSplitMax = a.ringSplit;
+    o.progress = [](const SearchLevel& l) {
+      std::cerr << "depth " << l.depth << (l.side ? " from the goal: " : " from the start: ") << l.newStates << " new states, "
+                << l.storedStates << " stored, " << l.movesApplied << " moves applied, " << l.seconds << " s\n";
+    };
     for (const std::string& op : splitList(a.ops)) o.ops.push_back(opNamed(op, "flip search --ops"));
     std::string name = a.positional[1];
     SearchProblem pb = problemFor(name);
@@ -266,7 +285,9 @@ int runFlip(const Args& a) {
     std::string label = name + (a.ops == "chordpush,chordpull" ? "/chord-only" : "");
     std::cout << formatDecomposition(label, r, o) << "\n";
     std::cerr << (r.found ? "found " + std::to_string(r.steps.size()) + " steps (verified)" : "none found") << "; stopped by "
-              << r.stoppedBy << " after " << r.statesExplored << " states\n";
+              << r.stoppedBy << " after " << r.statesExplored << " states, " << r.movesApplied << " moves applied, "
+              << (r.memoryBytes >> 20) << " MB" << (r.symmetries > 1 ? ", " + std::to_string(r.symmetries) + " symmetries" : "") << "\n";
+    if (!r.message.empty()) std::cerr << r.message << "\n";
     return 0;
   }
   // hexdual flip NAME --at H1,H2 FILE -o OUT [--via-atomic]

@@ -1,18 +1,21 @@
 #include "flips/search.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
+#include <atomic>
 #include <chrono>
-#include <deque>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <functional>
 #include <map>
 #include <optional>
-#include <unordered_map>
+#include <thread>
 
 #include "complex/builders.hpp"
 #include "complex/canonical.hpp"
 #include "flips/flip.hpp"
 #include "flips/fourcube.hpp"
+#include "flips/search_state.hpp"
 #include "ops/oplog.hpp"
 #include "ops/support.hpp"
 
@@ -118,16 +121,121 @@ CanonicalLabelling regionLabelling(const Complex& cx, const std::vector<HexId>& 
   return canonicalLabelling(subcomplex(cx, regionOf(cx, host)), true);
 }
 
-struct Node {
-  std::vector<int64_t> key;
-  Complex cx;
-  int parent = -1;      // index in the same side's node list
-  OpStep step;          // the step from the parent (ids of the parent's complex)
-  int depth = 0;
-};
+// The star of edge e of hex h when its cycle closes and it was not seen before (`seen` collects
+// canonical incidences); `ce` is the canonical incidence.
+bool freshClosedStar(const Complex& cx, HexId h, int e, std::vector<EdgeRef>& seen, EdgeRef& ce, ops::EdgeStar& st) {
+  ce = cx.canonical(EdgeRef{h, e});
+  if (std::find(seen.begin(), seen.end(), ce) != seen.end()) return false;
+  seen.push_back(ce);
+  bool closed = false;
+  cx.edgeCycle(ce, &closed);
+  if (!closed) return false;
+  st = ops::closedEdgeStar(cx, ce, "search");
+  return true;
+}
 
-// Candidate steps on region hexes (many are rejected by the operation itself).
-std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<OpKind>& ops) {
+// Ring splits generated forward (TK03 §4.4, the inverse of a ring collapse): every closed loop of
+// region edges, at most `maxLen` long, with two strips of quads along it — f_k and g_k share the
+// loop's k-th edge, f_k and f_k+1 share an edge across the loop (so do the g's). Each loop is
+// started once, at its smallest edge walked from its smaller vertex; both sides of f_0 are tried
+// (the side of f_0 keeps the loop's vertex ids). Every quad must have a region side.
+void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int maxLen, std::vector<OpStep>& out) {
+  if (maxLen < 2) return;
+  auto verts = [&](QuadSide s) {
+    std::array<VertexId, 4> v;
+    for (int p = 0; p < 4; ++p) v[size_t(p)] = cx.vertex(s.hex, kFaceCorners[size_t(s.face)][size_t(p)]);
+    return v;
+  };
+  auto other = [&](QuadSide s, VertexId v, VertexId away) {  // v's neighbour in quad s other than `away`
+    auto fv = verts(s);
+    for (int p = 0; p < 4; ++p)
+      if (fv[size_t(p)] == v) return fv[size_t((p + 1) & 3)] == away ? fv[size_t((p + 3) & 3)] : fv[size_t((p + 1) & 3)];
+    return VertexId(-1);
+  };
+  auto cornerIn = [&](HexId h, VertexId v) {
+    for (int c = 0; c < 8; ++c)
+      if (cx.vertex(h, c) == v) return c;
+    return -1;
+  };
+  // The canonical incidence of the edge a-b of quad s.
+  auto edgeOf = [&](QuadSide s, VertexId a, VertexId b) {
+    return cx.canonical(EdgeRef{s.hex, edgeBetween(cornerIn(s.hex, a), cornerIn(s.hex, b))});
+  };
+  auto touchesRegion = [&](QuadSide s) { return !isHost(host, s.hex) || !isHost(host, cx.gluing(s).hex); };
+  // The quads around edge a-b of quad s (closed stars only), as canonical sides.
+  auto quadsAround = [&](QuadSide s, VertexId a, VertexId b, std::vector<QuadSide>& qs) {
+    qs.clear();
+    EdgeRef e = edgeOf(s, a, b);
+    bool closed = false;
+    cx.edgeCycle(e, &closed);
+    if (!closed) return;
+    auto st = ops::closedEdgeStar(cx, e, "search");
+    for (size_t k = 0; k < st.inc.size(); ++k) qs.push_back(cx.canonical(QuadSide{st.inc[k].hex, st.exitFace[k]}));
+  };
+  std::vector<std::pair<QuadSide, QuadSide>> bands;
+  std::vector<VertexId> loop;
+  EdgeRef first{};
+  std::vector<std::vector<QuadSide>> fq(size_t(maxLen) + 1), gq(size_t(maxLen) + 1);
+  // Extends the strips from band k (ending at vertex `at`, coming from `from`).
+  std::function<void(VertexId, VertexId)> extend = [&](VertexId from, VertexId at) {
+    const size_t k = bands.size();
+    QuadSide f = bands.back().first, g = bands.back().second;
+    VertexId wf = other(f, at, from), wg = other(g, at, from);
+    if (at == loop[0]) {  // back at the start: f_0 and g_0 must continue the strips
+      QuadSide f0 = bands[0].first, g0 = bands[0].second;
+      if (k >= 2 && other(f0, at, loop[1]) == wf && other(g0, at, loop[1]) == wg && edgeOf(f0, at, wf) == edgeOf(f, at, wf) &&
+          edgeOf(g0, at, wg) == edgeOf(g, at, wg))
+        for (QuadSide s0 : {f0, QuadSide{cx.gluing(f0).hex, cx.gluing(f0).face}}) {
+          OpStep st{OpKind::RingSplit, {OpArg::of(s0, g0)}, 0};
+          for (size_t j = 1; j < k; ++j) st.args.push_back(OpArg::of(bands[j].first, bands[j].second));
+          out.push_back(st);
+        }
+      return;
+    }
+    if (int(k) >= maxLen) return;
+    quadsAround(f, at, wf, fq[k]);
+    quadsAround(g, at, wg, gq[k]);
+    for (QuadSide f2 : fq[k]) {
+      if (f2 == f || !touchesRegion(f2)) continue;
+      VertexId u = other(f2, at, wf);
+      for (QuadSide g2 : gq[k]) {
+        if (g2 == g || g2 == f2 || !touchesRegion(g2) || other(g2, at, wg) != u) continue;
+        EdgeRef e = edgeOf(f2, at, u);
+        if (!(edgeOf(g2, at, u) == e) || !(first < e)) continue;
+        if (u != loop[0] && std::find(loop.begin(), loop.end(), u) != loop.end()) continue;
+        bands.push_back({f2, g2});
+        loop.push_back(u);
+        extend(at, u);
+        loop.pop_back();
+        bands.pop_back();
+      }
+    }
+  };
+  std::vector<EdgeRef> seen;
+  for (HexId h : regionOf(cx, host))
+    for (int e = 0; e < 12; ++e) {
+      EdgeRef ce;
+      ops::EdgeStar st;
+      if (!freshClosedStar(cx, h, e, seen, ce, st)) continue;
+      VertexId a = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][0]), b = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][1]);
+      if (b < a) std::swap(a, b);
+      std::vector<QuadSide> qs;
+      for (size_t k = 0; k < st.inc.size(); ++k) qs.push_back(cx.canonical(QuadSide{st.inc[k].hex, st.exitFace[k]}));
+      first = ce;
+      for (size_t i = 0; i < qs.size(); ++i)
+        for (size_t j = 0; j < qs.size(); ++j) {
+          if (i == j || !touchesRegion(qs[i]) || !touchesRegion(qs[j])) continue;
+          if (j < i) continue;  // f and g swapped give the same split
+          bands = {{qs[i], qs[j]}};
+          loop = {a, b};
+          extend(a, b);
+        }
+    }
+}
+
+// Candidate steps on region hexes. Cheap exact preconditions (a pillow partner, a blind-chord
+// partner) are checked here so that most rejections cost no exception.
+std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<OpKind>& ops, int ringSplitMax) {
   using K = OpKind;
   auto use = [&](OpKind op) { return ops.empty() || std::find(ops.begin(), ops.end(), op) != ops.end(); };
   std::vector<OpStep> out;
@@ -136,8 +244,8 @@ std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, con
   std::vector<QuadSide> seenQuads;
   std::vector<EdgeRef> seenEdges;
   for (HexId h : region) {
-    if (use(K::Unpillow)) out.push_back(makeStep(K::Unpillow, h));
-    if (use(K::ChordPull)) out.push_back(makeStep(K::ChordPull, h));
+    if (use(K::Unpillow) && ops::partnerSharing(cx, h, 5) >= 0) out.push_back(makeStep(K::Unpillow, h));
+    if (use(K::ChordPull) && ops::partnerSharing(cx, h, 4) >= 0) out.push_back(makeStep(K::ChordPull, h));
     for (int f = 0; f < 6; ++f) {
       Gluing g = cx.gluing(h, f);
       if (g.boundary()) continue;
@@ -166,13 +274,9 @@ std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, con
     for (int e = 0; e < 12; ++e) {
       if (use(K::RingCollapse) && (e & 2) == 0) out.push_back(makeStep(K::RingCollapse, EdgeRef{h, e}));
       if (!use(K::ChordPush) && !use(K::FaceCollapse)) continue;
-      EdgeRef ce = cx.canonical(EdgeRef{h, e});
-      if (std::find(seenEdges.begin(), seenEdges.end(), ce) != seenEdges.end()) continue;
-      seenEdges.push_back(ce);
-      bool closed = false;
-      cx.edgeCycle(ce, &closed);
-      if (!closed) continue;
-      auto st = ops::closedEdgeStar(cx, ce, "search");
+      EdgeRef ce;
+      ops::EdgeStar st;
+      if (!freshClosedStar(cx, h, e, seenEdges, ce, st)) continue;
       size_t n = st.inc.size();
       auto touches = [&](size_t k) { return inRegion(st.inc[k].hex) || inRegion(st.inc[(k + 1) % n].hex); };
       for (size_t i = 0; i < n; ++i)
@@ -184,6 +288,7 @@ std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, con
         }
     }
   }
+  if (use(K::RingSplit)) appendRingSplits(cx, host, ringSplitMax, out);
   return out;
 }
 
@@ -236,50 +341,268 @@ OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalL
   return st;
 }
 
+
+// One side of the bidirectional search: nodes stored as (parent, index of the move in the
+// parent's move list), 8 bytes each; the state itself is replayed from the root on demand.
+struct Side {
+  Complex root;
+  std::vector<int32_t> parent;
+  std::vector<uint32_t> move;
+  FlatKeyMap index{1 << 12};
+  size_t levelBegin = 0, levelEnd = 1;  // the frontier: nodes [levelBegin, levelEnd)
+  int depth = 0;
+  size_t memoryBytes() const { return parent.capacity() * 4 + move.capacity() * 4 + index.memoryBytes(); }
+};
+
+// Replays nodes of one side in frontier order. Frontier nodes are stored in the order of their
+// parents, so consecutive nodes share most of their path: the walker undoes back to the common
+// ancestor and applies forward from there, keeping each ancestor's move list.
+class Walker {
+ public:
+  Walker(const Side& side, const std::vector<HexId>& host, const SearchOptions& opt)
+      : side_(side), host_(host), ops_(opt.ops), cx(side.root) {
+    ringMax_ = [&opt, this] {
+      return std::min(opt.ringSplitMax, opt.maxRegionHexes - int(cx.numHexes() - int64_t(host_.size())));
+    };
+    path_ = {0};
+    movesAt_.push_back(moves(cx, host_, ops_, ringMax_()));
+  }
+  void goTo(int32_t node) {
+    chain_.clear();
+    for (int32_t n = node; n >= 0; n = side_.parent[size_t(n)]) chain_.push_back(n);
+    std::reverse(chain_.begin(), chain_.end());
+    size_t common = 0;
+    while (common < chain_.size() && common < path_.size() && chain_[common] == path_[common]) ++common;
+    while (path_.size() > common) {
+      cx.undo(logs_.back());
+      logs_.pop_back();
+      movesAt_.pop_back();
+      path_.pop_back();
+    }
+    for (size_t i = common; i < chain_.size(); ++i) {
+      const OpStep& m = movesAt_.back()[side_.move[size_t(chain_[i])]];
+      logs_.push_back(applyStep(cx, m).edits);
+      path_.push_back(chain_[i]);
+      movesAt_.push_back(moves(cx, host_, ops_, ringMax_()));
+    }
+  }
+  const std::vector<OpStep>& movesHere() const { return movesAt_.back(); }
+  // The steps from the root to the current node.
+  std::vector<OpStep> steps() const {
+    std::vector<OpStep> out;
+    for (size_t i = 1; i < path_.size(); ++i) out.push_back(movesAt_[i - 1][side_.move[size_t(path_[i])]]);
+    return out;
+  }
+
+ private:
+  const Side& side_;
+  const std::vector<HexId>& host_;
+  const std::vector<OpKind>& ops_;
+  std::vector<int32_t> path_, chain_;
+  std::vector<Complex::EditLog> logs_;
+  std::vector<std::vector<OpStep>> movesAt_;
+  std::function<int()> ringMax_;  // ring splits: loops up to the region cap's headroom
+
+ public:
+  Complex cx;
+};
+
+// A child found by a worker: not yet in its side's index when the worker saw it.
+struct Child {
+  int32_t parent;
+  uint32_t move;
+  Key128 key;
+};
+
+struct SearchContext {
+  const std::vector<HexId>& host;
+  std::vector<uint8_t> isHost;  // by hex id; ids past the end are region hexes
+  const HostSnapshot& hs;
+  const SearchOptions& opt;
+  std::vector<std::vector<VertexId>> symmetries;  // vertex maps fixing host, start and goal (not the identity)
+  Key128 key(RegionEncoder& enc, const Complex& cx) const {
+    return symmetries.empty() ? enc.key(cx, isHost) : enc.key(cx, isHost, symmetries);
+  }
+};
+
+// Candidate vertex maps: for the 4-cube boundary its 384 symmetries (vertex id = coordinate
+// bits), otherwise the 48 symmetries of the bounding box of the vertex positions.
+std::vector<std::vector<VertexId>> candidateMaps(const Complex& cx) {
+  std::vector<std::vector<VertexId>> out;
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  if (cx.numHexes() == 8 && cx.vertexCapacity() == 16) {
+    std::array<int, 4> p{0, 1, 2, 3};
+    do {
+      for (int flip = 0; flip < 16; ++flip) {
+        std::vector<VertexId> m(16);
+        for (int v = 0; v < 16; ++v) {
+          int w = 0;
+          for (int i = 0; i < 4; ++i) w |= (((v >> i) & 1) ^ ((flip >> i) & 1)) << p[size_t(i)];
+          m[size_t(v)] = w;
+        }
+        out.push_back(m);
+      }
+    } while (std::next_permutation(p.begin(), p.end()));
+    return out;
+  }
+  std::map<std::array<long, 3>, VertexId> at;
+  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  auto coords = [](Vec3 q) { return std::array<double, 3>{q.x, q.y, q.z}; };
+  for (VertexId v : cx.vertices()) {
+    auto c = coords(cx.position(v));
+    for (int i = 0; i < 3; ++i) lo[size_t(i)] = std::min(lo[size_t(i)], c[size_t(i)]), hi[size_t(i)] = std::max(hi[size_t(i)], c[size_t(i)]);
+    at[{std::lround(2 * c[0]), std::lround(2 * c[1]), std::lround(2 * c[2])}] = v;
+  }
+  for (auto& pm : perms)
+    for (int flip = 0; flip < 8; ++flip) {
+      std::vector<VertexId> m(size_t(cx.vertexCapacity()), -1);
+      bool ok = true;
+      for (VertexId v : cx.vertices()) {
+        auto c = coords(cx.position(v));
+        std::array<double, 3> d{};
+        for (int i = 0; i < 3; ++i) {
+          double x = c[size_t(pm[i])];
+          d[size_t(i)] = (flip >> i) & 1 ? lo[size_t(pm[i])] + hi[size_t(pm[i])] - x : x;
+        }
+        auto it = at.find({std::lround(2 * d[0]), std::lround(2 * d[1]), std::lround(2 * d[2])});
+        if (it == at.end()) ok = false;
+        else m[size_t(v)] = it->second;
+      }
+      if (ok) out.push_back(m);
+    }
+  return out;
+}
+
+// The symmetries of a problem: vertex maps that carry the host onto itself and leave the
+// canonical forms of start and goal unchanged (so a path up to symmetry ends at the goal itself).
+std::vector<std::vector<VertexId>> problemSymmetries(const SearchProblem& pb, const std::vector<uint8_t>& isHost) {
+  RegionEncoder enc;
+  const std::vector<int64_t> start = enc.form(pb.start, isHost), goal = enc.form(pb.goal, isHost);
+  std::vector<std::array<VertexId, 8>> hostSets;
+  auto sortedVerts = [](std::array<VertexId, 8> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  for (HexId h : pb.host) hostSets.push_back(sortedVerts(pb.start.hexVertices(h)));
+  std::sort(hostSets.begin(), hostSets.end());
+  std::vector<std::vector<VertexId>> out;
+  for (const auto& m : candidateMaps(pb.start)) {
+    bool identity = true;
+    for (size_t v = 0; v < m.size(); ++v) identity = identity && (m[v] == VertexId(v) || m[v] < 0);
+    if (identity) continue;
+    std::vector<std::array<VertexId, 8>> images;
+    for (HexId h : pb.host) {
+      auto v = pb.start.hexVertices(h);
+      for (VertexId& x : v) x = m[size_t(x)];
+      images.push_back(sortedVerts(v));
+    }
+    std::sort(images.begin(), images.end());
+    if (images != hostSets) continue;
+    if (enc.form(pb.start, isHost, &m) != start || enc.form(pb.goal, isHost, &m) != goal) continue;
+    out.push_back(m);
+  }
+  return out;
+}
+
+// Expands nodes [begin, end) of `side`: every move that applies, keeps the host and the region
+// cap, and reaches a state not yet stored there; stops at a state the other side stored. Reads
+// the indexes only (workers run in parallel; the merge after them writes).
+void expand(const SearchContext& ctx, const Side& side, const Side& other, bool fromGoal, size_t begin, size_t end,
+            std::vector<Child>& out, int64_t& applied, const std::function<bool()>& stop) {
+  Walker w(side, ctx.host, ctx.opt);
+  RegionEncoder enc;
+  const int64_t hostCount = int64_t(ctx.host.size());
+  for (size_t n = begin; n < end; ++n) {
+    if (stop()) return;
+    w.goTo(int32_t(n));
+    const auto& ms = w.movesHere();
+    for (size_t i = 0; i < ms.size(); ++i) {
+      OpResult r;
+      try {
+        r = applyStep(w.cx, ms[i]);
+      } catch (const Error&) {
+        continue;
+      }
+      ++applied;
+      // From the goal side a move stands for its inverse step: a move without one (a ring collapse
+      // whose side quad was glued to the ring itself) is no step of a decomposition.
+      bool keep = w.cx.numHexes() - hostCount <= ctx.opt.maxRegionHexes && (!fromGoal || r.inverse);
+      Key128 key;
+      if (keep) {
+        key = ctx.key(enc, w.cx);
+        keep = side.index.find(key) < 0 && localityViolation(w.cx, ctx.hs).empty();
+      }
+      w.cx.undo(r.edits);
+      if (!keep) continue;
+      out.push_back({int32_t(n), uint32_t(i), key});
+      if (other.index.find(key) >= 0) return;  // the two searches meet: the merge stops here
+    }
+  }
+}
+
 }  // namespace
 
 SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& opt) {
   auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   HostSnapshot hs = snapshot(pb.start, pb.host);
-  std::vector<HexId> host = hs.host;
-  SearchResult res;
-  std::deque<Node> side[2];  // deque: references stay valid while nodes are added
-  std::map<std::vector<int64_t>, int> index[2];
-  for (int s = 0; s < 2; ++s) {
-    Node n;
-    n.cx = s == 0 ? pb.start : pb.goal;
-    n.key = regionLabelling(n.cx, host).form;
-    index[s][n.key] = 0;
-    side[s].push_back(std::move(n));
+  const std::vector<HexId>& host = hs.host;
+  SearchContext ctx{host, {}, hs, opt, {}};
+  for (HexId h : host) {
+    if (size_t(h) >= ctx.isHost.size()) ctx.isHost.resize(size_t(h) + 1, 0);
+    ctx.isHost[size_t(h)] = 1;
   }
-  auto pathTo = [&](int s, int i) {
-    std::vector<int> chain;
-    for (; i >= 0; i = side[s][size_t(i)].parent) chain.push_back(i);
-    std::reverse(chain.begin(), chain.end());
-    return chain;
+  if (opt.symmetry) ctx.symmetries = problemSymmetries(pb, ctx.isHost);
+  SearchResult res;
+  res.symmetries = int(ctx.symmetries.size()) + 1;
+  Side side[2];
+  RegionEncoder enc;
+  for (int s = 0; s < 2; ++s) {
+    side[s].root = s == 0 ? pb.start : pb.goal;
+    side[s].parent = {-1};
+    side[s].move = {0};
+    side[s].index.insert(ctx.key(enc, side[s].root), 0);
+  }
+  auto stored = [&] { return int64_t(side[0].parent.size() + side[1].parent.size()); };
+  auto memory = [&] { return side[0].memoryBytes() + side[1].memoryBytes(); };
+  auto finishStats = [&] {
+    res.statesExplored = stored();
+    res.memoryBytes = std::max(res.memoryBytes, memory());
+    if (res.found) res.depthSearched = int(res.steps.size());
+    res.seconds = elapsed();
+    return res;
   };
+  if (side[1].index.find(ctx.key(enc, side[0].root)) >= 0) {
+    res.found = true;
+    res.stoppedBy = "found";
+    return finishStats();
+  }
   // Joins the forward path to node fi with the backward path from the goal to node bi (same key).
-  auto finish = [&](int fi, int bi) {
-    std::vector<OpStep> steps;
-    auto fchain = pathTo(0, fi);
-    for (size_t k = 1; k < fchain.size(); ++k) steps.push_back(side[0][size_t(fchain[k])].step);
-    Complex cur = side[0][size_t(fi)].cx;
-    auto bchain = pathTo(1, bi);  // goal ... bi
-    for (size_t k = bchain.size() - 1; k > 0; --k) {
-      const Node& here = side[1][size_t(bchain[k])];
-      const Node& prev = side[1][size_t(bchain[k - 1])];
-      // A local move from cur reaching prev's state: first among the generated moves (this also
-      // picks the side that keeps host vertex ids for splits), else the translated inverse.
+  auto finish = [&](int32_t fi, int32_t bi) {
+    Walker wf(side[0], host, opt), wb(side[1], host, opt);
+    wf.goTo(fi);
+    wb.goTo(bi);
+    std::vector<OpStep> steps = wf.steps(), back = wb.steps();
+    // The backward chain's states: goal = chain[0], ..., chain[k] = the meeting state.
+    std::vector<Complex> chain{pb.goal};
+    for (const OpStep& st : back) {
+      chain.push_back(chain.back());
+      applyStep(chain.back(), st);
+    }
+    Complex cur = wf.cx;
+    for (size_t k = back.size(); k > 0; --k) {
+      Key128 want = ctx.key(enc, chain[k - 1]);
+      // A local move from cur reaching the previous state: first among the generated moves (this
+      // also picks the side that keeps host vertex ids for splits), else the translated inverse.
       std::optional<OpStep> chosen;
-      for (const OpStep& m : moves(cur, host, {})) {
+      for (const OpStep& m : moves(cur, host, {}, opt.ringSplitMax)) {
         OpResult r;
         try {
           r = applyStep(cur, m);
         } catch (const Error&) {
           continue;
         }
-        bool hit = localityViolation(cur, hs).empty() && regionLabelling(cur, host).form == prev.key;
+        bool hit = ctx.key(enc, cur) == want && localityViolation(cur, hs).empty();
         cur.undo(r.edits);
         if (hit) {
           chosen = m;
@@ -287,10 +610,13 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
         }
       }
       if (!chosen) {
-        Complex tmp = prev.cx;
-        OpResult r = applyStep(tmp, here.step);
-        if (!r.inverse) throw Error("search: " + formatOpStep(here.step) + " has no inverse step (" + r.noInverse + ")");
-        chosen = translateStep(*r.inverse, regionLabelling(tmp, host), regionLabelling(cur, host), host);
+        Complex tmp = chain[k - 1];
+        OpResult r = applyStep(tmp, back[k - 1]);
+        if (!r.inverse) throw Error("search: " + formatOpStep(back[k - 1]) + " has no inverse step (" + r.noInverse + ")");
+        CanonicalLabelling from = regionLabelling(tmp, host), to = regionLabelling(cur, host);
+        if (from.form != to.form)
+          throw Error("search: the paths meet only up to a symmetry where a generated move is missing; search again without symmetry");
+        chosen = translateStep(*r.inverse, from, to, host);
       }
       applyStep(cur, *chosen);
       steps.push_back(*chosen);
@@ -299,71 +625,95 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     res.steps = steps;
     res.stoppedBy = "found";
   };
-  if (side[0][0].key == side[1][0].key) {
-    res.found = true;
-    res.stoppedBy = "found";
-    return res;
-  }
-  std::vector<int> frontier[2] = {{0}, {0}};
-  int depth[2] = {0, 0};
-  while (depth[0] + depth[1] < opt.maxDepth) {
-    int s = frontier[0].size() <= frontier[1].size() ? 0 : 1;
-    std::vector<int> next;
-    for (int i : frontier[s]) {
-      Complex& cx = side[s][size_t(i)].cx;
-      for (const OpStep& m : moves(cx, host, opt.ops)) {
-        if (elapsed() > opt.maxSeconds) {
-          res.stoppedBy = "time";
-          goto done;
-        }
-        OpResult r;
+  const int threads = std::max(1, opt.threads);
+  std::atomic<bool> timeUp{false};
+  auto stop = [&] {
+    if (!timeUp && elapsed() > opt.maxSeconds) timeUp = true;
+    return bool(timeUp);
+  };
+  while (side[0].depth + side[1].depth < opt.maxDepth) {
+    int s = side[0].levelEnd - side[0].levelBegin <= side[1].levelEnd - side[1].levelBegin ? 0 : 1;
+    Side& me = side[s];
+    Side& other = side[1 - s];
+    const size_t levelStart = me.parent.size();
+    // Chunks of the frontier, split between the threads; children merge in frontier order, so
+    // node ids and the result do not depend on the thread count.
+    const size_t chunk = 512;
+    for (size_t b = me.levelBegin; b < me.levelEnd; b += chunk) {
+      size_t e = std::min(me.levelEnd, b + chunk);
+      std::vector<std::vector<Child>> found(static_cast<size_t>(threads));
+      std::vector<int64_t> applied(static_cast<size_t>(threads), 0);
+      std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
+      auto work = [&](int t) {
+        size_t per = (e - b + size_t(threads) - 1) / size_t(threads);
+        size_t lo = std::min(e, b + per * size_t(t)), hi = std::min(e, lo + per);
         try {
-          r = applyStep(cx, m);
-        } catch (const Error&) {
-          continue;
+          expand(ctx, me, other, s == 1, lo, hi, found[size_t(t)], applied[size_t(t)], stop);
+        } catch (...) {
+          errors[size_t(t)] = std::current_exception();
         }
-        std::string why = localityViolation(cx, hs);
-        if (std::getenv("HEXDUAL_SEARCH_TRACE")) std::fprintf(stderr, "%s -> %s\n", formatOpStep(m).c_str(), why.c_str());
-        bool ok = why.empty() && int(regionOf(cx, host).size()) <= opt.maxRegionHexes;
-        std::vector<int64_t> key;
-        if (ok) key = regionLabelling(cx, host).form;
-        Complex child;
-        if (ok && !index[s].count(key)) child = cx;
-        cx.undo(r.edits);
-        ++res.statesExplored;
-        if (!ok || index[s].count(key)) continue;
-        Node n;
-        n.key = key;
-        n.cx = std::move(child);
-        n.parent = i;
-        n.step = m;
-        n.depth = depth[s] + 1;
-        int id = int(side[s].size());
-        index[s][key] = id;
-        side[s].push_back(std::move(n));
-        next.push_back(id);
-        auto other = index[1 - s].find(key);
-        if (other != index[1 - s].end()) {
-          if (s == 0) finish(id, other->second);
-          else finish(other->second, id);
-          goto done;
+      };
+      if (threads == 1) {
+        work(0);
+      } else {
+        std::vector<std::thread> pool;
+        for (int t = 0; t < threads; ++t) pool.emplace_back(work, t);
+        for (auto& th : pool) th.join();
+      }
+      for (auto& err : errors)
+        if (err) std::rethrow_exception(err);
+      for (int64_t a : applied) res.movesApplied += a;
+      for (const auto& list : found)
+        for (const Child& c : list) {
+          int32_t id = int32_t(me.parent.size());
+          if (me.index.insert(c.key, id) != id) continue;
+          me.parent.push_back(c.parent);
+          me.move.push_back(c.move);
+          int32_t there = other.index.find(c.key);
+          if (there >= 0) {
+            if (s == 0) finish(id, there);
+            else finish(there, id);
+            return finishStats();
+          }
         }
-        if (int64_t(side[0].size() + side[1].size()) > opt.maxStates) {
-          res.stoppedBy = "states";
-          goto done;
-        }
+      res.memoryBytes = std::max(res.memoryBytes, memory());
+      if (timeUp) {
+        res.stoppedBy = "time";
+        char secs[32];
+        std::snprintf(secs, sizeof secs, "%g", opt.maxSeconds);
+        res.message = "stopped by the time limit (--max-seconds " + std::string(secs) + ") during depth " +
+                      std::to_string(side[0].depth + side[1].depth + 1);
+        return finishStats();
+      }
+      if (stored() > opt.maxStates) {
+        res.stoppedBy = "states";
+        res.message = "stopped at the state cap (--max-states " + std::to_string(opt.maxStates) + ") during depth " +
+                      std::to_string(side[0].depth + side[1].depth + 1);
+        return finishStats();
+      }
+      // A hash set grows by doubling: stop before the next growth could pass the memory limit.
+      if (double(memory()) + double(me.index.memoryBytes()) * 2 > opt.maxMemoryMB * 1048576.0) {
+        res.stoppedBy = "memory";
+        res.message = "stopped by the memory guard (--max-memory " + std::to_string(int64_t(opt.maxMemoryMB)) +
+                      " MB; " + std::to_string(memory() >> 20) + " MB in use) during depth " +
+                      std::to_string(side[0].depth + side[1].depth + 1);
+        return finishStats();
       }
     }
-    frontier[s] = next;
-    ++depth[s];
-    res.depthSearched = depth[0] + depth[1];
-    if (frontier[s].empty()) break;
+    me.levelBegin = levelStart;
+    me.levelEnd = me.parent.size();
+    ++me.depth;
+    res.depthSearched = side[0].depth + side[1].depth;
+    res.levels.push_back({s, me.depth, int64_t(me.levelEnd - me.levelBegin), stored(), res.movesApplied, elapsed()});
+    if (opt.progress) opt.progress(res.levels.back());
+    if (me.levelBegin == me.levelEnd) {
+      // No new state on this side: every sequence of any length (within the region cap) was seen.
+      res.stoppedBy = "exhausted";
+      return finishStats();
+    }
   }
-  if (res.stoppedBy.empty()) res.stoppedBy = "depth";
-done:
-  if (res.found) res.depthSearched = int(res.steps.size());
-  res.seconds = elapsed();
-  return res;
+  res.stoppedBy = "depth";
+  return finishStats();
 }
 
 void verifyDecomposition(const SearchProblem& pb, const std::vector<OpStep>& steps) {

@@ -54,13 +54,19 @@ std::vector<Vec3> dualPoints(const Complex& cx) {
   return out;
 }
 
-DualOverlay buildDualOverlay(const Complex& cx, const Dual& dual) {
+DualOverlay buildDualOverlay(const Complex& cx, const Dual& dual, const std::vector<HexId>* only) {
   DualOverlay o;
   const std::vector<Vec3> dp = dualPoints(cx);
+  std::vector<uint8_t> keep(size_t(cx.hexCapacity()), only ? 0 : 1);
+  if (only)
+    for (HexId h : *only)
+      if (cx.isHex(h)) keep[size_t(h)] = 1;
+  auto kept = [&](HexId h) { return keep[size_t(h)] != 0; };
   auto placed = [&](HexId h, Vec3 p) { return p - cx.hexCentroid(h) + dp[size_t(h)]; };
   for (const Sheet& s : dual.sheets) {
     if (!s.alive) continue;
     for (Slot sl : s.slots) {
+      if (!kept(sl.hex)) continue;
       uint32_t base = uint32_t(o.sheetPositions.size() / 3);
       // Edges 4a+k run along axis a; k = ub + 2 vb, so 0,1,3,2 walks the quad around.
       for (int k : {0, 1, 3, 2}) {
@@ -75,27 +81,34 @@ DualOverlay buildDualOverlay(const Complex& cx, const Dual& dual) {
   for (const Chord& ch : dual.chords) {
     if (!ch.alive || ch.slots.empty()) continue;
     std::vector<Vec3> line;
+    std::vector<HexId> lineHex;  // the hex each point belongs to
+    auto add = [&](HexId h, Vec3 p) {
+      line.push_back(p);
+      lineHex.push_back(h);
+    };
     auto end = [&](Slot sl, bool first) {
       for (int f : {2 * sl.axis, 2 * sl.axis + 1}) {
         if (!cx.isBoundary({sl.hex, f})) continue;
         // The first slot's boundary face starts the line; with one slot both faces are ends.
         if (ch.slots.size() > 1 || first == (f == 2 * sl.axis)) {
-          line.push_back(placed(sl.hex, faceCentre(cx, sl.hex, f)));
+          add(sl.hex, placed(sl.hex, faceCentre(cx, sl.hex, f)));
           return;
         }
       }
     };
     if (!ch.closed) end(ch.slots.front(), true);
-    for (Slot sl : ch.slots) line.push_back(dp[size_t(sl.hex)]);
-    if (ch.closed) line.push_back(dp[size_t(ch.slots.front().hex)]);
+    for (Slot sl : ch.slots) add(sl.hex, dp[size_t(sl.hex)]);
+    if (ch.closed) add(ch.slots.front().hex, dp[size_t(ch.slots.front().hex)]);
     else end(ch.slots.back(), false);
     for (size_t i = 0; i + 1 < line.size(); ++i) {
+      if (!kept(lineHex[i]) || !kept(lineHex[i + 1])) continue;
       push(o.chordPositions, line[i]);
       push(o.chordPositions, line[i + 1]);
       o.chordSegment.push_back(ch.id);
     }
   }
   for (HexId h : cx.hexes()) {
+    if (!kept(h)) continue;
     push(o.dualVertices, dp[size_t(h)]);
     o.dualVertexHex.push_back(h);
   }

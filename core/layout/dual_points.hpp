@@ -32,6 +32,8 @@ struct DualOverlay {
 // Mid-surface quads (the midpoints of each slot's 4 edges along its axis), chords as polylines
 // through dual points (open chords end at their boundary quads' centres), and the dual points.
 // Hex geometry is translated to its dual point so degenerate hexes' pieces separate.
-DualOverlay buildDualOverlay(const Complex& cx, const Dual& dual);
+// With `only` (hex ids), just their sheet quads, dual points and the chord segments between them
+// (a big mesh's overlay follows its drawn shell).
+DualOverlay buildDualOverlay(const Complex& cx, const Dual& dual, const std::vector<HexId>* only = nullptr);
 
 }  // namespace hexdual

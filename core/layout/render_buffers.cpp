@@ -38,9 +38,28 @@ void addFace(RenderBuffers& rb, const Vec3 (&p)[8], Vec3 centre, HexId h, int f)
 }
 }  // namespace
 
-RenderBuffers buildRenderBuffers(const Complex& cx, double shrink, bool edges) {
+std::vector<HexId> drawnHexes(const Complex& cx, const DrawnHexes& drawn) {
+  auto hidden = [&](HexId h) { return size_t(h) < drawn.hidden.size() && drawn.hidden[size_t(h)] != 0; };
+  auto exposed = [&](HexId h) {
+    for (int f = 0; f < 6; ++f) {
+      const HexId g = cx.gluing(h, f).hex;
+      if (g < 0 || hidden(g)) return true;
+    }
+    return false;
+  };
+  std::vector<uint8_t> always(size_t(cx.hexCapacity()), 0);
+  for (HexId h : drawn.always)
+    if (h >= 0 && h < cx.hexCapacity()) always[size_t(h)] = 1;
+  std::vector<HexId> out;
+  for (HexId h : cx.hexes())
+    if (always[size_t(h)] || (!hidden(h) && (!drawn.shell || exposed(h)))) out.push_back(h);
+  return out;
+}
+
+RenderBuffers buildRenderBuffers(const Complex& cx, double shrink, bool edges, const DrawnHexes& drawn) {
   RenderBuffers rb;
-  const size_t n = size_t(cx.numHexes());
+  const std::vector<HexId> hexes = drawnHexes(cx, drawn);
+  const size_t n = hexes.size();
   rb.positions.reserve(n * 72);
   rb.normals.reserve(n * 72);
   rb.indices.reserve(n * 36);
@@ -48,7 +67,7 @@ RenderBuffers buildRenderBuffers(const Complex& cx, double shrink, bool edges) {
   rb.triangleFace.reserve(n * 12);
   if (edges) rb.edgePositions.reserve(n * 72);
   const std::vector<Vec3> dp = dualPoints(cx);
-  for (HexId h : cx.hexes()) {
+  for (HexId h : hexes) {
     const Vec3 c = cx.hexCentroid(h), d = dp[size_t(h)];
     const double keep = (1.0 - shrink) * (isDegenerateHex(cx, h) ? kDegenerateScale : 1.0);
     Vec3 p[8];

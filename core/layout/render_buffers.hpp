@@ -20,7 +20,20 @@ struct RenderBuffers {
   std::vector<uint8_t> edgeLocal;    // local edge (0..11) per segment
 };
 
+// Which hexes to draw (all by default). With `shell`, only those a viewer can see: a face on the
+// boundary or facing a hidden hex, so a 100k-hex grid draws its outer layer, not 1.2 M triangles.
+// `hidden[h] != 0` hides hex h (cut away by a slice); `always` are drawn regardless (a step's
+// created hexes, deep inside).
+struct DrawnHexes {
+  bool shell = false;
+  std::vector<uint8_t> hidden;
+  std::vector<HexId> always;
+};
+
+// The live hexes `drawn` selects, in increasing id order.
+std::vector<HexId> drawnHexes(const Complex& cx, const DrawnHexes& drawn);
+
 // shrink in [0,1): 0 draws hexes at full size. `edges` also fills the edge line buffers.
-RenderBuffers buildRenderBuffers(const Complex& cx, double shrink, bool edges = false);
+RenderBuffers buildRenderBuffers(const Complex& cx, double shrink, bool edges = false, const DrawnHexes& drawn = {});
 
 }  // namespace hexdual

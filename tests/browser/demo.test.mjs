@@ -3,68 +3,25 @@
 // Screenshots land in build/screenshots/ (desktop 1200 px and phone 375 px wide).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { startServer, startBrowser, root, screenshotDir } from './harness.mjs';
+import { screenshotDir } from './harness.mjs';
+import { openBrowser, explorerPage, differing, cli } from './explorer_page.mjs';
 
-let server, context, page;
-const errors = [];
+let b, page, errors;
+let open, settle, shownCounts, state, project, hash, pixels, dropFile;
 
 before(async () => {
-  server = await startServer();
-  context = await startBrowser();
-  page = await context.newPage();
-  page.on('pageerror', (e) => errors.push(e.message));
+  b = await openBrowser();
+  ({ page, errors } = b);
+  ({ open, settle, shownCounts, state, project, hash, pixels, dropFile } = explorerPage(page, b.server));
 });
-after(async () => {
-  await context?.close();
-  server?.stop();
-});
+after(() => b?.close());
 
-function cli(...args) {
-  return execFileSync(join(root, 'build/native/hexdual'), args).toString();
-}
 function nativeInfo(kind, dims) {
   const file = `/tmp/hexdual_browser_${kind}_${dims}.hxd`;
   cli(kind, dims, '-o', file);
   return JSON.parse(cli('info', file, '--json'));
-}
-
-async function open(hash) {
-  await page.goto('about:blank');
-  await page.goto(server.url + hash);
-  await page.waitForFunction(() => window.hexdual?.ready === true, null, { timeout: 30000 });
-  await settle();
-}
-// Two animation frames: the view has drawn what the state says.
-const settle = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-const shownCounts = () => page.$$eval('[data-count]', (tds) => Object.fromEntries(tds.map((td) => [td.dataset.count, Number(td.textContent)])));
-const state = () => page.evaluate(() => {
-  const s = window.hexdual.store.get();
-  return { steps: s.steps, at: s.at, selection: s.selection, report: s.report, diagrams: s.diagrams.map((d) => d.sheet), hexes: s.mesh.counts.hexes };
-});
-const project = (hex, face) => page.evaluate(([h, f]) => window.hexdual.view.project(h, f), [hex, face]);
-const hash = () => decodeURIComponent(new URL(page.url()).hash).replace(/\+/g, ' ');
-
-// RGBA pixels of a canvas region (page coordinates, CSS px).
-async function pixels(x, y, w, h) {
-  return page.evaluate(([x, y, w, h]) => {
-    const c = window.hexdual.view.canvas;
-    const r = c.getBoundingClientRect();
-    const sx = c.width / r.width;
-    const tmp = document.createElement('canvas');
-    tmp.width = Math.round(w * sx);
-    tmp.height = Math.round(h * sx);
-    const g = tmp.getContext('2d');
-    g.drawImage(c, (x - r.left) * sx, (y - r.top) * sx, w * sx, h * sx, 0, 0, tmp.width, tmp.height);
-    return Array.from(g.getImageData(0, 0, tmp.width, tmp.height).data);
-  }, [x, y, w, h]);
-}
-function differing(a, b) {
-  let n = 0;
-  for (let i = 0; i < a.length; i += 4) if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 40) n++;
-  return n;
 }
 
 test('default page: the 3x3x3 grid with the native counts, lists and a hover id', async () => {
@@ -243,29 +200,12 @@ test('drop a file on the page: it loads, the URL says it is local, and .hxd + st
   await open('#mesh=grid:3x3x3');
   const file = '/tmp/hexdual_browser_drop.hxd';
   cli('grid', '2x2x2', '-o', file);
-  const text = readFileSync(file, 'utf8');
-  await page.evaluate((text) => {
-    const dt = new DataTransfer();
-    dt.items.add(new File([text], 'cube8.hxd'));
-    for (const type of ['dragenter', 'dragover', 'drop']) document.body.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true }));
-  }, text);
+  await dropFile(readFileSync(file, 'utf8'), 'cube8.hxd');
   await page.waitForFunction(() => window.hexdual.store.get().mesh.counts.hexes === 8);
   assert.match(hash(), /mesh=file:cube8\.hxd/);
   assert.match(await page.locator('#notice').textContent(), /cube8\.hxd is a local file/);
   assert.ok(await page.locator('#exports button', { hasText: 'download .hxd + steps' }).isVisible());
-  // PNG export carries the page URL in a tEXt chunk.
-  const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#exports button', { hasText: 'PNG' }).click()]);
-  const png = readFileSync(await download.path());
-  assert.deepEqual([...png.subarray(1, 4)], [0x50, 0x4e, 0x47]);
-  const pngText = png.toString('latin1');
-  const at = pngText.indexOf('tEXthexdual-url\0');
-  assert.ok(at > 0, 'a tEXt chunk named hexdual-url');
-  assert.ok(pngText.slice(at + 16).startsWith(page.url()));
-  // Every writable format downloads.
-  for (const [label, head] of [['VTK', '# vtk DataFile'], ['Medit .mesh', 'MeshVersionFormatted']]) {
-    const [d] = await Promise.all([page.waitForEvent('download'), page.locator('#exports button', { hasText: label }).first().click()]);
-    assert.ok(readFileSync(await d.path(), 'latin1').startsWith(head), label);
-  }
+  // The exports themselves (PNG with the URL, every format, .hxd + steps): explorer.test.mjs.
 });
 
 test('flips view: step through the 3-5e decomposition with before and after', async () => {

@@ -20,9 +20,10 @@ async function freePort() {
   });
 }
 
-export async function startServer() {
+// `dir`: the page directory whose dist/ is served (benchmarks compare an older build).
+export async function startServer(dir = 'web') {
   const port = await freePort();
-  const proc = spawn(join(root, 'node_modules/.bin/vite'), ['preview', 'web', '--host', '127.0.0.1', '--port', String(port), '--strictPort'], {
+  const proc = spawn(join(root, 'node_modules/.bin/vite'), ['preview', dir, '--host', '127.0.0.1', '--port', String(port), '--strictPort'], {
     cwd: root,
     stdio: ['ignore', 'pipe', 'pipe'],
   });

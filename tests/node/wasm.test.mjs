@@ -66,6 +66,45 @@ test('load from bytes in all three formats, and save round trips (bytes out, bin
   m.delete();
 });
 
+test('render buffers of a shell: the hexes seen from outside or from a cut, plus hexes asked for', () => {
+  const m = Mesh.grid(3, 3, 3);
+  const drawn = (rb) => [...new Set(rb.triangleHex)];
+  assert.equal(drawn(m.renderBuffers({ shell: true })).length, 26);
+  assert.ok(!drawn(m.renderBuffers({ shell: true })).includes(13));
+  // Hiding the top layer (hexes 18..26) exposes the centre hex 13.
+  const hidden = new Uint8Array(27).fill(1, 18);
+  const cut = drawn(m.renderBuffers({ shell: true, hidden }));
+  assert.equal(cut.length, 18);
+  assert.ok(cut.includes(13));
+  m.apply('pillow h13f5');
+  assert.deepEqual(drawn(m.renderBuffers({ shell: true, always: [27, 28] })).slice(-2), [27, 28]);
+  assert.throws(() => m.renderBuffers({ hidden: [1] }), { message: 'renderBuffers: hidden must be a Uint8Array (one byte per hex id)' });
+  assert.throws(() => m.renderBuffers({ always: [1.5] }), { message: 'renderBuffers: always: hex id must be an integer, not 1.5' });
+  m.delete();
+  // The overlay of a part: hexes 0 and 1 of a 2x2x1 grid have 6 sheet quads and 9 chord segments.
+  const g = Mesh.grid(2, 2, 1);
+  const part = g.dualOverlay({ hexes: [0, 1] });
+  assert.equal(part.sheetTriangle.length, 12);
+  assert.equal(part.chordSegment.length, 9);
+  assert.deepEqual([...part.dualVertexHex], [0, 1]);
+  assert.equal(g.dualOverlay().chordSegment.length, 20);
+  g.delete();
+});
+
+test('flip places: the flips whose before side is at a hex, a quad or an edge, each applicable', () => {
+  const m = Mesh.grid(3, 3, 3);
+  const key = (ps) => ps.map((p) => `${p.name}@${p.hexes.join(',')}`).sort();
+  assert.deepEqual(key(m.flipPlaces({ hex: 13, face: 5 })), ['2-6@13,22']);
+  assert.deepEqual(key(m.flipPlaces({ hex: 22 })), ['1-7@22', '2-6@13,22', '2-6@19,22', '2-6@21,22', '2-6@22,23', '2-6@22,25']);
+  assert.deepEqual(key(m.flipPlaces({ hex: 13, edge: 0 })), ['2-6@1,10', '2-6@1,4', '2-6@10,13', '2-6@4,13']);
+  const reports = m.flip('1-7', [22], { viaAtomic: true });
+  assert.deepEqual(reports.map((r) => r.step), ['pillow h22f1', 'hexpush h22f1']);
+  assert.equal(m.counts.hexes, 33);
+  assert.throws(() => m.flipPlaces({ hex: 999 }), { message: 'flip places: hex 999 does not exist' });
+  assert.throws(() => m.flipPlaces({ hex: 1, face: 6 }), { message: 'flip places: no local quad 6' });
+  m.delete();
+});
+
 test('render buffers: 6 faces x 4 vertices per hex, a hex id per triangle', () => {
   const m = Mesh.grid(2, 1, 1);
   const rb = m.renderBuffers({ shrink: 0.2 });

@@ -1,0 +1,234 @@
+// The decomposition search engine: its hash map, its region keys, its replay, its limits.
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <random>
+
+#include "complex/canonical.hpp"
+#include "flips/flip.hpp"
+#include "flips/fourcube.hpp"
+#include "flips/search.hpp"
+#include "flips/search_state.hpp"
+#include "ops/oplog.hpp"
+#include "ops/ops.hpp"
+
+using namespace hexdual;
+
+TEST_CASE("FlatKeyMap: insert keeps the first value, finds every key after growth, misses absent keys") {
+  const uint32_t seed = 1401;
+  std::printf("FlatKeyMap seed %u\n", seed);
+  std::mt19937_64 rng(seed);
+  FlatKeyMap m(16);
+  std::vector<Key128> keys;
+  for (int i = 0; i < 5000; ++i) keys.push_back({rng(), rng()});
+  for (int i = 0; i < 5000; ++i) CHECK(m.insert(keys[size_t(i)], i) == i);
+  CHECK(m.size() == 5000);
+  CHECK(m.slots() == 8192);  // load stays at or below 0.7
+  for (int i = 0; i < 5000; ++i) CHECK(m.insert(keys[size_t(i)], -7) == i);
+  CHECK(m.size() == 5000);
+  for (int i = 0; i < 5000; ++i) CHECK(m.find(keys[size_t(i)]) == i);
+  for (int i = 0; i < 1000; ++i) CHECK(m.find({rng(), rng()}) == -1);
+  // Keys equal in their low word only are still told apart.
+  FlatKeyMap n;
+  CHECK(n.insert({5, 1}, 1) == 1);
+  CHECK(n.insert({5, 2}, 2) == 2);
+  CHECK(n.find({5, 1}) == 1);
+  CHECK(n.find({5, 2}) == 2);
+  CHECK(n.find({5, 3}) == -1);
+}
+
+TEST_CASE("hashWords: never the empty key; order and length matter") {
+  CHECK_FALSE(hashWords({}).empty());
+  CHECK(hashWords({1, 2}) != hashWords({2, 1}));
+  CHECK(hashWords({0}) != hashWords({0, 0}));
+  CHECK(hashWords({3, -4}) == hashWords({3, -4}));
+}
+
+namespace {
+std::vector<uint8_t> hostMask(const std::vector<HexId>& host) {
+  std::vector<uint8_t> m;
+  for (HexId h : host) {
+    if (size_t(h) >= m.size()) m.resize(size_t(h) + 1, 0);
+    m[size_t(h)] = 1;
+  }
+  return m;
+}
+std::vector<HexId> regionHexes(const Complex& cx, const std::vector<uint8_t>& isHost) {
+  std::vector<HexId> r;
+  for (HexId h : cx.hexes())
+    if (size_t(h) >= isHost.size() || !isHost[size_t(h)]) r.push_back(h);
+  return r;
+}
+}  // namespace
+
+TEST_CASE("RegionEncoder keys agree with canonical forms of the region (random local moves, fixed seed)") {
+  const uint32_t seed = 2026;
+  std::printf("RegionEncoder seed %u\n", seed);
+  std::mt19937 rng(seed);
+  SearchProblem pb = flipProblem("3-5e");
+  auto isHost = hostMask(pb.host);
+  RegionEncoder enc;
+  // States reached by short random walks of hex pushes, pillows and chord pushes in the region.
+  std::vector<Complex> states{pb.start, pb.goal};
+  for (int walk = 0; walk < 12; ++walk) {
+    Complex cx = pb.start;
+    for (int step = 0; step < 3; ++step) {
+      auto region = regionHexes(cx, isHost);
+      HexId h = region[rng() % region.size()];
+      int f = int(rng() % 6);
+      try {
+        if (rng() % 2)
+          hexPush(cx, {h, f});
+        else
+          pillow(cx, {h, f});
+      } catch (const Error&) {
+      }
+      states.push_back(cx);
+    }
+  }
+  int equalPairs = 0;
+  for (size_t i = 0; i < states.size(); ++i)
+    for (size_t j = 0; j < states.size(); ++j) {
+      bool sameForm = canonicalForm(subcomplex(states[i], regionHexes(states[i], isHost)), true) ==
+                      canonicalForm(subcomplex(states[j], regionHexes(states[j], isHost)), true);
+      CHECK((enc.key(states[i], isHost) == enc.key(states[j], isHost)) == sameForm);
+      equalPairs += sameForm && i != j;
+    }
+  CHECK(equalPairs > 0);  // the walks revisit states, so equality is exercised too
+  // The goal differs from the start; the flip done by its stored steps equals the goal.
+  CHECK(enc.key(pb.start, isHost) != enc.key(pb.goal, isHost));
+  Complex viaSteps = pb.start;
+  for (const OpStep& st :
+       parseOpLog("v1;hexpush h0f0;facecollapse h3e8 h8f2 h4f3;facesplit h7f4 h13f2;chordpull h4").steps)
+    applyStep(viaSteps, st);
+  CHECK(enc.key(viaSteps, isHost) == enc.key(pb.goal, isHost));
+}
+
+TEST_CASE("the search engine finds the known short decompositions again, the same with 1 and 2 threads") {
+  // (2-6 and 1-7 are in test_flips.cpp.)
+  SearchOptions o;
+  o.maxDepth = 3;
+  SearchResult r71 = searchDecomposition(flipProblem("7-1"), o);
+  REQUIRE(r71.found);
+  CHECK(r71.steps.size() == 2);
+  verifyDecomposition(flipProblem("7-1"), r71.steps);
+  o.maxDepth = 4;
+  SearchProblem pb = flipProblem("3-5e");
+  SearchResult plain = searchDecomposition(pb, o);
+  REQUIRE(plain.found);
+  CHECK(plain.steps.size() == 4);
+  verifyDecomposition(pb, plain.steps);
+  CHECK(plain.symmetries == 1);
+  CHECK(plain.memoryBytes > 0);
+  CHECK(plain.memoryBytes < size_t(plain.statesExplored) * 100 + (1u << 20));
+  CHECK(plain.memoryBytes >= size_t(plain.statesExplored) * 8);
+  // One state per orbit of the 12 symmetries of 3-5e: fewer states, a verified 4-step answer,
+  // the same with two threads.
+  o.symmetry = true;
+  SearchResult one = searchDecomposition(pb, o);
+  o.threads = 2;
+  SearchResult two = searchDecomposition(pb, o);
+  CHECK(one.symmetries == 12);
+  REQUIRE(one.found);
+  REQUIRE(two.found);
+  CHECK(one.steps.size() == 4);
+  verifyDecomposition(pb, one.steps);
+  CHECK(one.statesExplored * 4 < plain.statesExplored);
+  CHECK(formatOpLog({1, one.steps}) == formatOpLog({1, two.steps}));
+  CHECK(one.statesExplored == two.statesExplored);
+  // (moves applied may differ: a thread stops its slice at a meeting, the other finishes its own)
+}
+
+TEST_CASE("symmetry groups of the problems: 4-4 vertex flip 24, triple-chord push 6") {
+  // The stabilisers of the 4-4 vertex flip's before side (the axis permutations fixing the shared
+  // vertex) and of the triple-chord push in the 3x3x3 grid (the axis permutations).
+  SearchOptions o;
+  o.symmetry = true;
+  o.maxDepth = 1;
+  CHECK(searchDecomposition(flipProblem("4-4v"), o).symmetries == 24);
+  CHECK(searchDecomposition(tripleChordPushProblem(), o).symmetries == 6);
+}
+
+TEST_CASE("ring splits are generated forward: the goal side undoes ring collapses, so 3-5c is found at depth 4") {
+  // 3-5c = hexpush, hexpush, ringcollapse, unpillow: from the goal side the ring collapse is a
+  // ring split. Without forward ring splits the 2+2 split of depth 4 cannot meet.
+  SearchProblem pb = flipProblem("3-5c");
+  SearchOptions o;
+  o.maxDepth = 4;
+  o.symmetry = true;
+  SearchResult with = searchDecomposition(pb, o);
+  REQUIRE(with.found);
+  CHECK(with.steps.size() == 4);
+  verifyDecomposition(pb, with.steps);
+  o.ringSplitMax = 0;
+  SearchResult without = searchDecomposition(pb, o);
+  CHECK_FALSE(without.found);
+  CHECK(without.stoppedBy == "depth");
+}
+
+TEST_CASE("search limits: the state cap and the memory guard stop with a message; an exhausted space says so") {
+  SearchProblem pb = flipProblem("4-4v");
+  SearchOptions o;
+  o.maxDepth = 6;
+  o.maxStates = 20;
+  o.symmetry = true;
+  SearchResult capped = searchDecomposition(pb, o);
+  CHECK_FALSE(capped.found);
+  CHECK(capped.stoppedBy == "states");
+  CHECK(capped.message == "stopped at the state cap (--max-states 20) during depth 3");
+  CHECK(capped.statesExplored > 20);
+  o.maxStates = 1000000;
+  o.maxMemoryMB = 0.01;
+  SearchResult guarded = searchDecomposition(pb, o);
+  CHECK(guarded.stoppedBy == "memory");
+  CHECK(guarded.message.rfind("stopped by the memory guard (--max-memory 0 MB; ", 0) == 0);
+  // Hex pulls alone: the 2-6 before side (two hexes) has no hex pull, so the start side is empty
+  // after one level and no sequence of any length exists.
+  o = SearchOptions{};
+  o.maxDepth = 9;
+  o.ops = {OpKind::HexPull};
+  SearchResult none = searchDecomposition(flipProblem("2-6"), o);
+  CHECK_FALSE(none.found);
+  CHECK(none.stoppedBy == "exhausted");
+  CHECK(none.depthSearched == 1);
+  CHECK(none.statesExplored == 2);
+}
+
+#include "ops/candidates.hpp"
+
+TEST_CASE("invariants behind the search bounds: each operation's change of H and of V - H") {
+  // Chord push and pull change H by +2 / -2 and keep V - H; the hex push adds 4 hexes. So a
+  // sequence of chord pushes and pulls doing a hex push has (pushes - pulls) = 2: its length is
+  // even. Pillows and face collapses (and their inverses) are the only steps that change V - H.
+  const uint32_t seed = 77;
+  std::printf("invariants seed %u\n", seed);
+  std::mt19937 rng(seed);
+  SearchProblem pb = flipProblem("2-6");
+  Complex cx = pb.start;
+  const Counts goal = pb.goal.counts(), start = pb.start.counts();
+  CHECK(goal.hexes - start.hexes == 4);
+  CHECK(goal.vertices - goal.hexes == start.vertices - start.hexes);
+  int pushes = 0, pulls = 0;
+  for (int step = 0; step < 8; ++step) {
+    OpKind kind = step % 3 == 2 ? OpKind::ChordPull : OpKind::ChordPush;
+    auto cs = candidates(cx, kind);
+    if (cs.empty()) continue;
+    OpResult r = applyStep(cx, cs[rng() % cs.size()]);
+    CHECK(r.dH == (kind == OpKind::ChordPush ? 2 : -2));
+    CHECK(r.dV == r.dH);
+    (kind == OpKind::ChordPush ? pushes : pulls) += 1;
+  }
+  CHECK(pushes >= 4);
+  CHECK(pulls >= 1);
+  Complex g = pb.start;
+  auto hp = candidates(g, OpKind::HexPush);
+  REQUIRE_FALSE(hp.empty());
+  OpResult r = applyStep(g, hp[0]);
+  CHECK(r.dH == 4);
+  CHECK(r.dV - r.dH == 0);
+  Complex p = pb.start;
+  auto pl = candidates(p, OpKind::Pillow);
+  REQUIRE_FALSE(pl.empty());
+  OpResult rp = applyStep(p, pl[0]);
+  CHECK(rp.dV - rp.dH == 2);
+}
