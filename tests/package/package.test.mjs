@@ -57,6 +57,15 @@ test('the tarball holds the entries, the .wasm, the types and the LICENSE, and n
   assert.ok(gz <= 285000, `${gz} bytes gzipped`);
 });
 
+test("Node: the README's example runs as written from the installed tarball", () => {
+  const readme = readFileSync(join(root, 'README.md'), 'utf8');
+  const block = readme.match(/```js\n(import \{ init, Mesh[^]*?)```/);
+  assert.ok(block, 'README has the package example');
+  const dir = project('readme');
+  writeFileSync(join(dir, 'readme.mjs'), `${block[1]}console.log('done', r.inverse, svg.slice(0, 4));\n`);
+  assert.equal(run('node', ['readme.mjs'], dir).trim(), 'done unpillow h27 <svg');
+});
+
 test('Node: examples/node runs from the installed tarball (ESM, no flags)', () => {
   const dir = project('node', 'node');
   const out = run('node', ['main.mjs'], dir);
