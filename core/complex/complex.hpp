@@ -224,6 +224,9 @@ class Complex {
   struct VertexStar {
     std::vector<std::pair<HexId, int>> corners;
     std::vector<int> link;  // union-find over 3 edge incidences per corner
+    // Open-addressing index of corners (key hex << 3 | corner, value place + 1): finding a
+    // neighbour corner costs O(1) instead of a scan of the star (large after many pillows).
+    std::vector<uint64_t> index;
     int64_t edges = 0, boundarySides = 0;
   };
   void walkStar(HexId h, int corner, VertexStar& star) const;

@@ -232,4 +232,34 @@ constexpr std::array<EdgeStep, 12 * 6 * 6 * 8> makeEdgeSteps() {
 }
 inline constexpr auto kEdgeSteps = makeEdgeSteps();
 
+// One step of a walk round a vertex: corner c of a hex left through its face along axis k
+// (facesOfCorner(c)[k]) into face f2 of the neighbour with orientation o arrives at the
+// neighbour's corner `corner`; the corner's two edges in that face (along axes k+1 and k+2, mod 3)
+// arrive as the neighbour's edges along axes `axis[0]` and `axis[1]`. Index ((c*3+k)*6+f2)*8+o.
+struct CornerStep {
+  int8_t corner = -1;
+  std::array<int8_t, 2> axis{};
+};
+constexpr int cornerStepIndex(int c, int k, int f2, int o) { return ((c * 3 + k) * 6 + f2) * 8 + o; }
+constexpr std::array<CornerStep, 8 * 3 * 6 * 8> makeCornerSteps() {
+  std::array<CornerStep, 8 * 3 * 6 * 8> t{};
+  for (int c = 0; c < 8; ++c)
+    for (int k = 0; k < 3; ++k) {
+      const int f = 2 * k + cornerBit(c, k);
+      for (int f2 = 0; f2 < 6; ++f2)
+        for (int o = 0; o < 8; ++o) {
+          auto image = [&](int corner) { return kFaceCorners[f2][mapPosition(positionInFace(f, corner), o)]; };
+          CornerStep s;
+          s.corner = int8_t(image(c));
+          for (int i = 0; i < 2; ++i) {
+            const int other = flipAxis(c, (k + 1 + i) % 3);  // the far corner of c's edge along that axis
+            s.axis[i] = int8_t(axisOfEdge(edgeBetween(s.corner, image(other))));
+          }
+          t[cornerStepIndex(c, k, f2, o)] = s;
+        }
+    }
+  return t;
+}
+inline constexpr auto kCornerSteps = makeCornerSteps();
+
 }  // namespace hexdual::tables

@@ -249,6 +249,18 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
   st.corners.assign(1, {h0, c0});
   st.link.assign({0, 1, 2});
   st.boundarySides = 0;
+  // A valid star has refs_[v] corners; the index holds at least twice that (grown if ever exceeded).
+  size_t cap = 16;
+  while (cap < 2 * size_t(refs_[size_t(verts_[size_t(h0)][size_t(c0)])])) cap *= 2;
+  st.index.assign(cap, 0);
+  auto key = [](HexId h, int c) { return uint64_t(uint32_t(h)) << 3 | uint64_t(c); };
+  auto probe = [&](uint64_t k) {  // the index entry of k, or the empty entry where it belongs
+    size_t i = size_t((k * 0x9E3779B97F4A7C15ull) >> 40) & (st.index.size() - 1);
+    while (st.index[i] && (st.index[i] >> 32) != k) i = (i + 1) & (st.index.size() - 1);
+    return i;
+  };
+  auto insert = [&](uint64_t k, size_t place) { st.index[probe(k)] = k << 32 | uint64_t(place + 1); };
+  insert(key(h0, c0), 0);
   auto root = [&](int x) {
     while (st.link[size_t(x)] != x) x = st.link[size_t(x)] = st.link[size_t(st.link[size_t(x)])];
     return x;
@@ -256,26 +268,33 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
   int classes = 3;
   for (size_t i = 0; i < st.corners.size(); ++i) {
     const auto [h, c] = st.corners[i];
-    for (int f : facesOfCorner(c)) {
-      const Gluing g = gluing(h, f);
-      if (g.boundary()) {
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t g = glue_[size_t(h)][size_t(2 * k + cornerBit(c, k))];
+      if (g == kBoundary) {
         ++st.boundarySides;
         continue;
       }
-      const int c2 = mappedCorner(h, f, c);
-      size_t j = 0;
-      while (j < st.corners.size() && !(st.corners[j].first == g.hex && st.corners[j].second == c2)) ++j;
+      const HexId n = HexId(g >> 6);
+      const CornerStep& step = kCornerSteps[size_t(cornerStepIndex(c, k, int((g >> 3) & 7), int(g & 7)))];
+      const uint64_t k2 = key(n, step.corner);
+      const uint64_t at = st.index[probe(k2)];
+      size_t j = at ? size_t(at & 0xFFFFFFFFu) - 1 : st.corners.size();
       if (j == st.corners.size()) {
-        st.corners.push_back({g.hex, c2});
-        for (int k = 0; k < 3; ++k) st.link.push_back(int(3 * j) + k);
+        st.corners.push_back({n, step.corner});
+        if (2 * st.corners.size() > st.index.size()) {
+          st.index.assign(2 * st.index.size(), 0);
+          for (size_t q = 0; q < st.corners.size(); ++q) insert(key(st.corners[q].first, st.corners[q].second), q);
+        } else {
+          insert(k2, j);
+        }
+        for (int a = 0; a < 3; ++a) st.link.push_back(int(3 * j) + a);
         classes += 3;
+      } else if (j < i) {
+        continue;  // this quad was crossed from corner j's side already: the same edges were joined
       }
-      // The two edges of c in face f (along the axes other than f's normal) and their images.
-      for (int e : edgesOfCorner(c)) {
-        if (axisOfEdge(e) == axisOfFace(f)) continue;
-        const int d = kEdgeCorners[size_t(e)][0] == c ? kEdgeCorners[size_t(e)][1] : kEdgeCorners[size_t(e)][0];
-        const int e2 = edgeBetween(c2, mappedCorner(h, f, d));
-        const int x = root(int(3 * i) + axisOfEdge(e)), y = root(int(3 * j) + axisOfEdge(e2));
+      // The two edges of c in the face (along the axes other than its normal) and their images.
+      for (int e = 0; e < 2; ++e) {
+        const int x = root(int(3 * i) + (k + 1 + e) % 3), y = root(int(3 * j) + step.axis[size_t(e)]);
         if (x != y) {
           st.link[size_t(std::max(x, y))] = std::min(x, y);
           --classes;
