@@ -40,12 +40,28 @@ namespace {
 
 constexpr uint16_t kNearBoundary = kEdgeNearBoundary;
 
-// Drops the slots no longer labelled `id`, keeping the order.
-void keepLabelled(std::vector<Slot>& slots, const std::vector<std::array<int32_t, 3>>& of, int32_t id) {
-  size_t k = 0;
-  for (Slot t : slots)
-    if (of[size_t(t.hex)][size_t(t.axis)] == id) slots[k++] = t;
-  slots.resize(k);
+// Drops from `slots` (sorted) the slots of `leaving` (sorted) no longer labelled `id`, keeping the
+// order: found by binary search, and only the part after the first one is moved.
+void dropLeaving(std::vector<Slot>& slots, const std::vector<Slot>& leaving, const std::vector<std::array<int32_t, 3>>& of,
+                 int32_t id) {
+  std::vector<size_t> at;
+  auto from = slots.begin();
+  for (Slot t : leaving) {
+    if (of[size_t(t.hex)][size_t(t.axis)] == id) continue;
+    from = std::lower_bound(from, slots.end(), t);
+    if (from == slots.end()) break;
+    if (*from == t) at.push_back(size_t(from - slots.begin()));
+  }
+  if (at.empty()) return;
+  size_t w = at[0], k = 0;
+  for (size_t i = at[0]; i < slots.size(); ++i) {
+    if (k < at.size() && at[k] == i) {
+      ++k;
+      continue;
+    }
+    slots[w++] = slots[i];
+  }
+  slots.resize(w);
 }
 
 // The sheet or chord ids on the slots of these hexes, ascending, once each.
@@ -679,34 +695,40 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
   // self-intersection count redone around it.
   std::vector<std::vector<Slot>> joining(parent.size());
   size_t relabelled = 0;
-  auto join = [&](size_t g, const std::vector<Slot>& run) {  // run sorted
+  auto join = [&](size_t g, const std::vector<Slot>& run) {  // run sorted: merged in place from the back
     auto& slots = dual_.sheets[size_t(keepOf[g])].slots;
-    std::vector<Slot> both(slots.size() + run.size());
-    std::merge(slots.begin(), slots.end(), run.begin(), run.end(), both.begin());
-    slots = std::move(both);
+    size_t i = slots.size(), j = run.size(), k = i + j;
+    slots.resize(k);
+    while (j > 0) slots[--k] = i > 0 && run[j - 1] < slots[i - 1] ? slots[--i] : run[--j];
   };
-  for (size_t g = 0; g < parent.size(); ++g) {
-    const int32_t keep = keepOf[g];
-    if (keep < 0) continue;
-    auto& slots = dual_.sheets[size_t(keep)].slots;
-    keepLabelled(slots, sheetOf, keep);
-  }
+  // The kept sheets lose only slots of dead hexes and of pieces: found by binary search, not by a scan.
+  std::vector<Slot> leaving;
+  for (HexId h : touched)
+    if (!cx.isHex(h))
+      for (int a = 0; a < 3; ++a) leaving.push_back({h, a});
+  for (const auto& piece : pieces) leaving.insert(leaving.end(), piece.begin(), piece.end());
+  std::sort(leaving.begin(), leaving.end());
+  for (size_t g = 0; g < parent.size(); ++g)
+    if (keepOf[g] >= 0) dropLeaving(dual_.sheets[size_t(keepOf[g])].slots, leaving, sheetOf, keepOf[g]);
   for (int32_t x : merged) {
     const size_t g = size_t(owner[oldIndex(x)]);
     const int32_t keep = keepOf[g];
     const int8_t turn = flipOf[oldIndex(x)] ? -1 : 1;
     std::vector<Slot> run = std::move(dual_.sheets[size_t(x)].slots);
-    keepLabelled(run, sheetOf, x);
+    size_t kept = 0;  // the run keeps its slots still labelled x (not dead, not in a piece)
     for (size_t i = 0; i < run.size();) {
       const HexId h = run[i].hex;
       const bool alone = !std::binary_search(recount.begin(), recount.end(), h);
       if (alone) countSelfHex(h, -1);
       for (; i < run.size() && run[i].hex == h; ++i) {
+        if (label(run[i]) != x) continue;
         signs[slotIndex(run[i])] = int8_t(signs[slotIndex(run[i])] * turn);
         move(run[i], keep);
+        run[kept++] = run[i];
       }
       if (alone) countSelfHex(h, +1);
     }
+    run.resize(kept);
     relabelled += run.size();
     join(g, run);
     dual_.sheets[size_t(x)].slots.clear();
