@@ -909,11 +909,11 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
   auto walk = [&](Slot s, Chord& ch, std::vector<int32_t>& previous) {
     ch.id = kTemp;
     walkChord(cx, s, ch, chordOf, &previous);
-    for (Slot t : ch.slots) {  // a hex met twice (walked_ is free between refreshes)
-      ch.selfIntersecting = ch.selfIntersecting || walked_[size_t(t.hex)];
-      walked_[size_t(t.hex)] = 1;
+    // A hex met twice has another slot labelled kTemp (read from the lines the walk just wrote).
+    for (Slot t : ch.slots) {
+      const int32_t* of = chordOf + 3 * size_t(t.hex);
+      ch.selfIntersecting = ch.selfIntersecting || of[(t.axis + 1) % 3] == kTemp || of[(t.axis + 2) % 3] == kTemp;
     }
-    for (Slot t : ch.slots) walked_[size_t(t.hex)] = 0;
   };
   // A chord whose touched slots still have the same neighbours along it (read from the slot's
   // place in its list) is unchanged: it is not re-walked.
