@@ -314,13 +314,19 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
 std::vector<int32_t> extractChords(const Complex& cx, Dual& d) {
   int32_t* chordOf = d.chordOf.empty() ? nullptr : d.chordOf[0].data();
   std::vector<ChordWalk> walks;
+  Chord scratch;  // walked into one reused buffer, then copied to an exactly sized list (no regrowth per chord)
   for (HexId h : cx.hexes())
     for (int f = 0; f < 6; ++f) {
       if (!cx.isBoundary({h, f}) || chordOf[slotIndex(h, axisOfFace(f))] >= 0) continue;
+      scratch.id = int32_t(d.chords.size());
+      scratch.slots.clear();
+      walks.push_back(walkChordForward(cx, {h, axisOfFace(f)}, oppositeFace(f), scratch, chordOf));
       Chord ch;
-      ch.id = int32_t(d.chords.size());
-      walks.push_back(walkChordForward(cx, {h, axisOfFace(f)}, oppositeFace(f), ch, chordOf));
-      if (!walks.back().smallestEnteredLow) std::reverse(ch.slots.begin(), ch.slots.end());
+      ch.id = scratch.id;
+      if (walks.back().smallestEnteredLow)
+        ch.slots.assign(scratch.slots.begin(), scratch.slots.end());
+      else
+        ch.slots.assign(scratch.slots.rbegin(), scratch.slots.rend());
       d.chords.push_back(std::move(ch));
     }
   for (HexId h : cx.hexes())
