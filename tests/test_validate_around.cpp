@@ -115,3 +115,34 @@ TEST_CASE("validateAround: two hexes touching at one vertex: its link is not con
           cx.validateAround({0, 1});
         }) == "validate: vertex " + std::to_string(a[6]) + " is non-manifold: its link is not connected");
 }
+
+TEST_CASE(
+    "validateAround in a transaction: the links its edits changed are checked, the others were valid at its start") {
+  // Ungluing the quad between the two hexes of a 2x1x1 grid splits the links of its 4 vertices.
+  Complex grid = makeGrid(2, 1, 1);
+  grid.beginTransaction();
+  grid.unglue(0, 1);
+  const VertexId first = std::min({grid.vertex(0, 1), grid.vertex(0, 2), grid.vertex(0, 5), grid.vertex(0, 6)});
+  CHECK(errorOf([&] {
+          grid.validateAround({0, 1});
+        }) == "validate: vertex " + std::to_string(first) + " is non-manifold: its link is not connected");
+  grid.rollbackTransaction();
+  CHECK(errorOf([&] { grid.validateAround({0, 1}); }) == "");
+
+  // Two hexes touching at one vertex, made before the transaction: an edit that moves a vertex
+  // (no topological edit) leaves that link unchecked; outside a transaction it is checked.
+  Complex cx;
+  std::array<VertexId, 8> a{}, b{};
+  for (int c = 0; c < 8; ++c) a[size_t(c)] = cx.addVertex({double(c), 0, 0});
+  b[0] = a[6];
+  for (int c = 1; c < 8; ++c) b[size_t(c)] = cx.addVertex({double(c), 1, 0});
+  cx.addHex(a);
+  cx.addHex(b);
+  cx.beginTransaction();
+  cx.setPosition(a[0], {0, 0, 1});
+  CHECK(errorOf([&] { cx.validateAround({0, 1}); }) == "");
+  cx.rollbackTransaction();
+  CHECK(errorOf([&] {
+          cx.validateAround({0, 1});
+        }) == "validate: vertex " + std::to_string(a[6]) + " is non-manifold: its link is not connected");
+}

@@ -189,7 +189,8 @@ class Complex {
   const std::vector<VertexId>& nonManifoldVertices() const { return nonManifold_; }
   void setNonManifoldVertices(std::vector<VertexId> v) { nonManifold_ = std::move(v); }
   // Checks the invariants that an edit of these hexes can break: their gluings, their 8 distinct
-  // vertices, and the links of their vertices (found by walking, so this is local).
+  // vertices, and the links of their vertices (found by walking, so this is local); inside a
+  // transaction, only the links of those vertices whose star its edits changed.
   void validateAround(const std::vector<HexId>& hexes) const;
 
   // ---- transactions: every edit between begin and rollback is undone exactly ----
@@ -230,6 +231,7 @@ class Complex {
     int64_t edges = 0, boundarySides = 0;
   };
   void walkStar(HexId h, int corner, VertexStar& star) const;
+  std::vector<VertexId> verticesWithEditedStars() const;
 
   std::vector<std::array<VertexId, 8>> verts_;
   std::vector<std::array<uint32_t, 6>> glue_;

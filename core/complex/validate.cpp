@@ -230,16 +230,50 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
     }
   }
   // Vertex links, found by walking from the first corner met: connected, and a sphere or a disk.
+  // Inside a transaction only the links its edits changed (the complex was valid at its start).
   std::sort(firstCorner.begin(), firstCorner.end());
+  const std::vector<VertexId> changed = journaling_ ? verticesWithEditedStars() : std::vector<VertexId>{};
   VertexStar star;
   for (size_t i = 0; i < firstCorner.size(); ++i) {
     const VertexId v = VertexId(firstCorner[i] >> 32);
     if ((i > 0 && (firstCorner[i - 1] >> 32) == uint64_t(uint32_t(v))) || tolerated(nonManifold_, v)) continue;
+    if (journaling_ && !std::binary_search(changed.begin(), changed.end(), v)) continue;
     walkStar(hexList[size_t((firstCorner[i] & 0xFFFFFFFFu) >> 3)], int(firstCorner[i] & 7u), star);
     if ((int32_t)star.corners.size() != refs_[v]) fail("vertex " + std::to_string(v) + " is non-manifold: its link is not connected");
     std::string why = linkEulerProblem(star.edges, int64_t(star.corners.size()), star.boundarySides);
     if (!why.empty()) fail("vertex " + std::to_string(v) + " " + why);
   }
+}
+
+// A vertex's link changes only when a corner at it is added, removed or re-pointed, or a face at it
+// is glued or unglued: the vertices of the open transaction's edits, ascending (a superset).
+std::vector<VertexId> Complex::verticesWithEditedStars() const {
+  std::vector<VertexId> out;
+  auto addFace = [&](HexId h, int f) {
+    for (int c : kFaceCorners[size_t(f)]) out.push_back(verts_[size_t(h)][size_t(c)]);
+  };
+  for (const Edit& e : journal_) {
+    switch (e.kind) {
+      case Edit::AddHex:
+      case Edit::RemoveHex:
+        out.insert(out.end(), verts_[size_t(e.hex)].begin(), verts_[size_t(e.hex)].end());
+        break;
+      case Edit::SetCorner:
+        out.push_back(VertexId(e.value));
+        out.push_back(verts_[size_t(e.hex)][size_t(e.face)]);
+        break;
+      case Edit::Glue:
+      case Edit::Unglue:
+        addFace(e.hex, e.face);
+        addFace(HexId(e.value >> 6), int((e.value >> 3) & 7));
+        break;
+      default:
+        break;
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 // The star of a vertex by walking gluings from one corner: its corners, its boundary sides, and its
