@@ -39,6 +39,7 @@ int slotsOnSheet(const std::array<int32_t, 3>& s, int32_t id) { return (s[0] == 
 namespace {
 
 constexpr uint16_t kNearBoundary = kEdgeNearBoundary;
+constexpr uint16_t kWalkedFan = uint16_t(1u << 15);  // in walked_: one of the hex's edges walked is a fan
 
 // Drops from `slots` (sorted) the slots of `leaving` (sorted) no longer labelled `id`, keeping the
 // order: found by binary search, and only the part after the first one is moved.
@@ -159,11 +160,12 @@ void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& tou
     if (!cx.isHex(h)) continue;
     for (int e = 0; e < 12; ++e) {
       if ((walked_[size_t(h)] >> e) & 1u) continue;
-      fan = !edgeIncidences(cx, {h, e}, inc) || fan;
+      const bool closed = edgeIncidences(cx, {h, e}, inc);
+      fan = fan || !closed;
       const EdgeRef least = *std::min_element(inc.begin(), inc.end());
       for (EdgeRef r : inc) {
         if (!walked_[size_t(r.hex)]) met.push_back(r.hex);
-        walked_[size_t(r.hex)] |= uint16_t(1u << r.edge);
+        walked_[size_t(r.hex)] |= uint16_t((1u << r.edge) | (closed ? 0u : kWalkedFan));
         const uint16_t bit = uint16_t(1u << r.edge);
         if (((edgeMarks_[size_t(r.hex)] & bit) != 0) != (r == least)) {
           edgeMarks_[size_t(r.hex)] ^= bit;
@@ -172,11 +174,14 @@ void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& tou
       }
     }
   }
-  for (HexId m : met) walked_[size_t(m)] = 0;
-  // Only an edge through a touched hex can have reached or left the boundary.
+  // Only an edge through a touched hex can have reached or left the boundary: a hex met is near
+  // it when one of those is a fan now, or (when it was near before) one of its other edges is.
   if (fan || nearBefore)
-    for (HexId m : met)
-      edgeMarks_[size_t(m)] = uint16_t((edgeMarks_[size_t(m)] & ~kNearBoundary) | (nearBoundary(cx, m) ? kNearBoundary : 0));
+    for (HexId m : met) {
+      const bool near = (walked_[size_t(m)] & kWalkedFan) || ((edgeMarks_[size_t(m)] & kNearBoundary) && nearBoundary(cx, m));
+      edgeMarks_[size_t(m)] = uint16_t((edgeMarks_[size_t(m)] & ~kNearBoundary) | (near ? kNearBoundary : 0));
+    }
+  for (HexId m : met) walked_[size_t(m)] = 0;
   for (Slot s : dirty) {
     const int8_t now = slotShare(cx, s.hex, s.axis, edgeMarks_[size_t(s.hex)]);
     int8_t& old = share_[slotIndex(s)];
