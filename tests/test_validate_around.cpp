@@ -28,6 +28,17 @@ Complex gluedPair(int f, int f2, int o) {
   cx.glue(0, f, 1, f2, o);
   return cx;
 }
+// Two hexes touching only at one vertex (hex 0's corner 6 is hex 1's corner 0), made without validation.
+Complex touchingAtOneVertex(VertexId& shared) {
+  Complex cx;
+  std::array<VertexId, 8> a{}, b{};
+  for (int c = 0; c < 8; ++c) a[size_t(c)] = cx.addVertex({double(c), 0, 0});
+  b[0] = shared = a[6];
+  for (int c = 1; c < 8; ++c) b[size_t(c)] = cx.addVertex({double(c), 1, 0});
+  cx.addHex(a);
+  cx.addHex(b);
+  return cx;
+}
 }  // namespace
 
 TEST_CASE("validateAround: two hexes glued by every face pair and orientation have disk links") {
@@ -104,16 +115,11 @@ TEST_CASE("validateAround: a boundary vertex with a large star after repeated pi
 }
 
 TEST_CASE("validateAround: two hexes touching at one vertex: its link is not connected") {
-  Complex cx;
-  std::array<VertexId, 8> a{}, b{};
-  for (int c = 0; c < 8; ++c) a[size_t(c)] = cx.addVertex({double(c), 0, 0});
-  b[0] = a[6];
-  for (int c = 1; c < 8; ++c) b[size_t(c)] = cx.addVertex({double(c), 1, 0});
-  cx.addHex(a);
-  cx.addHex(b);
+  VertexId shared = -1;
+  Complex cx = touchingAtOneVertex(shared);
   CHECK(errorOf([&] {
           cx.validateAround({0, 1});
-        }) == "validate: vertex " + std::to_string(a[6]) + " is non-manifold: its link is not connected");
+        }) == "validate: vertex " + std::to_string(shared) + " is non-manifold: its link is not connected");
 }
 
 TEST_CASE(
@@ -131,18 +137,13 @@ TEST_CASE(
 
   // Two hexes touching at one vertex, made before the transaction: an edit that moves a vertex
   // (no topological edit) leaves that link unchecked; outside a transaction it is checked.
-  Complex cx;
-  std::array<VertexId, 8> a{}, b{};
-  for (int c = 0; c < 8; ++c) a[size_t(c)] = cx.addVertex({double(c), 0, 0});
-  b[0] = a[6];
-  for (int c = 1; c < 8; ++c) b[size_t(c)] = cx.addVertex({double(c), 1, 0});
-  cx.addHex(a);
-  cx.addHex(b);
+  VertexId shared = -1;
+  Complex cx = touchingAtOneVertex(shared);
   cx.beginTransaction();
-  cx.setPosition(a[0], {0, 0, 1});
+  cx.setPosition(cx.vertex(0, 0), {0, 0, 1});
   CHECK(errorOf([&] { cx.validateAround({0, 1}); }) == "");
   cx.rollbackTransaction();
   CHECK(errorOf([&] {
           cx.validateAround({0, 1});
-        }) == "validate: vertex " + std::to_string(a[6]) + " is non-manifold: its link is not connected");
+        }) == "validate: vertex " + std::to_string(shared) + " is non-manifold: its link is not connected");
 }

@@ -253,22 +253,14 @@ std::vector<VertexId> Complex::verticesWithEditedStars() const {
     for (int c : kFaceCorners[size_t(f)]) out.push_back(verts_[size_t(h)][size_t(c)]);
   };
   for (const Edit& e : journal_) {
-    switch (e.kind) {
-      case Edit::AddHex:
-      case Edit::RemoveHex:
-        out.insert(out.end(), verts_[size_t(e.hex)].begin(), verts_[size_t(e.hex)].end());
-        break;
-      case Edit::SetCorner:
-        out.push_back(VertexId(e.value));
-        out.push_back(verts_[size_t(e.hex)][size_t(e.face)]);
-        break;
-      case Edit::Glue:
-      case Edit::Unglue:
-        addFace(e.hex, e.face);
-        addFace(HexId(e.value >> 6), int((e.value >> 3) & 7));
-        break;
-      default:
-        break;
+    if (e.kind == Edit::AddHex || e.kind == Edit::RemoveHex) {
+      out.insert(out.end(), verts_[size_t(e.hex)].begin(), verts_[size_t(e.hex)].end());
+    } else if (e.kind == Edit::SetCorner) {
+      out.push_back(VertexId(e.value));
+      out.push_back(verts_[size_t(e.hex)][size_t(e.face)]);
+    } else if (e.kind == Edit::Glue || e.kind == Edit::Unglue) {
+      addFace(e.hex, e.face);
+      addFace(HexId(e.value >> 6), int((e.value >> 3) & 7));
     }
   }
   std::sort(out.begin(), out.end());
