@@ -54,7 +54,7 @@ namespace {
 struct HostSnapshot {
   std::vector<HexId> host;
   std::vector<std::array<VertexId, 8>> verts;
-  std::vector<std::array<Gluing, 6>> hostGlue;             // gluings to host hexes (else boundary/region marker)
+  std::vector<std::array<Gluing, 6>> hostGlue;           // gluings to host hexes (else boundary/region marker)
   std::vector<std::vector<std::vector<EdgeRef>>> edges;  // per host hex, per edge: host incidences on its cycle
 };
 
@@ -139,7 +139,8 @@ bool freshClosedStar(const Complex& cx, HexId h, int e, std::vector<EdgeRef>& se
 // loop's k-th edge, f_k and f_k+1 share an edge across the loop (so do the g's). Each loop is
 // started once, at its smallest edge walked from its smaller vertex; both sides of f_0 are tried
 // (the side of f_0 keeps the loop's vertex ids). Every quad must have a region side.
-void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int maxLen, std::vector<OpStep>& out) {
+void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int maxLen, bool prefilter,
+                      std::vector<OpStep>& out) {
   if (maxLen < 2) return;
   auto verts = [&](QuadSide s) {
     std::array<VertexId, 4> v;
@@ -149,7 +150,8 @@ void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int max
   auto other = [&](QuadSide s, VertexId v, VertexId away) {  // v's neighbour in quad s other than `away`
     auto fv = verts(s);
     for (int p = 0; p < 4; ++p)
-      if (fv[size_t(p)] == v) return fv[size_t((p + 1) & 3)] == away ? fv[size_t((p + 3) & 3)] : fv[size_t((p + 1) & 3)];
+      if (fv[size_t(p)] == v)
+        return fv[size_t((p + 1) & 3)] == away ? fv[size_t((p + 3) & 3)] : fv[size_t((p + 1) & 3)];
     return VertexId(-1);
   };
   auto cornerIn = [&](HexId h, VertexId v) {
@@ -183,9 +185,11 @@ void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int max
     VertexId wf = other(f, at, from), wg = other(g, at, from);
     if (at == loop[0]) {  // back at the start: f_0 and g_0 must continue the strips
       QuadSide f0 = bands[0].first, g0 = bands[0].second;
-      if (k >= 2 && other(f0, at, loop[1]) == wf && other(g0, at, loop[1]) == wg && edgeOf(f0, at, wf) == edgeOf(f, at, wf) &&
-          edgeOf(g0, at, wg) == edgeOf(g, at, wg))
+      if (k >= 2 && other(f0, at, loop[1]) == wf && other(g0, at, loop[1]) == wg &&
+          edgeOf(f0, at, wf) == edgeOf(f, at, wf) && edgeOf(g0, at, wg) == edgeOf(g, at, wg))
         for (QuadSide s0 : {f0, QuadSide{cx.gluing(f0).hex, cx.gluing(f0).face}}) {
+          // The hex across f_0 from s0 gets new ids for the loop's vertices: never a host hex.
+          if (prefilter && isHost(host, cx.gluing(s0).hex)) continue;
           OpStep st{OpKind::RingSplit, {OpArg::of(s0, g0)}, 0};
           for (size_t j = 1; j < k; ++j) st.args.push_back(OpArg::of(bands[j].first, bands[j].second));
           out.push_back(st);
@@ -217,7 +221,8 @@ void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int max
       EdgeRef ce;
       ops::EdgeStar st;
       if (!freshClosedStar(cx, h, e, seen, ce, st)) continue;
-      VertexId a = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][0]), b = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][1]);
+      VertexId a = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][0]),
+               b = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][1]);
       if (b < a) std::swap(a, b);
       std::vector<QuadSide> qs;
       for (size_t k = 0; k < st.inc.size(); ++k) qs.push_back(cx.canonical(QuadSide{st.inc[k].hex, st.exitFace[k]}));
@@ -233,9 +238,104 @@ void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int max
     }
 }
 
+// The vertices of f and g next to a and to b (e = ab), as arcSplit finds them (TK03 §4.1, §4.4):
+// chord push and face collapse reject f and g when these meet (the quads share more than e).
+struct ArcEnds {
+  VertexId fa, fb, ga, gb;
+  bool distinct() const {
+    return fa >= 0 && fb >= 0 && ga >= 0 && gb >= 0 && fa != ga && fa != gb && fb != ga && fb != gb;
+  }
+};
+ArcEnds arcEnds(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
+  const VertexId a = cx.vertex(e.hex, kEdgeCorners[size_t(e.edge)][0]),
+                 b = cx.vertex(e.hex, kEdgeCorners[size_t(e.edge)][1]);
+  auto neighbourOf = [&](QuadSide q, VertexId v, VertexId away) {
+    std::array<VertexId, 4> fv;
+    for (int p = 0; p < 4; ++p) fv[size_t(p)] = cx.vertex(q.hex, kFaceCorners[size_t(q.face)][size_t(p)]);
+    for (int p = 0; p < 4; ++p)
+      if (fv[size_t(p)] == v)
+        return fv[size_t((p + 1) & 3)] == away ? fv[size_t((p + 3) & 3)] : fv[size_t((p + 1) & 3)];
+    return VertexId(-1);
+  };
+  return {neighbourOf(f, a, b), neighbourOf(f, b, a), neighbourOf(g, a, b), neighbourOf(g, b, a)};
+}
+
+// Necessary conditions for faceCollapse(e, f, g) to give a valid local state, cheaper than trying
+// it: f = (a,b,c,d) and g = (a,b,c',d') merge c with c' and d with d' (TK03 §4.4; the spec's
+// face open-collapse), renaming every corner of the merged vertices. So no hex may have both
+// vertices of a pair (it would use one vertex at two corners), and not both may be host vertices
+// (a host hex would change its vertices: not local).
+bool faceCollapseMayApply(const Complex& cx, const std::vector<HexId>& host, const ArcEnds& ends) {
+  auto hexHas = [&](HexId h, VertexId v) {
+    for (int c = 0; c < 8; ++c)
+      if (cx.vertex(h, c) == v) return true;
+    return false;
+  };
+  for (auto [x, y] : {std::pair{ends.fa, ends.ga}, std::pair{ends.fb, ends.gb}}) {
+    bool xHost = false, yHost = false;
+    for (HexId h : cx.hexes()) {
+      bool hx = hexHas(h, x), hy = hexHas(h, y);
+      if (hx && hy) return false;
+      if (isHost(host, h)) xHost = xHost || hx, yHost = yHost || hy;
+    }
+    if (xHost && yHost) return false;
+  }
+  return true;
+}
+
+// Necessary conditions for ringCollapse(e) to give a local state: the chord through e's hex along
+// e's axis closes without passing a hex twice (else the operation rejects it), none of its hexes is
+// a host hex (the collapse removes them), and no hex of it merges two host vertices (per ring hex,
+// the corners of e's diagonal edge, carried round the ring, merge with those of the opposite edge;
+// a host hex would change its vertices). The walk is the operation's own (TK03 §4.4).
+bool ringCollapseMayApply(const Complex& cx, const std::vector<uint8_t>& hostVertex, const std::vector<HexId>& host,
+                          EdgeRef e) {
+  const int axis0 = axisOfEdge(e.edge);
+  HexId h = e.hex;
+  int exit = 2 * axis0 + 1, diag = e.edge;
+  std::vector<HexId> ring;
+  auto hostV = [&](VertexId v) { return size_t(v) < hostVertex.size() && hostVertex[size_t(v)]; };
+  for (;;) {
+    if (isHost(host, h) || std::find(ring.begin(), ring.end(), h) != ring.end()) return false;
+    ring.push_back(h);
+    for (int k = 0; k < 2; ++k) {
+      VertexId v1 = cx.vertex(h, kEdgeCorners[size_t(diag)][size_t(k)]),
+               v2 = cx.vertex(h, kEdgeCorners[size_t(diag ^ 3)][size_t(k)]);
+      if (v1 != v2 && hostV(v1) && hostV(v2)) return false;
+    }
+    Gluing g = cx.gluing(h, exit);
+    if (g.boundary()) return false;
+    const int a2 = axisOfFace(g.face);
+    const int c = positionInFace(exit, kEdgeCorners[size_t(diag)][0]) >= 0 ? kEdgeCorners[size_t(diag)][0]
+                                                                           : kEdgeCorners[size_t(diag)][1];
+    diag = edgesOfCorner(cx.mappedCorner(h, exit, c))[size_t(a2)];
+    if (g.hex == ring[0] && a2 == axis0) return true;
+    h = g.hex;
+    exit = oppositeFace(g.face);
+  }
+}
+
+// Necessary conditions for hexPull(r): the 4 side quads of r's hex are glued to 4 distinct region
+// hexes other than the two at r (the ring, which the pull removes: a host hex there is never local).
+bool hexPullMayApply(const Complex& cx, const std::vector<HexId>& host, QuadSide r) {
+  const HexId a = r.hex, b = cx.gluing(r).hex;
+  std::array<HexId, 4> ring{};
+  int n = 0;
+  for (int s = 0; s < 6; ++s) {
+    if (axisOfFace(s) == axisOfFace(r.face)) continue;
+    Gluing g = cx.gluing(a, s);
+    if (g.boundary() || g.hex == a || g.hex == b || isHost(host, g.hex) ||
+        std::find(ring.begin(), ring.begin() + n, g.hex) != ring.begin() + n)
+      return false;
+    ring[size_t(n++)] = g.hex;
+  }
+  return true;
+}
+
 // Candidate steps on region hexes. Cheap exact preconditions (a pillow partner, a blind-chord
 // partner) are checked here so that most rejections cost no exception.
-std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<OpKind>& ops, int ringSplitMax) {
+std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<OpKind>& ops,
+                          int ringSplitMax, bool prefilter = true) {
   using K = OpKind;
   auto use = [&](OpKind op) { return ops.empty() || std::find(ops.begin(), ops.end(), op) != ops.end(); };
   std::vector<OpStep> out;
@@ -243,7 +343,14 @@ std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, con
   auto inRegion = [&](HexId h) { return !isHost(host, h); };
   std::vector<QuadSide> seenQuads;
   std::vector<EdgeRef> seenEdges;
-  for (HexId h : region) {
+  std::vector<uint8_t> hostVertex(size_t(cx.vertexCapacity()), 0);
+  for (HexId h : host)
+    for (VertexId v : cx.hexVertices(h)) hostVertex[size_t(v)] = 1;
+  std::vector<std::array<VertexId, 4>> faceSets;  // per region hex and face: its sorted vertex ids
+  if (use(K::FaceSplit))
+    for (HexId h : region)
+      for (int f = 0; f < 6; ++f) faceSets.push_back(ops::faceVertexSet(cx, h, f));
+  for (const HexId& h : region) {
     if (use(K::Unpillow) && ops::partnerSharing(cx, h, 5) >= 0) out.push_back(makeStep(K::Unpillow, h));
     if (use(K::ChordPull) && ops::partnerSharing(cx, h, 4) >= 0) out.push_back(makeStep(K::ChordPull, h));
     for (int f = 0; f < 6; ++f) {
@@ -254,46 +361,64 @@ std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, con
       if (fresh) seenQuads.push_back(c);
       if (fresh && use(K::Pillow)) out.push_back(makeStep(K::Pillow, QuadSide{h, f}));
       if (fresh && use(K::HexPush) && inRegion(g.hex)) out.push_back(makeStep(K::HexPush, QuadSide{h, f}));
-      if (use(K::HexPull) && inRegion(g.hex)) out.push_back(makeStep(K::HexPull, QuadSide{h, f}));
+      if (use(K::HexPull) && inRegion(g.hex) && (!prefilter || hexPullMayApply(cx, host, {h, f})))
+        out.push_back(makeStep(K::HexPull, QuadSide{h, f}));
     }
     if (use(K::FaceSplit))
       for (int f = 0; f < 6; ++f) {
         Gluing g = cx.gluing(h, f);
         if (g.boundary()) continue;
-        auto key = ops::faceVertexSet(cx, h, f);
-        for (HexId h2 : region)
+        const auto& key = faceSets[size_t(&h - region.data()) * 6 + size_t(f)];
+        for (size_t i2 = 0; i2 < region.size(); ++i2)
           for (int f2 = 0; f2 < 6; ++f2) {
+            const HexId h2 = region[i2];
             if ((h2 == h && f2 == f) || (h2 == g.hex && f2 == g.face) || cx.gluing(h2, f2).boundary()) continue;
-            if (QuadSide{h2, f2} < QuadSide{h, f} || ops::faceVertexSet(cx, h2, f2) != key) continue;
+            if (QuadSide{h2, f2} < QuadSide{h, f} || faceSets[i2 * 6 + size_t(f2)] != key) continue;
             Gluing g2 = cx.gluing(h2, f2);
             // Every choice of sides: the side of sL keeps the vertex ids (host sides must keep theirs).
+            // (The hex across the quad from a's side gets new ids for the split vertices: a host
+            // hex there would change its vertices, so that choice is never local.)
             for (QuadSide a : {QuadSide{h, f}, QuadSide{g.hex, g.face}})
-              for (QuadSide b : {QuadSide{h2, f2}, QuadSide{g2.hex, g2.face}}) out.push_back(makeStep(K::FaceSplit, a, b));
+              for (QuadSide b : {QuadSide{h2, f2}, QuadSide{g2.hex, g2.face}})
+                if (!prefilter || !isHost(host, cx.gluing(a).hex)) out.push_back(makeStep(K::FaceSplit, a, b));
           }
       }
     for (int e = 0; e < 12; ++e) {
-      if (use(K::RingCollapse) && (e & 2) == 0) out.push_back(makeStep(K::RingCollapse, EdgeRef{h, e}));
+      if (use(K::RingCollapse) && (e & 2) == 0 && (!prefilter || ringCollapseMayApply(cx, hostVertex, host, {h, e})))
+        out.push_back(makeStep(K::RingCollapse, EdgeRef{h, e}));
       if (!use(K::ChordPush) && !use(K::FaceCollapse)) continue;
       EdgeRef ce;
       ops::EdgeStar st;
       if (!freshClosedStar(cx, h, e, seenEdges, ce, st)) continue;
       size_t n = st.inc.size();
       auto touches = [&](size_t k) { return inRegion(st.inc[k].hex) || inRegion(st.inc[(k + 1) % n].hex); };
+      // Both operations cut e into one edge per arc (arc L: incidences i+1..j, R: the rest): with
+      // a host hex on both arcs, a host edge would be split, so the move is never local.
+      auto hostOn = [&](size_t from, size_t to) {  // incidences from..to-1, cyclically
+        for (size_t k = from; k != to; k = (k + 1) % n)
+          if (!inRegion(st.inc[k].hex)) return true;
+        return false;
+      };
       for (size_t i = 0; i < n; ++i)
         for (size_t j = i + 1; j < n; ++j) {
           if (!touches(i) || !touches(j)) continue;
+          if (prefilter && hostOn((i + 1) % n, (j + 1) % n) && hostOn((j + 1) % n, (i + 1) % n)) continue;
           QuadSide fi{st.inc[i].hex, st.exitFace[i]}, fj{st.inc[j].hex, st.exitFace[j]};
+          const ArcEnds ends = arcEnds(cx, ce, fi, fj);
+          if (prefilter && !ends.distinct()) continue;
           if (use(K::ChordPush)) out.push_back(makeStep(K::ChordPush, ce, fi, fj));
-          if (use(K::FaceCollapse)) out.push_back(makeStep(K::FaceCollapse, ce, fi, fj));
+          if (use(K::FaceCollapse) && (!prefilter || faceCollapseMayApply(cx, host, ends)))
+            out.push_back(makeStep(K::FaceCollapse, ce, fi, fj));
         }
     }
   }
-  if (use(K::RingSplit)) appendRingSplits(cx, host, ringSplitMax, out);
+  if (use(K::RingSplit)) appendRingSplits(cx, host, ringSplitMax, prefilter, out);
   return out;
 }
 
 // Rewrites a step's hex ids and local indices from complex `from` to the isomorphic `to`.
-OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalLabelling& to, const std::vector<HexId>& host) {
+OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalLabelling& to,
+                     const std::vector<HexId>& host) {
   auto indexOf = [&](HexId h) {
     for (size_t i = 0; i < from.order.size(); ++i)
       if (from.order[i] == h) return int(i);
@@ -312,7 +437,8 @@ OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalL
     int i = indexOf(h);
     h2 = to.order[size_t(i)];
     int corners[4];
-    for (int q = 0; q < 4; ++q) corners[q] = to.frame[size_t(i)][size_t(bitsOf(from.frame[size_t(i)], kFaceCorners[size_t(face)][size_t(q)]))];
+    for (int q = 0; q < 4; ++q)
+      corners[q] = to.frame[size_t(i)][size_t(bitsOf(from.frame[size_t(i)], kFaceCorners[size_t(face)][size_t(q)]))];
     for (int g = 0; g < 6; ++g) {
       int hits = 0;
       for (int q = 0; q < 4; ++q) hits += positionInFace(g, corners[q]) >= 0;
@@ -341,7 +467,6 @@ OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalL
   return st;
 }
 
-
 // One side of the bidirectional search: nodes stored as (parent, index of the move in the
 // parent's move list), 8 bytes each; the state itself is replayed from the root on demand.
 struct Side {
@@ -360,12 +485,12 @@ struct Side {
 class Walker {
  public:
   Walker(const Side& side, const std::vector<HexId>& host, const SearchOptions& opt)
-      : side_(side), host_(host), ops_(opt.ops), cx(side.root) {
+      : side_(side), host_(host), ops_(opt.ops), prefilter_(opt.prefilter), cx(side.root) {
     ringMax_ = [&opt, this] {
       return std::min(opt.ringSplitMax, opt.maxRegionHexes - int(cx.numHexes() - int64_t(host_.size())));
     };
     path_ = {0};
-    movesAt_.push_back(moves(cx, host_, ops_, ringMax_()));
+    movesAt_.push_back(moves(cx, host_, ops_, ringMax_(), prefilter_));
   }
   void goTo(int32_t node) {
     chain_.clear();
@@ -383,7 +508,7 @@ class Walker {
       const OpStep& m = movesAt_.back()[side_.move[size_t(chain_[i])]];
       logs_.push_back(applyStep(cx, m).edits);
       path_.push_back(chain_[i]);
-      movesAt_.push_back(moves(cx, host_, ops_, ringMax_()));
+      movesAt_.push_back(moves(cx, host_, ops_, ringMax_(), prefilter_));
     }
   }
   const std::vector<OpStep>& movesHere() const { return movesAt_.back(); }
@@ -398,6 +523,7 @@ class Walker {
   const Side& side_;
   const std::vector<HexId>& host_;
   const std::vector<OpKind>& ops_;
+  bool prefilter_;
   std::vector<int32_t> path_, chain_;
   std::vector<Complex::EditLog> logs_;
   std::vector<std::vector<OpStep>> movesAt_;
@@ -450,7 +576,8 @@ std::vector<std::vector<VertexId>> candidateMaps(const Complex& cx) {
   auto coords = [](Vec3 q) { return std::array<double, 3>{q.x, q.y, q.z}; };
   for (VertexId v : cx.vertices()) {
     auto c = coords(cx.position(v));
-    for (int i = 0; i < 3; ++i) lo[size_t(i)] = std::min(lo[size_t(i)], c[size_t(i)]), hi[size_t(i)] = std::max(hi[size_t(i)], c[size_t(i)]);
+    for (int i = 0; i < 3; ++i)
+      lo[size_t(i)] = std::min(lo[size_t(i)], c[size_t(i)]), hi[size_t(i)] = std::max(hi[size_t(i)], c[size_t(i)]);
     at[{std::lround(2 * c[0]), std::lround(2 * c[1]), std::lround(2 * c[2])}] = v;
   }
   for (auto& pm : perms)
@@ -465,8 +592,10 @@ std::vector<std::vector<VertexId>> candidateMaps(const Complex& cx) {
           d[size_t(i)] = (flip >> i) & 1 ? lo[size_t(pm[i])] + hi[size_t(pm[i])] - x : x;
         }
         auto it = at.find({std::lround(2 * d[0]), std::lround(2 * d[1]), std::lround(2 * d[2])});
-        if (it == at.end()) ok = false;
-        else m[size_t(v)] = it->second;
+        if (it == at.end())
+          ok = false;
+        else
+          m[size_t(v)] = it->second;
       }
       if (ok) out.push_back(m);
     }
@@ -511,13 +640,34 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
             std::vector<Child>& out, int64_t& applied, const std::function<bool()>& stop) {
   Walker w(side, ctx.host, ctx.opt);
   RegionEncoder enc;
+  FlatKeyMap foundHere(1024);  // children kept by this call (not yet in side.index)
   const int64_t hostCount = int64_t(ctx.host.size());
   for (size_t n = begin; n < end; ++n) {
     if (stop()) return;
     w.goTo(int32_t(n));
     const auto& ms = w.movesHere();
     for (size_t i = 0; i < ms.size(); ++i) {
+      // Applied without the operations' invariant check first: a result whose key is stored is
+      // isomorphic (boundary fixed) to a valid state, so valid. Only a new key is applied again
+      // with every check, which also gives the exact inverse step.
       OpResult r;
+      try {
+        ops::DeferValidation unchecked;
+        r = applyStep(w.cx, ms[i]);
+      } catch (const Error&) {
+        continue;
+      }
+      if (w.cx.numHexes() - hostCount > ctx.opt.maxRegionHexes) {
+        w.cx.undo(r.edits);
+        ++applied;
+        continue;
+      }
+      Key128 key = ctx.key(enc, w.cx);
+      w.cx.undo(r.edits);
+      if (side.index.find(key) >= 0 || foundHere.find(key) >= 0) {
+        ++applied;
+        continue;
+      }
       try {
         r = applyStep(w.cx, ms[i]);
       } catch (const Error&) {
@@ -526,15 +676,11 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
       ++applied;
       // From the goal side a move stands for its inverse step: a move without one (a ring collapse
       // whose side quad was glued to the ring itself) is no step of a decomposition.
-      bool keep = w.cx.numHexes() - hostCount <= ctx.opt.maxRegionHexes && (!fromGoal || r.inverse);
-      Key128 key;
-      if (keep) {
-        key = ctx.key(enc, w.cx);
-        keep = side.index.find(key) < 0 && localityViolation(w.cx, ctx.hs).empty();
-      }
+      bool keep = (!fromGoal || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
       w.cx.undo(r.edits);
       if (!keep) continue;
       out.push_back({int32_t(n), uint32_t(i), key});
+      foundHere.insert(key, 0);
       if (other.index.find(key) >= 0) return;  // the two searches meet: the merge stops here
     }
   }
@@ -595,7 +741,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
       // A local move from cur reaching the previous state: first among the generated moves (this
       // also picks the side that keeps host vertex ids for splits), else the translated inverse.
       std::optional<OpStep> chosen;
-      for (const OpStep& m : moves(cur, host, {}, opt.ringSplitMax)) {
+      for (const OpStep& m : moves(cur, host, {}, opt.ringSplitMax, opt.prefilter)) {
         OpResult r;
         try {
           r = applyStep(cur, m);
@@ -612,10 +758,13 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
       if (!chosen) {
         Complex tmp = chain[k - 1];
         OpResult r = applyStep(tmp, back[k - 1]);
-        if (!r.inverse) throw Error("search: " + formatOpStep(back[k - 1]) + " has no inverse step (" + r.noInverse + ")");
+        if (!r.inverse)
+          throw Error("search: " + formatOpStep(back[k - 1]) + " has no inverse step (" + r.noInverse + ")");
         CanonicalLabelling from = regionLabelling(tmp, host), to = regionLabelling(cur, host);
         if (from.form != to.form)
-          throw Error("search: the paths meet only up to a symmetry where a generated move is missing; search again without symmetry");
+          throw Error(
+              "search: the paths meet only up to a symmetry where a generated move is missing; search again without "
+              "symmetry");
         chosen = translateStep(*r.inverse, from, to, host);
       }
       applyStep(cur, *chosen);
@@ -671,8 +820,10 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
           me.move.push_back(c.move);
           int32_t there = other.index.find(c.key);
           if (there >= 0) {
-            if (s == 0) finish(id, there);
-            else finish(there, id);
+            if (s == 0)
+              finish(id, there);
+            else
+              finish(there, id);
             return finishStats();
           }
         }
@@ -723,7 +874,8 @@ void verifyDecomposition(const SearchProblem& pb, const std::vector<OpStep>& ste
     try {
       applyStep(cx, steps[k]);
     } catch (const Error& e) {
-      throw Error("verify " + pb.name + ": step " + std::to_string(k + 1) + " (" + formatOpStep(steps[k]) + "): " + e.what());
+      throw Error("verify " + pb.name + ": step " + std::to_string(k + 1) + " (" + formatOpStep(steps[k]) +
+                  "): " + e.what());
     }
     std::string why = localityViolation(cx, hs);
     if (!why.empty()) throw Error("verify " + pb.name + ": step " + std::to_string(k + 1) + " is not local: " + why);
@@ -732,7 +884,6 @@ void verifyDecomposition(const SearchProblem& pb, const std::vector<OpStep>& ste
   if (regionLabelling(cx, hs.host).form != regionLabelling(pb.goal, hs.host).form)
     throw Error("verify " + pb.name + ": the result is not isomorphic to the flip's after side");
 }
-
 
 namespace {
 
@@ -770,8 +921,8 @@ Complex renamedRegion(const Complex& cx, const std::vector<HexId>& region, const
 }
 
 // Labelling of a region with its hexes named by their ids in cx (not 0..n-1 of the renamed copy).
-CanonicalLabelling labelRegion(const Complex& cx, const std::vector<HexId>& host, const std::map<VertexId, VertexId>& rename,
-                               VertexId fresh) {
+CanonicalLabelling labelRegion(const Complex& cx, const std::vector<HexId>& host,
+                               const std::map<VertexId, VertexId>& rename, VertexId fresh) {
   std::vector<HexId> order;
   Complex r = renamedRegion(cx, regionOf(cx, host), rename, fresh, order);
   CanonicalLabelling L = canonicalLabelling(r, true);
@@ -797,7 +948,8 @@ std::vector<Embedding> flipEmbeddings(const std::string& name) {
         out.push_back({"4-cube boundary, host pillowed at h" + std::to_string(a) + "f" + std::to_string(f), p, before});
         Complex q = c;
         hexPush(q, {a, f});
-        out.push_back({"4-cube boundary, host hex-pushed at h" + std::to_string(a) + "f" + std::to_string(f), q, before});
+        out.push_back(
+            {"4-cube boundary, host hex-pushed at h" + std::to_string(a) + "f" + std::to_string(f), q, before});
         goto grids;
       }
     }
@@ -820,9 +972,12 @@ grids:
     // Interior places: near the mesh boundary some atomic steps are refused by design (an unpillow
     // of a pillow on the boundary, a ring collapse merging boundary vertices).
     if (n == 1) gridPlaces = {{gid(2, 2, 2)}, {gid(1, 2, 3)}}, ringPlaces = {{rid(2, 1, 1)}};
-    if (n == 2) gridPlaces = {{gid(2, 2, 2), gid(3, 2, 2)}, {gid(1, 1, 2), gid(1, 1, 3)}}, ringPlaces = {{rid(2, 1, 1), rid(3, 1, 1)}};
+    if (n == 2)
+      gridPlaces = {{gid(2, 2, 2), gid(3, 2, 2)}, {gid(1, 1, 2), gid(1, 1, 3)}},
+      ringPlaces = {{rid(2, 1, 1), rid(3, 1, 1)}};
     // (3-5c's decomposition uses a ring collapse, which never merges boundary vertices: interior places.)
-    if (n == 3) gridPlaces = {{gid(2, 2, 1), gid(2, 2, 2), gid(2, 2, 3)}, {gid(1, 2, 2), gid(2, 2, 2), gid(3, 2, 2)}},
+    if (n == 3)
+      gridPlaces = {{gid(2, 2, 1), gid(2, 2, 2), gid(2, 2, 3)}, {gid(1, 2, 2), gid(2, 2, 2), gid(3, 2, 2)}},
       ringPlaces = {{rid(2, 1, 1), rid(3, 1, 1), rid(4, 1, 1)}};
     for (auto& pl : gridPlaces) out.push_back({"5x5x5 grid at h" + std::to_string(pl[0]), g, pl});
     for (auto& pl : ringPlaces) out.push_back({"8x3x3 O-grid at h" + std::to_string(pl[0]), r, pl});
@@ -831,7 +986,7 @@ grids:
 }
 
 std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector<OpStep>& steps, Complex& mesh,
-                                           const std::vector<HexId>& beforeHexes, const std::string& placeName) {
+                                      const std::vector<HexId>& beforeHexes, const std::string& placeName) {
   const std::string what = pb.name + " in " + placeName;
   Embedding where{placeName, mesh, beforeHexes};
   // Match the problem's before side (its region) with the embedding's before hexes: flipping both
@@ -848,7 +1003,8 @@ std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector
   std::map<VertexId, VertexId> toProblem;  // embedding vertex -> problem vertex
   for (size_t i = 0; i < lp.order.size(); ++i)
     for (int b = 0; b < 8; ++b)
-      toProblem[where.mesh.vertex(le.order[i], le.frame[i][size_t(b)])] = pb.start.vertex(lp.order[i], lp.frame[i][size_t(b)]);
+      toProblem[where.mesh.vertex(le.order[i], le.frame[i][size_t(b)])] =
+          pb.start.vertex(lp.order[i], lp.frame[i][size_t(b)]);
   std::vector<HexId> hostP = pb.host;
   std::sort(hostP.begin(), hostP.end());
   std::sort(hostE.begin(), hostE.end());
@@ -875,14 +1031,16 @@ std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector
       OpArg& arg = src.args[i];
       if (arg.kind == OpArg::Pair && isHost(hostP, arg.second.hex)) {
         Gluing g = cp.gluing(arg.second);
-        if (g.boundary() || isHost(hostP, g.hex)) throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
+        if (g.boundary() || isHost(hostP, g.hex))
+          throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
         arg.second = {g.hex, g.face};
         partner2[i] = true;
       }
       if (!isHost(hostP, arg.hex)) continue;
       if (arg.kind == OpArg::Quad || arg.kind == OpArg::Pair) {
         Gluing g = cp.gluing(arg.hex, arg.local);
-        if (g.boundary() || isHost(hostP, g.hex)) throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
+        if (g.boundary() || isHost(hostP, g.hex))
+          throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
         arg.hex = g.hex;
         arg.local = g.face;
         partner[i] = true;
