@@ -253,13 +253,17 @@ TEST_CASE("move prefilters drop only moves that are never valid and local: the s
     for (size_t i = 0; i < with.levels.size(); ++i) CHECK(with.levels[i].newStates == without.levels[i].newStates);
     CHECK(with.movesApplied <= without.movesApplied);
   }
-  // Exact counts of the 4-4m search to depth 3 (a = 2, b = 1), one state per orbit of 8 symmetries.
+  // Exact counts of the 4-4m search to depth 3 (a = 2, b = 1), one state per orbit of 8 symmetries:
+  // 1 + 1 roots, 21 + 21 states of depth 1, and of the 1,118 of depth 2 (the last level) the 559
+  // whose counts occur on the goal side.
   SearchOptions o;
   o.maxDepth = 3;
   o.symmetry = true;
   SearchResult r = searchDecomposition(flipProblem("4-4m"), o);
   CHECK(r.symmetries == 8);
-  CHECK(r.statesExplored == 1162);
+  CHECK(r.statesExplored == 603);
+  o.countPruning = false;
+  CHECK(searchDecomposition(flipProblem("4-4m"), o).statesExplored == 1162);
 }
 
 TEST_CASE("DeferValidation: operations commit without their invariant check; undo restores the complex") {
@@ -297,4 +301,47 @@ TEST_CASE("DeferValidation: operations commit without their invariant check; und
   CHECK(refused > 0);
   CHECK(deferred == refused);
   cx.validate();
+}
+
+TEST_CASE("count pruning: the same answers with fewer states; a level emptied by the bound proves the depth") {
+  // Chord push and pull change (V, H) by (+2, +2) and (-2, -2); the 2-6 goal has 4 more hexes.
+  // From the goal there is no chord to pull, and after one push (H + 6 from the start) three pulls
+  // are needed: with 3 steps in all, nothing from the goal side survives.
+  SearchProblem pb = flipProblem("2-6");
+  SearchOptions o;
+  o.ops = {OpKind::ChordPush, OpKind::ChordPull};
+  o.symmetry = true;
+  o.maxDepth = 3;
+  SearchResult three = searchDecomposition(pb, o);
+  CHECK_FALSE(three.found);
+  CHECK(three.stoppedBy == "depth");
+  CHECK(three.depthSearched == 3);
+  CHECK(three.message == "no new state of depth 1 from the goal survives the count bound of --max-depth 3");
+  CHECK(three.prunedByCounts > 0);
+  o.maxDepth = 6;
+  SearchResult pruned = searchDecomposition(pb, o);
+  o.countPruning = false;
+  SearchResult full = searchDecomposition(pb, o);
+  CHECK_FALSE(pruned.found);
+  CHECK_FALSE(full.found);
+  CHECK(pruned.depthSearched == 6);
+  CHECK(full.depthSearched == 6);
+  CHECK(pruned.statesExplored == 4443);
+  CHECK(full.statesExplored == 36479);
+  CHECK(full.prunedByCounts == 0);
+  // All operations (ring operations make the bound on V - H unknown, and H steps up to 16): the
+  // last level still meets only states with the other side's counts. 3-5e is found again.
+  SearchProblem e = flipProblem("3-5e");
+  SearchOptions all;
+  all.maxDepth = 4;
+  all.symmetry = true;
+  SearchResult a = searchDecomposition(e, all);
+  all.countPruning = false;
+  SearchResult b = searchDecomposition(e, all);
+  REQUIRE(a.found);
+  REQUIRE(b.found);
+  CHECK(a.steps.size() == 4);
+  verifyDecomposition(e, a.steps);
+  CHECK(a.statesExplored == 896);
+  CHECK(b.statesExplored == 997);
 }

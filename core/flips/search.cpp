@@ -473,10 +473,20 @@ struct Side {
   Complex root;
   std::vector<int32_t> parent;
   std::vector<uint32_t> move;
+  std::vector<uint16_t> counts;                                       // packed (V, H) of each node (CountBounds::pack)
+  std::vector<uint8_t> countSeen = std::vector<uint8_t>(1 << 16, 0);  // which packed counts occur
   FlatKeyMap index{1 << 12};
   size_t levelBegin = 0, levelEnd = 1;  // the frontier: nodes [levelBegin, levelEnd)
   int depth = 0;
-  size_t memoryBytes() const { return parent.capacity() * 4 + move.capacity() * 4 + index.memoryBytes(); }
+  size_t memoryBytes() const {
+    return parent.capacity() * 4 + move.capacity() * 4 + counts.capacity() * 2 + countSeen.size() + index.memoryBytes();
+  }
+  void add(int32_t par, uint32_t mv, uint16_t c) {
+    parent.push_back(par);
+    move.push_back(mv);
+    counts.push_back(c);
+    countSeen[c] = 1;
+  }
 };
 
 // Replays nodes of one side in frontier order. Frontier nodes are stored in the order of their
@@ -538,7 +548,93 @@ struct Child {
   int32_t parent;
   uint32_t move;
   Key128 key;
+  uint16_t counts;
 };
+
+// Pruning by counts (TK03 §4: every atomic operation changes V, E, F, H by fixed amounts).
+// Every interior quad has two hex sides and every boundary quad one, so 6H = 2F - F_boundary;
+// the boundary quads are fixed, so F - 3H never changes, and neither does V - E + F - H: a state's
+// counts are determined by (V, H). One step changes H by at most upH (at least -downH) and
+// X = V - H by at most upX (at least -downX), so a state whose H is δ > 0 below the target's needs
+// at least ceil(δ / upH) more steps, and likewise for the other three cases; a state first reached
+// at depth d is dropped when that bound exceeds maxDepth - d. No state of a sequence of at most
+// maxDepth steps is dropped: its place p in the sequence is at least d, and the rest of the
+// sequence, at most maxDepth - p <= maxDepth - d steps, reaches the target. On the last level a
+// child can only meet a state of the other side, whose counts are known: any other count is dropped.
+struct CountBounds {
+  int64_t V0 = 0, H0 = 0;  // the start's counts: packed counts are relative to them
+  int upH = 0, downH = 0, upX = 0, downX = 0;
+  bool boundX = true;  // false when a ring operation is used (its change of X is not fixed)
+  static bool fits(int64_t dV, int64_t dH) { return dV >= -128 && dV < 128 && dH >= -128 && dH < 128; }
+  uint16_t pack(int64_t V, int64_t H) const {
+    int64_t dV = V - V0, dH = H - H0;
+    if (!fits(dV, dH))
+      throw Error("search: the counts moved more than 127 from the start's; the count table cannot hold them");
+    return uint16_t(uint16_t(dV + 128) << 8 | uint16_t(dH + 128));
+  }
+  static int64_t dV(uint16_t c) { return int64_t(c >> 8) - 128; }
+  static int64_t dH(uint16_t c) { return int64_t(c & 255) - 128; }
+  // Fewest steps from counts a to counts b.
+  int lowerBound(uint16_t a, uint16_t b) const {
+    auto need = [](int64_t delta, int up, int down) -> int {
+      if (delta > 0) return up > 0 ? int((delta + up - 1) / up) : 1 << 20;
+      if (delta < 0) return down > 0 ? int((-delta + down - 1) / down) : 1 << 20;
+      return 0;
+    };
+    int64_t h = dH(b) - dH(a), x = (dV(b) - dH(b)) - (dV(a) - dH(a));
+    return std::max(need(h, upH, downH), boundX ? need(x, upX, downX) : 0);
+  }
+};
+
+// Exact change of (V, H) of the operations whose counts never vary (OPERATIONS.md; checked on every
+// application by the search): pillow (+4,+2), chord push (+2,+2), hex push (+4,+4), face collapse
+// (-2,0), and their inverses. Ring collapse and split change H by the ring's length.
+bool exactDelta(OpKind k, int& dV, int& dH) {
+  switch (k) {
+    case OpKind::Pillow:
+      dV = 4, dH = 2;
+      return true;
+    case OpKind::Unpillow:
+      dV = -4, dH = -2;
+      return true;
+    case OpKind::ChordPush:
+      dV = 2, dH = 2;
+      return true;
+    case OpKind::ChordPull:
+      dV = -2, dH = -2;
+      return true;
+    case OpKind::HexPush:
+      dV = 4, dH = 4;
+      return true;
+    case OpKind::HexPull:
+      dV = -4, dH = -4;
+      return true;
+    case OpKind::FaceCollapse:
+      dV = -2, dH = 0;
+      return true;
+    case OpKind::FaceSplit:
+      dV = 2, dH = 0;
+      return true;
+    default:
+      return false;
+  }
+}
+
+CountBounds countBounds(const Complex& start, const SearchOptions& opt) {
+  CountBounds b;
+  b.V0 = start.numVertices();
+  b.H0 = start.numHexes();
+  auto use = [&](OpKind k) { return opt.ops.empty() || std::find(opt.ops.begin(), opt.ops.end(), k) != opt.ops.end(); };
+  for (int k = 0; k <= int(OpKind::FaceSplit); ++k) {
+    int dV = 0, dH = 0;
+    if (!use(OpKind(k)) || !exactDelta(OpKind(k), dV, dH)) continue;
+    b.upH = std::max(b.upH, dH), b.downH = std::max(b.downH, -dH);
+    b.upX = std::max(b.upX, dV - dH), b.downX = std::max(b.downX, dH - dV);
+  }
+  if (use(OpKind::RingSplit)) b.upH = std::max(b.upH, opt.ringSplitMax), b.boundX = false;
+  if (use(OpKind::RingCollapse)) b.downH = std::max(b.downH, opt.maxRegionHexes), b.boundX = false;
+  return b;
+}
 
 struct SearchContext {
   const std::vector<HexId>& host;
@@ -546,6 +642,7 @@ struct SearchContext {
   const HostSnapshot& hs;
   const SearchOptions& opt;
   std::vector<std::vector<VertexId>> symmetries;  // vertex maps fixing host, start and goal (not the identity)
+  CountBounds bounds;
   Key128 key(RegionEncoder& enc, const Complex& cx) const {
     return symmetries.empty() ? enc.key(cx, isHost) : enc.key(cx, isHost, symmetries);
   }
@@ -633,20 +730,41 @@ std::vector<std::vector<VertexId>> problemSymmetries(const SearchProblem& pb, co
   return out;
 }
 
+// What expand needs to know of the level: whether it is the last (children must meet the other
+// side), how many steps remain after it, and the counts of the other side's root.
+struct LevelPlan {
+  bool last = false;
+  int remaining = 0;
+  uint16_t target = 0;
+};
+
 // Expands nodes [begin, end) of `side`: every move that applies, keeps the host and the region
 // cap, and reaches a state not yet stored there; stops at a state the other side stored. Reads
 // the indexes only (workers run in parallel; the merge after them writes).
-void expand(const SearchContext& ctx, const Side& side, const Side& other, bool fromGoal, size_t begin, size_t end,
-            std::vector<Child>& out, int64_t& applied, const std::function<bool()>& stop) {
+void expand(const SearchContext& ctx, const Side& side, const Side& other, bool fromGoal, const LevelPlan& plan,
+            size_t begin, size_t end, std::vector<Child>& out, int64_t& applied, int64_t& pruned,
+            const std::function<bool()>& stop) {
   Walker w(side, ctx.host, ctx.opt);
   RegionEncoder enc;
   FlatKeyMap foundHere(1024);  // children kept by this call (not yet in side.index)
   const int64_t hostCount = int64_t(ctx.host.size());
+  const CountBounds& cb = ctx.bounds;
+  auto useful = [&](uint16_t c) {
+    if (!ctx.opt.countPruning) return true;
+    return plan.last ? other.countSeen[c] != 0 : cb.lowerBound(c, plan.target) <= plan.remaining;
+  };
   for (size_t n = begin; n < end; ++n) {
     if (stop()) return;
     w.goTo(int32_t(n));
     const auto& ms = w.movesHere();
+    const int64_t V = w.cx.numVertices(), H = w.cx.numHexes();
     for (size_t i = 0; i < ms.size(); ++i) {
+      int dV = 0, dH = 0;
+      const bool exact = exactDelta(ms[i].op, dV, dH);
+      if (exact && CountBounds::fits(V + dV - cb.V0, H + dH - cb.H0) && !useful(cb.pack(V + dV, H + dH))) {
+        ++pruned;
+        continue;
+      }
       // Applied without the operations' invariant check first: a result whose key is stored is
       // isomorphic (boundary fixed) to a valid state, so valid. Only a new key is applied again
       // with every check, which also gives the exact inverse step.
@@ -657,7 +775,12 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
       } catch (const Error&) {
         continue;
       }
-      if (w.cx.numHexes() - hostCount > ctx.opt.maxRegionHexes) {
+      if (exact && (r.dV != dV || r.dH != dH))
+        throw Error("search: " + formatOpStep(ms[i]) + " changed (V, H) by (" + std::to_string(r.dV) + ", " +
+                    std::to_string(r.dH) + "), not (" + std::to_string(dV) + ", " + std::to_string(dH) + ")");
+      const uint16_t counts = cb.pack(V + r.dV, H + r.dH);
+      if (w.cx.numHexes() - hostCount > ctx.opt.maxRegionHexes || !useful(counts)) {
+        pruned += w.cx.numHexes() - hostCount <= ctx.opt.maxRegionHexes;
         w.cx.undo(r.edits);
         ++applied;
         continue;
@@ -679,7 +802,7 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
       bool keep = (!fromGoal || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
       w.cx.undo(r.edits);
       if (!keep) continue;
-      out.push_back({int32_t(n), uint32_t(i), key});
+      out.push_back({int32_t(n), uint32_t(i), key, counts});
       foundHere.insert(key, 0);
       if (other.index.find(key) >= 0) return;  // the two searches meet: the merge stops here
     }
@@ -693,7 +816,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   HostSnapshot hs = snapshot(pb.start, pb.host);
   const std::vector<HexId>& host = hs.host;
-  SearchContext ctx{host, {}, hs, opt, {}};
+  SearchContext ctx{host, {}, hs, opt, {}, {}};
   for (HexId h : host) {
     if (size_t(h) >= ctx.isHost.size()) ctx.isHost.resize(size_t(h) + 1, 0);
     ctx.isHost[size_t(h)] = 1;
@@ -703,10 +826,10 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
   res.symmetries = int(ctx.symmetries.size()) + 1;
   Side side[2];
   RegionEncoder enc;
+  ctx.bounds = countBounds(pb.start, opt);
   for (int s = 0; s < 2; ++s) {
     side[s].root = s == 0 ? pb.start : pb.goal;
-    side[s].parent = {-1};
-    side[s].move = {0};
+    side[s].add(-1, 0, ctx.bounds.pack(side[s].root.numVertices(), side[s].root.numHexes()));
     side[s].index.insert(ctx.key(enc, side[s].root), 0);
   }
   auto stored = [&] { return int64_t(side[0].parent.size() + side[1].parent.size()); };
@@ -788,16 +911,21 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     // Chunks of the frontier, split between the threads; children merge in frontier order, so
     // node ids and the result do not depend on the thread count.
     const size_t chunk = 512;
+    int64_t prunedThisLevel = 0;
+    LevelPlan plan;
+    plan.remaining = opt.maxDepth - (me.depth + 1);  // steps left for a child of this level to reach the other root
+    plan.last = side[0].depth + side[1].depth + 1 == opt.maxDepth;
+    plan.target = other.counts[0];
     for (size_t b = me.levelBegin; b < me.levelEnd; b += chunk) {
       size_t e = std::min(me.levelEnd, b + chunk);
       std::vector<std::vector<Child>> found(static_cast<size_t>(threads));
-      std::vector<int64_t> applied(static_cast<size_t>(threads), 0);
+      std::vector<int64_t> applied(static_cast<size_t>(threads), 0), pruned(static_cast<size_t>(threads), 0);
       std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
       auto work = [&](int t) {
         size_t per = (e - b + size_t(threads) - 1) / size_t(threads);
         size_t lo = std::min(e, b + per * size_t(t)), hi = std::min(e, lo + per);
         try {
-          expand(ctx, me, other, s == 1, lo, hi, found[size_t(t)], applied[size_t(t)], stop);
+          expand(ctx, me, other, s == 1, plan, lo, hi, found[size_t(t)], applied[size_t(t)], pruned[size_t(t)], stop);
         } catch (...) {
           errors[size_t(t)] = std::current_exception();
         }
@@ -812,12 +940,12 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
       for (auto& err : errors)
         if (err) std::rethrow_exception(err);
       for (int64_t a : applied) res.movesApplied += a;
+      for (int64_t a : pruned) res.prunedByCounts += a, prunedThisLevel += a;
       for (const auto& list : found)
         for (const Child& c : list) {
           int32_t id = int32_t(me.parent.size());
           if (me.index.insert(c.key, id) != id) continue;
-          me.parent.push_back(c.parent);
-          me.move.push_back(c.move);
+          me.add(c.parent, c.move, c.counts);
           int32_t there = other.index.find(c.key);
           if (there >= 0) {
             if (s == 0)
@@ -857,6 +985,14 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     res.depthSearched = side[0].depth + side[1].depth;
     res.levels.push_back({s, me.depth, int64_t(me.levelEnd - me.levelBegin), stored(), res.movesApplied, elapsed()});
     if (opt.progress) opt.progress(res.levels.back());
+    if (me.levelBegin == me.levelEnd && prunedThisLevel > 0) {
+      // Every new state was dropped by the count bound: no sequence of at most maxDepth steps.
+      res.depthSearched = opt.maxDepth;
+      res.stoppedBy = "depth";
+      res.message = "no new state of depth " + std::to_string(me.depth) + " from the " + (s ? "goal" : "start") +
+                    " survives the count bound of --max-depth " + std::to_string(opt.maxDepth);
+      return finishStats();
+    }
     if (me.levelBegin == me.levelEnd) {
       // No new state on this side: every sequence of any length (within the region cap) was seen.
       res.stoppedBy = "exhausted";

@@ -47,6 +47,7 @@ struct SearchOptions {
   int ringSplitMax = 8;       // ring splits generated forward: loops of at most this many edges (0: none)
   bool symmetry = false;      // store one state per orbit of the problem's symmetries
   bool prefilter = true;      // skip moves proven never valid and local without trying them
+  bool countPruning = true;   // drop states whose (V, H) cannot reach the other end in the steps left
   std::function<void(const SearchLevel&)> progress;  // called after every completed level
 };
 
@@ -56,6 +57,7 @@ struct SearchResult {
   int depthSearched = 0;       // every sequence up to this length was examined (if not found)
   int64_t statesExplored = 0;  // distinct states stored (both directions)
   int64_t movesApplied = 0;    // moves that applied (before deduplication)
+  int64_t prunedByCounts = 0;  // children dropped by the count bound (countPruning)
   size_t memoryBytes = 0;      // peak bytes of the stored states and their hash sets
   double seconds = 0;
   std::string stoppedBy;  // "found", "depth", "exhausted", "states", "time", "memory"
