@@ -345,3 +345,62 @@ TEST_CASE("count pruning: the same answers with fewer states; a level emptied by
   CHECK(a.statesExplored == 896);
   CHECK(b.statesExplored == 997);
 }
+
+#include <filesystem>
+
+TEST_CASE("checkpoint and resume: a search stopped and resumed gives the uninterrupted result") {
+  // 3-5e to depth 4 with chunks of 8 frontier states: checkpoints fall inside levels.
+  const std::string file = (std::filesystem::temp_directory_path() / "hexdual_test_search.ckpt").string();
+  SearchProblem pb = flipProblem("3-5e");
+  SearchOptions o;
+  o.maxDepth = 4;
+  o.symmetry = true;
+  o.chunk = 8;
+  SearchResult whole = searchDecomposition(pb, o);
+  REQUIRE(whole.found);
+  CHECK(whole.checkpoints == 0);
+  auto same = [&](const SearchResult& r) {
+    REQUIRE(r.found);
+    CHECK(formatOpLog({1, r.steps}) == formatOpLog({1, whole.steps}));
+    CHECK(r.statesExplored == whole.statesExplored);
+    CHECK(r.movesApplied == whole.movesApplied);
+    REQUIRE(r.levels.size() == whole.levels.size());
+    for (size_t i = 0; i < r.levels.size(); ++i) CHECK(r.levels[i].newStates == whole.levels[i].newStates);
+  };
+  // Stopped by the state cap inside depth 3 (the start side's second level), then resumed.
+  o.checkpointFile = file;
+  o.maxStates = 100;
+  SearchResult capped = searchDecomposition(pb, o);
+  CHECK(capped.stoppedBy == "states");
+  CHECK(capped.checkpoints == 1);
+  CHECK(capped.message == "stopped at the state cap (--max-states 100) during depth 3; checkpoint in " + file);
+  o.checkpointFile.clear();
+  o.maxStates = 200000;
+  o.resumeFile = file;
+  same(searchDecomposition(pb, o));
+  // A request to stop (as SIGINT sets it) at the first chunk; a checkpoint at every chunk after.
+  std::atomic<int> request{2};
+  o.resumeFile.clear();
+  o.checkpointFile = file;
+  o.request = &request;
+  SearchResult stopped = searchDecomposition(pb, o);
+  CHECK(stopped.stoppedBy == "interrupted");
+  CHECK(stopped.message == "stopped on request during depth 1; checkpoint in " + file);
+  request = 0;
+  o.resumeFile = file;
+  o.checkpointEvery = 1e-9;
+  SearchResult resumed = searchDecomposition(pb, o);
+  same(resumed);
+  CHECK(resumed.checkpoints == 5);  // one per chunk start: levels of 1, 1, 11 and 16 states in chunks of 8
+  // A checkpoint belongs to one search.
+  o.checkpointFile.clear();
+  o.maxDepth = 5;
+  CHECK_THROWS_WITH(
+      searchDecomposition(pb, o),
+      ("resume: " + file +
+       " belongs to another search (3-5e; depth 4; ops; region 16; ring split 8; symmetry 1; prefilter 1; "
+       "count pruning 1; chunk 8), not this one (3-5e; depth 5; ops; region 16; ring split 8; symmetry 1; "
+       "prefilter 1; count pruning 1; chunk 8)")
+          .c_str());
+  std::filesystem::remove(file);
+}

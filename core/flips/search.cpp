@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <optional>
@@ -809,11 +810,123 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
   }
 }
 
+// A checkpoint: the two sides' nodes, counts and hash tables, the statistics, and where the level
+// in progress goes on (its side, the next chunk, its first new node). Binary, this machine's byte
+// order; the first lines name the format and the search it belongs to.
+struct Resume {
+  int32_t side = -1;  // -1: at a level boundary
+  uint64_t next = 0, levelStart = 0;
+  int64_t prunedThisLevel = 0;
+};
+
+std::string searchFingerprint(const SearchProblem& pb, const SearchOptions& o) {
+  std::string f = pb.name + "; depth " + std::to_string(o.maxDepth) + "; ops";
+  for (OpKind k : o.ops) f += " " + std::string(opName(k));
+  f += "; region " + std::to_string(o.maxRegionHexes) + "; ring split " + std::to_string(o.ringSplitMax) +
+       "; symmetry " + std::to_string(o.symmetry) + "; prefilter " + std::to_string(o.prefilter) + "; count pruning " +
+       std::to_string(o.countPruning) + "; chunk " + std::to_string(o.chunk);
+  return f;
+}
+
+template <class T>
+void put(std::ostream& out, const T& v) {
+  out.write(reinterpret_cast<const char*>(&v), sizeof v);
+}
+template <class T>
+void putVector(std::ostream& out, const std::vector<T>& v) {
+  put(out, uint64_t(v.size()));
+  out.write(reinterpret_cast<const char*>(v.data()), std::streamsize(v.size() * sizeof(T)));
+}
+template <class T>
+void get(std::istream& in, T& v) {
+  in.read(reinterpret_cast<char*>(&v), sizeof v);
+  if (!in) throw Error("checkpoint: the file is cut short");
+}
+template <class T>
+void getVector(std::istream& in, std::vector<T>& v) {
+  uint64_t n = 0;
+  get(in, n);
+  if (n > (uint64_t(1) << 36)) throw Error("checkpoint: a list length is damaged");
+  v.resize(size_t(n));
+  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(T)));
+  if (!in) throw Error("checkpoint: the file is cut short");
+}
+
+const char* const kCheckpointMagic = "hexdual search checkpoint v1";
+
+void writeCheckpoint(const std::string& path, const std::string& fingerprint, const Side side[2],
+                     const SearchResult& res, double seconds, const Resume& at) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw Error("checkpoint: cannot write " + tmp);
+    out << kCheckpointMagic << "\n" << fingerprint << "\n";
+    put(out, at);
+    put(out, res.movesApplied);
+    put(out, res.prunedByCounts);
+    put(out, seconds);
+    putVector(out, res.levels);
+    for (int s = 0; s < 2; ++s) {
+      const Side& d = side[s];
+      put(out, int64_t(d.depth));
+      put(out, uint64_t(d.levelBegin));
+      put(out, uint64_t(d.levelEnd));
+      putVector(out, d.parent);
+      putVector(out, d.move);
+      putVector(out, d.counts);
+      d.index.write(out);
+    }
+    if (!out.flush()) throw Error("checkpoint: writing " + tmp + " failed");
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw Error("checkpoint: cannot rename " + tmp + " to " + path);
+}
+
+Resume readCheckpoint(const std::string& path, const std::string& fingerprint, Side side[2], SearchResult& res,
+                      double& seconds) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("resume: cannot read " + path);
+  std::string magic, fp;
+  std::getline(in, magic);
+  std::getline(in, fp);
+  if (magic != kCheckpointMagic) throw Error("resume: " + path + " is not a search checkpoint");
+  if (fp != fingerprint)
+    throw Error("resume: " + path + " belongs to another search (" + fp + "), not this one (" + fingerprint + ")");
+  Resume at;
+  get(in, at);
+  get(in, res.movesApplied);
+  get(in, res.prunedByCounts);
+  get(in, seconds);
+  getVector(in, res.levels);
+  for (int s = 0; s < 2; ++s) {
+    Side& d = side[s];
+    int64_t depth = 0;
+    uint64_t begin = 0, end = 0;
+    get(in, depth);
+    get(in, begin);
+    get(in, end);
+    getVector(in, d.parent);
+    getVector(in, d.move);
+    getVector(in, d.counts);
+    d.index.read(in);
+    d.depth = int(depth);
+    d.levelBegin = size_t(begin);
+    d.levelEnd = size_t(end);
+    if (d.move.size() != d.parent.size() || d.counts.size() != d.parent.size() || d.index.size() != d.parent.size() ||
+        end > d.parent.size() || begin > end)
+      throw Error("resume: " + path + " is inconsistent (side " + std::to_string(s) + ")");
+    std::fill(d.countSeen.begin(), d.countSeen.end(), 0);
+    for (uint16_t c : d.counts) d.countSeen[c] = 1;
+  }
+  res.depthSearched = side[0].depth + side[1].depth;
+  return at;
+}
+
 }  // namespace
 
 SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& opt) {
   auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  double secondsBefore = 0;  // of the runs before a resume
   HostSnapshot hs = snapshot(pb.start, pb.host);
   const std::vector<HexId>& host = hs.host;
   SearchContext ctx{host, {}, hs, opt, {}, {}};
@@ -832,13 +945,23 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     side[s].add(-1, 0, ctx.bounds.pack(side[s].root.numVertices(), side[s].root.numHexes()));
     side[s].index.insert(ctx.key(enc, side[s].root), 0);
   }
+  const std::string fingerprint = searchFingerprint(pb, opt);
+  Resume resume;
+  if (!opt.resumeFile.empty()) resume = readCheckpoint(opt.resumeFile, fingerprint, side, res, secondsBefore);
+  double lastSave = 0;
+  auto save = [&](int s, size_t next, size_t levelStart, int64_t prunedThisLevel) {
+    writeCheckpoint(opt.checkpointFile, fingerprint, side, res, secondsBefore + elapsed(),
+                    {int32_t(s), uint64_t(next), uint64_t(levelStart), prunedThisLevel});
+    lastSave = elapsed();
+    ++res.checkpoints;
+  };
   auto stored = [&] { return int64_t(side[0].parent.size() + side[1].parent.size()); };
   auto memory = [&] { return side[0].memoryBytes() + side[1].memoryBytes(); };
   auto finishStats = [&] {
     res.statesExplored = stored();
     res.memoryBytes = std::max(res.memoryBytes, memory());
     if (res.found) res.depthSearched = int(res.steps.size());
-    res.seconds = elapsed();
+    res.seconds = secondsBefore + elapsed();
     return res;
   };
   if (side[1].index.find(ctx.key(enc, side[0].root)) >= 0) {
@@ -898,26 +1021,37 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     res.stoppedBy = "found";
   };
   const int threads = std::max(1, opt.threads);
-  std::atomic<bool> timeUp{false};
+  std::atomic<bool> timeUp{false}, interrupted{false};
   auto stop = [&] {
     if (!timeUp && elapsed() > opt.maxSeconds) timeUp = true;
-    return bool(timeUp);
+    if (!interrupted && opt.request && opt.request->load() == 2) interrupted = true;
+    return timeUp || interrupted;
   };
   while (side[0].depth + side[1].depth < opt.maxDepth) {
     int s = side[0].levelEnd - side[0].levelBegin <= side[1].levelEnd - side[1].levelBegin ? 0 : 1;
     Side& me = side[s];
     Side& other = side[1 - s];
-    const size_t levelStart = me.parent.size();
+    if (resume.side >= 0 && resume.side != s)
+      throw Error("resume: the checkpoint's level does not match its frontiers");
+    const bool resuming = resume.side >= 0;
+    const size_t levelStart = resuming ? size_t(resume.levelStart) : me.parent.size();
     // Chunks of the frontier, split between the threads; children merge in frontier order, so
     // node ids and the result do not depend on the thread count.
-    const size_t chunk = 512;
-    int64_t prunedThisLevel = 0;
+    const size_t chunk = std::max<size_t>(1, opt.chunk);
+    int64_t prunedThisLevel = resuming ? resume.prunedThisLevel : 0;
+    const size_t firstChunk = resuming ? size_t(resume.next) : me.levelBegin;
+    resume.side = -1;
     LevelPlan plan;
     plan.remaining = opt.maxDepth - (me.depth + 1);  // steps left for a child of this level to reach the other root
     plan.last = side[0].depth + side[1].depth + 1 == opt.maxDepth;
     plan.target = other.counts[0];
-    for (size_t b = me.levelBegin; b < me.levelEnd; b += chunk) {
+    for (size_t b = firstChunk; b < me.levelEnd; b += chunk) {
       size_t e = std::min(me.levelEnd, b + chunk);
+      if (!opt.checkpointFile.empty() && ((opt.checkpointEvery > 0 && elapsed() - lastSave >= opt.checkpointEvery) ||
+                                          (opt.request && opt.request->load() == 1))) {
+        if (opt.request && opt.request->load() == 1) opt.request->store(0);
+        save(s, b, levelStart, prunedThisLevel);
+      }
       std::vector<std::vector<Child>> found(static_cast<size_t>(threads));
       std::vector<int64_t> applied(static_cast<size_t>(threads), 0), pruned(static_cast<size_t>(threads), 0);
       std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
@@ -939,6 +1073,8 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
       }
       for (auto& err : errors)
         if (err) std::rethrow_exception(err);
+      // Stopped inside this chunk: the checkpoint is the state before it (the chunk is redone).
+      if ((timeUp || interrupted) && !opt.checkpointFile.empty()) save(s, b, levelStart, prunedThisLevel);
       for (int64_t a : applied) res.movesApplied += a;
       for (int64_t a : pruned) res.prunedByCounts += a, prunedThisLevel += a;
       for (const auto& list : found)
@@ -956,26 +1092,34 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
           }
         }
       res.memoryBytes = std::max(res.memoryBytes, memory());
+      const std::string saved = opt.checkpointFile.empty() ? "" : "; checkpoint in " + opt.checkpointFile;
+      if (interrupted) {
+        res.stoppedBy = "interrupted";
+        res.message = "stopped on request during depth " + std::to_string(side[0].depth + side[1].depth + 1) + saved;
+        return finishStats();
+      }
       if (timeUp) {
         res.stoppedBy = "time";
         char secs[32];
         std::snprintf(secs, sizeof secs, "%g", opt.maxSeconds);
         res.message = "stopped by the time limit (--max-seconds " + std::string(secs) + ") during depth " +
-                      std::to_string(side[0].depth + side[1].depth + 1);
+                      std::to_string(side[0].depth + side[1].depth + 1) + saved;
         return finishStats();
       }
       if (stored() > opt.maxStates) {
+        if (!opt.checkpointFile.empty()) save(s, e, levelStart, prunedThisLevel);
         res.stoppedBy = "states";
         res.message = "stopped at the state cap (--max-states " + std::to_string(opt.maxStates) + ") during depth " +
-                      std::to_string(side[0].depth + side[1].depth + 1);
+                      std::to_string(side[0].depth + side[1].depth + 1) + saved;
         return finishStats();
       }
       // A hash set grows by doubling: stop before the next growth could pass the memory limit.
       if (double(memory()) + double(me.index.memoryBytes()) * 2 > opt.maxMemoryMB * 1048576.0) {
+        if (!opt.checkpointFile.empty()) save(s, e, levelStart, prunedThisLevel);
         res.stoppedBy = "memory";
         res.message = "stopped by the memory guard (--max-memory " + std::to_string(int64_t(opt.maxMemoryMB)) +
                       " MB; " + std::to_string(memory() >> 20) + " MB in use) during depth " +
-                      std::to_string(side[0].depth + side[1].depth + 1);
+                      std::to_string(side[0].depth + side[1].depth + 1) + saved;
         return finishStats();
       }
     }
@@ -983,7 +1127,8 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     me.levelEnd = me.parent.size();
     ++me.depth;
     res.depthSearched = side[0].depth + side[1].depth;
-    res.levels.push_back({s, me.depth, int64_t(me.levelEnd - me.levelBegin), stored(), res.movesApplied, elapsed()});
+    res.levels.push_back(
+        {s, me.depth, int64_t(me.levelEnd - me.levelBegin), stored(), res.movesApplied, secondsBefore + elapsed()});
     if (opt.progress) opt.progress(res.levels.back());
     if (me.levelBegin == me.levelEnd && prunedThisLevel > 0) {
       // Every new state was dropped by the count bound: no sequence of at most maxDepth steps.

@@ -6,6 +6,7 @@
 // joins the region, and every host hex keeps its vertices, its gluings to other host hexes and
 // its edges — only which region hex it touches across a region boundary quad may change.
 #pragma once
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -49,6 +50,12 @@ struct SearchOptions {
   bool prefilter = true;      // skip moves proven never valid and local without trying them
   bool countPruning = true;   // drop states whose (V, H) cannot reach the other end in the steps left
   std::function<void(const SearchLevel&)> progress;  // called after every completed level
+  size_t chunk = 512;          // frontier states per chunk: merges, limits and checkpoints fall between chunks
+  std::string checkpointFile;  // where checkpoints are written ("": none)
+  double checkpointEvery = 0;  // seconds between checkpoints (0: only when a limit or a request stops the search)
+  std::string resumeFile;      // continue the search saved there (same problem and options)
+  // Set from outside (a signal handler): 1 = write a checkpoint and go on, 2 = write one and stop.
+  std::atomic<int>* request = nullptr;
 };
 
 struct SearchResult {
@@ -60,10 +67,11 @@ struct SearchResult {
   int64_t prunedByCounts = 0;  // children dropped by the count bound (countPruning)
   size_t memoryBytes = 0;      // peak bytes of the stored states and their hash sets
   double seconds = 0;
-  std::string stoppedBy;  // "found", "depth", "exhausted", "states", "time", "memory"
+  std::string stoppedBy;  // "found", "depth", "exhausted", "states", "time", "memory", "interrupted"
   std::string message;    // why the search stopped early, for the user
   std::vector<SearchLevel> levels;
-  int symmetries = 1;  // the order of the symmetry group used (1: none)
+  int symmetries = 1;   // the order of the symmetry group used (1: none)
+  int checkpoints = 0;  // checkpoints written by this run
 };
 
 SearchResult searchDecomposition(const SearchProblem& problem, const SearchOptions& options);
