@@ -404,3 +404,26 @@ TEST_CASE("checkpoint and resume: a search stopped and resumed gives the uninter
           .c_str());
   std::filesystem::remove(file);
 }
+
+TEST_CASE("the hex push is a ring split: the 2-6 flip is one ring split of the 4 edges of the pushed quad") {
+  // TK03 §4.4 calls face/ring collapse reversible; its inverse along the loop of the quad's edges
+  // separates each of the 4 nodes of that loop and inserts the 4 ring hexes of a hex push.
+  SearchProblem pb = flipProblem("2-6");
+  SearchOptions o;
+  o.maxDepth = 2;
+  o.ops = {OpKind::RingSplit};
+  SearchResult r = searchDecomposition(pb, o);
+  REQUIRE(r.found);
+  REQUIRE(r.steps.size() == 1);
+  CHECK(r.steps[0].op == OpKind::RingSplit);
+  CHECK(r.steps[0].args.size() == 4);
+  CHECK(formatOpLog({1, r.steps}) == "v1;ringsplit h6f0/h2f4 h0f3/h2f3 h0f5/h2f5 h0f2/h2f2");
+  verifyDecomposition(pb, r.steps);
+  int places = 0;
+  for (const Embedding& e : flipEmbeddings("2-6")) {
+    CAPTURE(e.name);
+    verifyInEmbedding(pb, r.steps, e);
+    ++places;
+  }
+  CHECK(places == 6);  // the 4-cube as is, pillowed, hex-pushed; two 5x5x5 grid places, one O-grid place
+}
