@@ -634,6 +634,9 @@ CountBounds countBounds(const Complex& start, const SearchOptions& opt) {
   }
   if (use(OpKind::RingSplit)) b.upH = std::max(b.upH, opt.ringSplitMax), b.boundX = false;
   if (use(OpKind::RingCollapse)) b.downH = std::max(b.downH, opt.maxRegionHexes), b.boundX = false;
+  // The goal side applies the listed moves as inverse steps: bound both directions alike.
+  b.upH = b.downH = std::max(b.upH, b.downH);
+  b.upX = b.downX = std::max(b.upX, b.downX);
   return b;
 }
 
