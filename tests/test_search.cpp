@@ -235,18 +235,24 @@ TEST_CASE("invariants behind the search bounds: each operation's change of H and
 
 #include "ops/support.hpp"
 
+namespace {
+// The search with every option at its default and symmetry, then with `option` switched off.
+std::pair<SearchResult, SearchResult> withAndWithout(const SearchProblem& pb, int depth, bool SearchOptions::*option) {
+  SearchOptions o;
+  o.maxDepth = depth;
+  o.symmetry = true;
+  SearchResult with = searchDecomposition(pb, o);
+  o.*option = false;
+  return {with, searchDecomposition(pb, o)};
+}
+}  // namespace
+
 TEST_CASE("move prefilters drop only moves that are never valid and local: the same states level by level") {
   // Face collapses merging vertices of one hex or two host vertices, ring collapses through host
   // hexes or merging host vertices, hex pulls whose ring is not 4 region hexes, splits giving host
   // hexes new vertex ids, chord pushes whose quads share more than the edge: all skipped untried.
   for (const char* name : {"4-4m", "3-5e"}) {
-    SearchProblem pb = flipProblem(name);
-    SearchOptions o;
-    o.maxDepth = 3;
-    o.symmetry = true;
-    SearchResult with = searchDecomposition(pb, o);
-    o.prefilter = false;
-    SearchResult without = searchDecomposition(pb, o);
+    auto [with, without] = withAndWithout(flipProblem(name), 3, &SearchOptions::prefilter);
     INFO(name);
     CHECK(with.statesExplored == without.statesExplored);
     REQUIRE(with.levels.size() == without.levels.size());
@@ -332,12 +338,7 @@ TEST_CASE("count pruning: the same answers with fewer states; a level emptied by
   // All operations (ring operations make the bound on V - H unknown, and H steps up to 16): the
   // last level still meets only states with the other side's counts. 3-5e is found again.
   SearchProblem e = flipProblem("3-5e");
-  SearchOptions all;
-  all.maxDepth = 4;
-  all.symmetry = true;
-  SearchResult a = searchDecomposition(e, all);
-  all.countPruning = false;
-  SearchResult b = searchDecomposition(e, all);
+  auto [a, b] = withAndWithout(e, 4, &SearchOptions::countPruning);
   REQUIRE(a.found);
   REQUIRE(b.found);
   CHECK(a.steps.size() == 4);
