@@ -30,8 +30,10 @@ echo
 
 echo "### Build + dual extraction"
 echo
-echo "| n³ hexes | native cold ms | native warm build+dual ms | wasm cold ms | wasm warm build+dual ms | wasm/native (warm) | bytes/hex | native peak RSS MB | node peak RSS MB |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+# The package's Mesh keeps a DualTracker, so the wasm column's dual is the tracker's construction;
+# wasm/native compares it with the native build + tracker (the same work), not with extractDual alone.
+echo "| n³ hexes | native cold ms | native warm build+dual ms | native tracker ms | wasm cold ms | wasm warm build+tracker ms | wasm/native (warm, build+tracker) | bytes/hex | native peak RSS MB | node peak RSS MB |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for n in $SIZES; do
   nat=$(build/native/hexdual_bench build "$n" "$REPS")
   # The wasm row comes from the package build (wasm/dist); marked when that build is absent or fails.
@@ -40,7 +42,7 @@ for n in $SIZES; do
     const a = JSON.parse(process.argv[1]), b0 = JSON.parse(process.argv[2]);
     const b = b0.missing ? { coldMs: NaN, buildMs: NaN, dualMs: NaN, totalMs: NaN, peakRssMb: NaN } : b0;
     const f = (x) => (Number.isNaN(x) ? "**no wasm build**" : x.toFixed(1));
-    console.log(`| ${a.n}³ = ${a.hexes} | ${f(a.coldMs)} | ${f(a.buildMs)} + ${f(a.dualMs)} = ${f(a.totalMs)} | ${f(b.coldMs)} | ${f(b.buildMs)} + ${f(b.dualMs)} = ${f(b.totalMs)} | ${f(b.totalMs / a.totalMs)} | ${f(a.bytesPerHex)} | ${f(a.peakRssMb)} | ${f(b.peakRssMb)} |`);
+    console.log(`| ${a.n}³ = ${a.hexes} | ${f(a.coldMs)} | ${f(a.buildMs)} + ${f(a.dualMs)} = ${f(a.totalMs)} | ${f(a.trackerMs)} | ${f(b.coldMs)} | ${f(b.buildMs)} + ${f(b.dualMs)} = ${f(b.totalMs)} | ${f(b.totalMs / (a.buildMs + a.trackerMs))} | ${f(a.bytesPerHex)} | ${f(a.peakRssMb)} | ${f(b.peakRssMb)} |`);
   ' "$nat" "$was"
 done
 
@@ -71,6 +73,34 @@ echo "| --- | --- | --- | --- | --- |"
 for n in 10 100; do
   t=$(build/native/hexdual_bench throughput "$n" 20000)
   node -e 'const t = JSON.parse(process.argv[1]); console.log(`| ${t.n}³ | ${t.attempted} | ${t.applied} | ${t.appliedPerSec} | ${t.hexesAfter} |`);' "$t"
+done
+
+echo
+echo "### The same steps through the npm package (wasm): mesh.apply(step) with its dual update and report, then mesh.undo() (CPU µs, minimum of $OP_REPS)"
+echo
+echo "The package's step does more than the native op + dual column: it journals the step for undo/redo, builds the"
+echo "report (created/removed ids, Euler delta, changed sheet and chord ids) and hands it to JavaScript."
+echo
+wlines=""
+for n in $SIZES; do wlines+=$(node bench/bench_wasm.mjs ops "$n" "$OP_REPS" 2>/dev/null || echo '{"missing":true}')$'\n'; done
+node -e '
+  const rows = process.argv[1].trim().split("\n").map((l) => JSON.parse(l)).filter((r) => !r.missing);
+  if (!rows.length) { console.log("**no wasm build**"); process.exit(0); }
+  const sizes = [...new Set(rows.map((r) => r.n))], ops = [...new Set(rows.map((r) => r.op))];
+  const first = sizes[0], last = sizes[sizes.length - 1];
+  console.log(`| operation | ${sizes.map((n) => `${n}³`).join(" | ")} | ratio ${last}³/${first}³ |`);
+  console.log(`| --- | ${sizes.map(() => "---").join(" | ")} | --- |`);
+  for (const op of ops) {
+    const get = (n) => rows.find((r) => r.n === n && r.op === op).stepUs;
+    console.log(`| ${op} | ${sizes.map((n) => get(n).toFixed(0)).join(" | ")} | ${(get(last) / get(first)).toFixed(2)} |`);
+  }
+' "$wlines"
+echo
+echo "| grid | wasm: attempted | applied | applied per second | hexes at the end |"
+echo "| --- | --- | --- | --- | --- |"
+for n in 10 100; do
+  t=$(node bench/bench_wasm.mjs throughput "$n" 20000 2>/dev/null || echo '{"missing":true}')
+  node -e 'const t = JSON.parse(process.argv[1]); console.log(t.missing ? `| ${process.argv[2]}³ | **no wasm build** | | | |` : `| ${t.n}³ | ${t.attempted} | ${t.applied} | ${t.perSecond} | ${t.hexes} |`);' "$t" "$n"
 done
 
 echo

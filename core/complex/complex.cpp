@@ -7,8 +7,8 @@
 namespace hexdual {
 using namespace tables;
 
-void Complex::requireHex(HexId h, const char* what) const {
-  if (!isHex(h)) throw Error(std::string(what) + ": hex " + std::to_string(h) + " does not exist");
+void Complex::throwNoHex(HexId h, const char* what) {
+  throw Error(std::string(what) + ": hex " + std::to_string(h) + " does not exist");
 }
 
 void Complex::reserve(size_t hexes, size_t vertices) {

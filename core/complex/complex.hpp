@@ -219,7 +219,12 @@ class Complex {
  private:
   static constexpr uint32_t kBoundary = 0xFFFFFFFFu;
   static uint32_t pack(HexId h, int f, int o) { return (uint32_t(h) << 6) | uint32_t(f << 3) | uint32_t(o); }
-  void requireHex(HexId h, const char* what) const;
+  // The check inline, the message out of line: glue() runs it for every quad a grid or a file joins.
+  void requireHex(HexId h, const char* what) const {
+    if (!isHex(h)) [[unlikely]]
+      throwNoHex(h, what);
+  }
+  [[noreturn]] static void throwNoHex(HexId h, const char* what);
   void validateLinks(const std::vector<int32_t>& edgeClass) const;
   struct VertexStar {
     std::vector<std::pair<HexId, int>> corners;

@@ -33,7 +33,8 @@ std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
 }
 
 namespace {
-int slotsOnSheet(const std::array<int32_t, 3>& s, int32_t id) { return (s[0] == id) + (s[1] == id) + (s[2] == id); }
+// Inlined even where the tracker is built for size (the wasm module): the constructor calls it 3x per hex.
+[[gnu::always_inline]] inline int slotsOnSheet(const std::array<int32_t, 3>& s, int32_t id) { return (s[0] == id) + (s[1] == id) + (s[2] == id); }
 }  // namespace
 
 namespace {

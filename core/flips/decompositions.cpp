@@ -1,7 +1,7 @@
 #include "flips/decompositions.hpp"
 
 #include <cstdio>
-#include <sstream>
+#include <string_view>
 
 #include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
@@ -10,22 +10,30 @@ namespace hexdual {
 
 extern const char* const kDecompositionsText;  // generated from core/flips/decompositions.txt
 
+// Splits on one character, keeping empty fields between separators (not after a final one,
+// like std::getline). Plain string_view splitting keeps iostreams and locales out of the wasm.
+static std::vector<std::string> splitOn(std::string_view s, char sep) {
+  std::vector<std::string> out;
+  while (!s.empty()) {
+    const size_t at = s.find(sep);
+    out.emplace_back(s.substr(0, at));
+    if (at == std::string_view::npos) break;
+    s.remove_prefix(at + 1);
+  }
+  return out;
+}
+
 std::vector<StoredDecomposition> parseDecompositions(const std::string& text) {
   std::vector<StoredDecomposition> out;
-  std::istringstream in(text);
-  std::string line;
   int lineNo = 0;
   bool versionSeen = false;
-  while (std::getline(in, line)) {
+  for (const std::string& line : splitOn(text, '\n')) {
     ++lineNo;
     if (line.empty() || line[0] == '#') {
       if (line.rfind("# format v1", 0) == 0) versionSeen = true;
       continue;
     }
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, '|')) f.push_back(cell);
+    const std::vector<std::string> f = splitOn(line, '|');
     auto bad = [&](const std::string& why) { return Error("decompositions:" + std::to_string(lineNo) + ": " + why); };
     if (!versionSeen) throw bad("missing '# format v1' header");
     if (f.size() != 8) throw bad("expected 8 fields separated by '|', found " + std::to_string(f.size()));
