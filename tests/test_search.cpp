@@ -232,3 +232,199 @@ TEST_CASE("invariants behind the search bounds: each operation's change of H and
   OpResult rp = applyStep(p, pl[0]);
   CHECK(rp.dV - rp.dH == 2);
 }
+
+#include "ops/support.hpp"
+
+namespace {
+// The search with every option at its default and symmetry, then with `option` switched off.
+std::pair<SearchResult, SearchResult> withAndWithout(const SearchProblem& pb, int depth, bool SearchOptions::*option) {
+  SearchOptions o;
+  o.maxDepth = depth;
+  o.symmetry = true;
+  SearchResult with = searchDecomposition(pb, o);
+  o.*option = false;
+  return {with, searchDecomposition(pb, o)};
+}
+}  // namespace
+
+TEST_CASE("move prefilters drop only moves that are never valid and local: the same states level by level") {
+  // Face collapses merging vertices of one hex or two host vertices, ring collapses through host
+  // hexes or merging host vertices, hex pulls whose ring is not 4 region hexes, splits giving host
+  // hexes new vertex ids, chord pushes whose quads share more than the edge: all skipped untried.
+  for (const char* name : {"4-4m", "3-5e"}) {
+    auto [with, without] = withAndWithout(flipProblem(name), 3, &SearchOptions::prefilter);
+    INFO(name);
+    CHECK(with.statesExplored == without.statesExplored);
+    REQUIRE(with.levels.size() == without.levels.size());
+    for (size_t i = 0; i < with.levels.size(); ++i) CHECK(with.levels[i].newStates == without.levels[i].newStates);
+    CHECK(with.movesApplied <= without.movesApplied);
+  }
+  // Exact counts of the 4-4m search to depth 3 (a = 2, b = 1), one state per orbit of 8 symmetries:
+  // 1 + 1 roots, 21 + 21 states of depth 1, and of the 1,118 of depth 2 (the last level) the 559
+  // whose counts occur on the goal side.
+  SearchOptions o;
+  o.maxDepth = 3;
+  o.symmetry = true;
+  SearchResult r = searchDecomposition(flipProblem("4-4m"), o);
+  CHECK(r.symmetries == 8);
+  CHECK(r.statesExplored == 603);
+  o.countPruning = false;
+  CHECK(searchDecomposition(flipProblem("4-4m"), o).statesExplored == 1162);
+}
+
+TEST_CASE("DeferValidation: operations commit without their invariant check; undo restores the complex") {
+  // Every face collapse in the closed 4-cube: those refused as "not a valid complex" commit under
+  // the guard (the caller checks), and undo gives the complex back; outside it they are refused again.
+  Complex cx = makeFourCubeBoundary();
+  const std::vector<int64_t> form = canonicalForm(cx, true);
+  int refused = 0, deferred = 0;
+  for (HexId h = 0; h < 8; ++h)
+    for (int e = 0; e < 12; ++e) {
+      ops::EdgeStar st = ops::closedEdgeStar(cx, {h, e}, "test");
+      for (size_t i = 0; i < st.inc.size(); ++i)
+        for (size_t j = i + 1; j < st.inc.size(); ++j) {
+          QuadSide f{st.inc[i].hex, st.exitFace[i]}, g{st.inc[j].hex, st.exitFace[j]};
+          try {
+            faceCollapse(cx, {h, e}, f, g);
+            FAIL("a face collapse in the closed 4-cube was accepted");
+          } catch (const Error& err) {
+            if (std::string(err.what()).find("not be a valid complex") == std::string::npos) continue;
+          }
+          ++refused;
+          OpResult r;
+          {
+            ops::DeferValidation unchecked;
+            CHECK(ops::DeferValidation::active());
+            r = faceCollapse(cx, {h, e}, f, g);
+            ++deferred;
+          }
+          CHECK_FALSE(ops::DeferValidation::active());
+          CHECK_THROWS(cx.validate());
+          cx.undo(r.edits);
+          CHECK(canonicalForm(cx, true) == form);
+        }
+    }
+  CHECK(refused > 0);
+  CHECK(deferred == refused);
+  cx.validate();
+}
+
+TEST_CASE("count pruning: the same answers with fewer states; a level emptied by the bound proves the depth") {
+  // Chord push and pull change (V, H) by (+2, +2) and (-2, -2); the 2-6 goal has 4 more hexes.
+  // From the goal there is no chord to pull, and after one push (H + 6 from the start) three pulls
+  // are needed: with 3 steps in all, nothing from the goal side survives.
+  SearchProblem pb = flipProblem("2-6");
+  SearchOptions o;
+  o.ops = {OpKind::ChordPush, OpKind::ChordPull};
+  o.symmetry = true;
+  o.maxDepth = 3;
+  SearchResult three = searchDecomposition(pb, o);
+  CHECK_FALSE(three.found);
+  CHECK(three.stoppedBy == "depth");
+  CHECK(three.depthSearched == 3);
+  CHECK(three.message == "no new state of depth 1 from the goal survives the count bound of --max-depth 3");
+  CHECK(three.prunedByCounts > 0);
+  o.maxDepth = 5;
+  SearchResult pruned = searchDecomposition(pb, o);
+  o.countPruning = false;
+  SearchResult full = searchDecomposition(pb, o);
+  CHECK_FALSE(pruned.found);
+  CHECK_FALSE(full.found);
+  CHECK(pruned.depthSearched == 5);
+  CHECK(full.depthSearched == 5);
+  CHECK(pruned.statesExplored == 114);
+  CHECK(full.statesExplored == 4443);
+  CHECK(full.prunedByCounts == 0);
+  // All operations (ring operations make the bound on V - H unknown, and H steps up to 16): the
+  // last level still meets only states with the other side's counts. 3-5e is found again.
+  SearchProblem e = flipProblem("3-5e");
+  auto [a, b] = withAndWithout(e, 4, &SearchOptions::countPruning);
+  REQUIRE(a.found);
+  REQUIRE(b.found);
+  CHECK(a.steps.size() == 4);
+  verifyDecomposition(e, a.steps);
+  CHECK(a.statesExplored == 896);
+  CHECK(b.statesExplored == 997);
+}
+
+#include <filesystem>
+
+TEST_CASE("checkpoint and resume: a search stopped and resumed gives the uninterrupted result") {
+  // 3-5e to depth 4 with chunks of 8 frontier states: checkpoints fall inside levels.
+  const std::string file = (std::filesystem::temp_directory_path() / "hexdual_test_search.ckpt").string();
+  SearchProblem pb = flipProblem("3-5e");
+  SearchOptions o;
+  o.maxDepth = 4;
+  o.symmetry = true;
+  o.chunk = 8;
+  SearchResult whole = searchDecomposition(pb, o);
+  REQUIRE(whole.found);
+  CHECK(whole.checkpoints == 0);
+  auto same = [&](const SearchResult& r) {
+    REQUIRE(r.found);
+    CHECK(formatOpLog({1, r.steps}) == formatOpLog({1, whole.steps}));
+    CHECK(r.statesExplored == whole.statesExplored);
+    CHECK(r.movesApplied == whole.movesApplied);
+    REQUIRE(r.levels.size() == whole.levels.size());
+    for (size_t i = 0; i < r.levels.size(); ++i) CHECK(r.levels[i].newStates == whole.levels[i].newStates);
+  };
+  // Stopped by the state cap inside depth 3 (the start side's second level), then resumed.
+  o.checkpointFile = file;
+  o.maxStates = 100;
+  SearchResult capped = searchDecomposition(pb, o);
+  CHECK(capped.stoppedBy == "states");
+  CHECK(capped.checkpoints == 1);
+  CHECK(capped.message == "stopped at the state cap (--max-states 100) during depth 3; checkpoint in " + file);
+  o.checkpointFile.clear();
+  o.maxStates = 200000;
+  o.resumeFile = file;
+  same(searchDecomposition(pb, o));
+  // A request to stop (as SIGINT sets it) at the first chunk; a checkpoint at every chunk after.
+  std::atomic<int> request{2};
+  o.resumeFile.clear();
+  o.checkpointFile = file;
+  o.request = &request;
+  SearchResult stopped = searchDecomposition(pb, o);
+  CHECK(stopped.stoppedBy == "interrupted");
+  CHECK(stopped.message == "stopped on request during depth 1; checkpoint in " + file);
+  request = 0;
+  o.resumeFile = file;
+  o.checkpointEvery = 1e-9;
+  SearchResult resumed = searchDecomposition(pb, o);
+  same(resumed);
+  CHECK(resumed.checkpoints == 5);  // one per chunk start: levels of 1, 1, 11 and 16 states in chunks of 8
+  // A checkpoint belongs to one search.
+  o.checkpointFile.clear();
+  o.maxDepth = 5;
+  CHECK_THROWS_WITH(
+      searchDecomposition(pb, o),
+      ("resume: " + file +
+       " belongs to another search (3-5e; depth 4; ops; region 16; ring split 8; symmetry 1; prefilter 1; "
+       "count pruning 1; chunk 8), not this one (3-5e; depth 5; ops; region 16; ring split 8; symmetry 1; "
+       "prefilter 1; count pruning 1; chunk 8)")
+          .c_str());
+  std::filesystem::remove(file);
+}
+
+TEST_CASE("the hex push is a ring split: the 2-6 flip is one ring split of the 4 edges of the pushed quad") {
+  // TK03 §4.4 calls face/ring collapse reversible; its inverse along the loop of the quad's edges
+  // separates each of the 4 nodes of that loop and inserts the 4 ring hexes of a hex push.
+  SearchProblem pb = flipProblem("2-6");
+  SearchOptions o;
+  o.maxDepth = 2;
+  o.ops = {OpKind::RingSplit};
+  SearchResult r = searchDecomposition(pb, o);
+  REQUIRE(r.found);
+  REQUIRE(r.steps.size() == 1);
+  CHECK(r.steps[0].op == OpKind::RingSplit);
+  CHECK(r.steps[0].args.size() == 4);
+  CHECK(formatOpLog({1, r.steps}) == "v1;ringsplit h6f0/h2f4 h0f3/h2f3 h0f5/h2f5 h0f2/h2f2");
+  verifyDecomposition(pb, r.steps);
+  int places = 0;
+  for (const Embedding& e : flipEmbeddings("2-6")) {
+    CAPTURE(e.name);
+    verifyInEmbedding(pb, r.steps, e);
+    ++places;
+  }
+  CHECK(places == 6);  // the 4-cube as is, pillowed, hex-pushed; two 5x5x5 grid places, one O-grid place
+}

@@ -1,4 +1,6 @@
 // hexdual command-line tool: a thin layer over core. See docs/cli.md.
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -46,13 +48,16 @@ const char* kUsage =
     "  hexdual flip verify --all [--json]        check every stored decomposition in host meshes\n"
     "  hexdual flip search NAME --max-depth D [--max-seconds S] [--max-states N] [--ops a,b]\n"
     "                   [--threads T] [--max-memory MB] [--max-region H] [--ring-split L] [--symmetry]\n"
-    "                                            search atomic sequences for a flip\n"
+    "                   [--checkpoint FILE [--checkpoint-every S]] [--resume FILE]\n"
+    "                                            search atomic sequences for a flip (SIGUSR1: checkpoint\n"
+    "                                            now; SIGINT/SIGTERM: checkpoint and stop)\n"
     "Reading (every command): .vtk (legacy 2.0-5.1), .vtu, .msh (2.2, 4.1), .mesh, .meshb, .hxd, any of\n"
     "them gzipped; --hexes-only reads the hexahedra of a file that also has tets, prisms or pyramids.\n";
 
 struct Args {
   std::vector<std::string> positional;
-  std::string output, ops, at, local, jsonDir, svgDir;
+  std::string output, ops, at, local, jsonDir, svgDir, checkpoint, resume;
+  double checkpointEvery = 0;
   bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false;
   int sheet = -1, rings = 2;
   int maxDepth = 4;
@@ -84,11 +89,14 @@ Args parseArgs(int argc, char** argv, int from) {
     if (s == "-o") {
       if (i + 1 >= argc) throw Error("-o needs a file name");
       a.output = argv[++i];
+    } else if (s == "--checkpoint" || s == "--resume") {
+      if (i + 1 >= argc) throw Error(s + " needs a file name");
+      (s == "--checkpoint" ? a.checkpoint : a.resume) = argv[++i];
     } else if (s == "--ops") {
       if (i + 1 >= argc) throw Error("--ops needs an operation log");
       a.ops = argv[++i];
     } else if (s == "--at" || s == "--max-depth" || s == "--max-seconds" || s == "--max-states" || s == "--threads" ||
-               s == "--max-memory" || s == "--max-region" || s == "--ring-split") {
+               s == "--max-memory" || s == "--max-region" || s == "--ring-split" || s == "--checkpoint-every") {
       if (i + 1 >= argc) throw Error(s + " needs a value");
       std::string v = argv[++i];
       try {
@@ -100,6 +108,7 @@ Args parseArgs(int argc, char** argv, int from) {
         if (s == "--max-memory") a.maxMemory = std::stod(v);
         if (s == "--max-region") a.maxRegion = std::stoi(v);
         if (s == "--ring-split") a.ringSplit = std::stoi(v);
+        if (s == "--checkpoint-every") a.checkpointEvery = std::stod(v);
       } catch (const std::exception&) {
         throw Error(s + " needs a number, not '" + v + "'");
       }
@@ -216,6 +225,8 @@ OpKind opNamed(const std::string& name, const std::string& context) {
   return op->kind;
 }
 
+std::atomic<int> searchRequest{0};  // set by the signal handlers of `flip search --checkpoint`
+
 int runFlip(const Args& a) {
   if (a.positional.empty()) throw Error("flip needs a subcommand or a flip name (see --help)");
   const std::string sub = a.positional[0];
@@ -273,6 +284,17 @@ int runFlip(const Args& a) {
     o.maxRegionHexes = a.maxRegion;
     o.symmetry = a.symmetry;
     o.ringSplitMax = a.ringSplit;
+    o.checkpointFile = a.checkpoint;
+    o.checkpointEvery = a.checkpointEvery;
+    o.resumeFile = a.resume;
+    if (a.checkpointEvery > 0 && a.checkpoint.empty()) throw Error("--checkpoint-every needs --checkpoint FILE");
+    if (!a.checkpoint.empty()) {
+      // SIGUSR1: write a checkpoint and go on; SIGINT, SIGTERM: write one and stop.
+      o.request = &searchRequest;
+      std::signal(SIGUSR1, [](int) { searchRequest = 1; });
+      std::signal(SIGINT, [](int) { searchRequest = 2; });
+      std::signal(SIGTERM, [](int) { searchRequest = 2; });
+    }
     o.progress = [](const SearchLevel& l) {
       std::cerr << "depth " << l.depth << (l.side ? " from the goal: " : " from the start: ") << l.newStates << " new states, "
                 << l.storedStates << " stored, " << l.movesApplied << " moves applied, " << l.seconds << " s\n";
@@ -288,6 +310,7 @@ int runFlip(const Args& a) {
               << r.stoppedBy << " after " << r.statesExplored << " states, " << r.movesApplied << " moves applied, "
               << (r.memoryBytes >> 20) << " MB" << (r.symmetries > 1 ? ", " + std::to_string(r.symmetries) + " symmetries" : "") << "\n";
     if (!r.message.empty()) std::cerr << r.message << "\n";
+    if (r.checkpoints > 0) std::cerr << r.checkpoints << " checkpoint(s) written to " << o.checkpointFile << "\n";
     return 0;
   }
   // hexdual flip NAME --at H1,H2 FILE -o OUT [--via-atomic]

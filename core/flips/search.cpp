@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <optional>
@@ -54,7 +55,7 @@ namespace {
 struct HostSnapshot {
   std::vector<HexId> host;
   std::vector<std::array<VertexId, 8>> verts;
-  std::vector<std::array<Gluing, 6>> hostGlue;             // gluings to host hexes (else boundary/region marker)
+  std::vector<std::array<Gluing, 6>> hostGlue;           // gluings to host hexes (else boundary/region marker)
   std::vector<std::vector<std::vector<EdgeRef>>> edges;  // per host hex, per edge: host incidences on its cycle
 };
 
@@ -139,7 +140,8 @@ bool freshClosedStar(const Complex& cx, HexId h, int e, std::vector<EdgeRef>& se
 // loop's k-th edge, f_k and f_k+1 share an edge across the loop (so do the g's). Each loop is
 // started once, at its smallest edge walked from its smaller vertex; both sides of f_0 are tried
 // (the side of f_0 keeps the loop's vertex ids). Every quad must have a region side.
-void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int maxLen, std::vector<OpStep>& out) {
+void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int maxLen, bool prefilter,
+                      std::vector<OpStep>& out) {
   if (maxLen < 2) return;
   auto verts = [&](QuadSide s) {
     std::array<VertexId, 4> v;
@@ -149,7 +151,8 @@ void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int max
   auto other = [&](QuadSide s, VertexId v, VertexId away) {  // v's neighbour in quad s other than `away`
     auto fv = verts(s);
     for (int p = 0; p < 4; ++p)
-      if (fv[size_t(p)] == v) return fv[size_t((p + 1) & 3)] == away ? fv[size_t((p + 3) & 3)] : fv[size_t((p + 1) & 3)];
+      if (fv[size_t(p)] == v)
+        return fv[size_t((p + 1) & 3)] == away ? fv[size_t((p + 3) & 3)] : fv[size_t((p + 1) & 3)];
     return VertexId(-1);
   };
   auto cornerIn = [&](HexId h, VertexId v) {
@@ -183,9 +186,11 @@ void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int max
     VertexId wf = other(f, at, from), wg = other(g, at, from);
     if (at == loop[0]) {  // back at the start: f_0 and g_0 must continue the strips
       QuadSide f0 = bands[0].first, g0 = bands[0].second;
-      if (k >= 2 && other(f0, at, loop[1]) == wf && other(g0, at, loop[1]) == wg && edgeOf(f0, at, wf) == edgeOf(f, at, wf) &&
-          edgeOf(g0, at, wg) == edgeOf(g, at, wg))
+      if (k >= 2 && other(f0, at, loop[1]) == wf && other(g0, at, loop[1]) == wg &&
+          edgeOf(f0, at, wf) == edgeOf(f, at, wf) && edgeOf(g0, at, wg) == edgeOf(g, at, wg))
         for (QuadSide s0 : {f0, QuadSide{cx.gluing(f0).hex, cx.gluing(f0).face}}) {
+          // The hex across f_0 from s0 gets new ids for the loop's vertices: never a host hex.
+          if (prefilter && isHost(host, cx.gluing(s0).hex)) continue;
           OpStep st{OpKind::RingSplit, {OpArg::of(s0, g0)}, 0};
           for (size_t j = 1; j < k; ++j) st.args.push_back(OpArg::of(bands[j].first, bands[j].second));
           out.push_back(st);
@@ -217,7 +222,8 @@ void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int max
       EdgeRef ce;
       ops::EdgeStar st;
       if (!freshClosedStar(cx, h, e, seen, ce, st)) continue;
-      VertexId a = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][0]), b = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][1]);
+      VertexId a = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][0]),
+               b = cx.vertex(ce.hex, kEdgeCorners[size_t(ce.edge)][1]);
       if (b < a) std::swap(a, b);
       std::vector<QuadSide> qs;
       for (size_t k = 0; k < st.inc.size(); ++k) qs.push_back(cx.canonical(QuadSide{st.inc[k].hex, st.exitFace[k]}));
@@ -233,9 +239,104 @@ void appendRingSplits(const Complex& cx, const std::vector<HexId>& host, int max
     }
 }
 
+// The vertices of f and g next to a and to b (e = ab), as arcSplit finds them (TK03 §4.1, §4.4):
+// chord push and face collapse reject f and g when these meet (the quads share more than e).
+struct ArcEnds {
+  VertexId fa, fb, ga, gb;
+  bool distinct() const {
+    return fa >= 0 && fb >= 0 && ga >= 0 && gb >= 0 && fa != ga && fa != gb && fb != ga && fb != gb;
+  }
+};
+ArcEnds arcEnds(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
+  const VertexId a = cx.vertex(e.hex, kEdgeCorners[size_t(e.edge)][0]),
+                 b = cx.vertex(e.hex, kEdgeCorners[size_t(e.edge)][1]);
+  auto neighbourOf = [&](QuadSide q, VertexId v, VertexId away) {
+    std::array<VertexId, 4> fv;
+    for (int p = 0; p < 4; ++p) fv[size_t(p)] = cx.vertex(q.hex, kFaceCorners[size_t(q.face)][size_t(p)]);
+    for (int p = 0; p < 4; ++p)
+      if (fv[size_t(p)] == v)
+        return fv[size_t((p + 1) & 3)] == away ? fv[size_t((p + 3) & 3)] : fv[size_t((p + 1) & 3)];
+    return VertexId(-1);
+  };
+  return {neighbourOf(f, a, b), neighbourOf(f, b, a), neighbourOf(g, a, b), neighbourOf(g, b, a)};
+}
+
+// Necessary conditions for faceCollapse(e, f, g) to give a valid local state, cheaper than trying
+// it: f = (a,b,c,d) and g = (a,b,c',d') merge c with c' and d with d' (TK03 §4.4; the spec's
+// face open-collapse), renaming every corner of the merged vertices. So no hex may have both
+// vertices of a pair (it would use one vertex at two corners), and not both may be host vertices
+// (a host hex would change its vertices: not local).
+bool faceCollapseMayApply(const Complex& cx, const std::vector<HexId>& host, const ArcEnds& ends) {
+  auto hexHas = [&](HexId h, VertexId v) {
+    for (int c = 0; c < 8; ++c)
+      if (cx.vertex(h, c) == v) return true;
+    return false;
+  };
+  for (auto [x, y] : {std::pair{ends.fa, ends.ga}, std::pair{ends.fb, ends.gb}}) {
+    bool xHost = false, yHost = false;
+    for (HexId h : cx.hexes()) {
+      bool hx = hexHas(h, x), hy = hexHas(h, y);
+      if (hx && hy) return false;
+      if (isHost(host, h)) xHost = xHost || hx, yHost = yHost || hy;
+    }
+    if (xHost && yHost) return false;
+  }
+  return true;
+}
+
+// Necessary conditions for ringCollapse(e) to give a local state: the chord through e's hex along
+// e's axis closes without passing a hex twice (else the operation rejects it), none of its hexes is
+// a host hex (the collapse removes them), and no hex of it merges two host vertices (per ring hex,
+// the corners of e's diagonal edge, carried round the ring, merge with those of the opposite edge;
+// a host hex would change its vertices). The walk is the operation's own (TK03 §4.4).
+bool ringCollapseMayApply(const Complex& cx, const std::vector<uint8_t>& hostVertex, const std::vector<HexId>& host,
+                          EdgeRef e) {
+  const int axis0 = axisOfEdge(e.edge);
+  HexId h = e.hex;
+  int exit = 2 * axis0 + 1, diag = e.edge;
+  std::vector<HexId> ring;
+  auto hostV = [&](VertexId v) { return size_t(v) < hostVertex.size() && hostVertex[size_t(v)]; };
+  for (;;) {
+    if (isHost(host, h) || std::find(ring.begin(), ring.end(), h) != ring.end()) return false;
+    ring.push_back(h);
+    for (int k = 0; k < 2; ++k) {
+      VertexId v1 = cx.vertex(h, kEdgeCorners[size_t(diag)][size_t(k)]),
+               v2 = cx.vertex(h, kEdgeCorners[size_t(diag ^ 3)][size_t(k)]);
+      if (v1 != v2 && hostV(v1) && hostV(v2)) return false;
+    }
+    Gluing g = cx.gluing(h, exit);
+    if (g.boundary()) return false;
+    const int a2 = axisOfFace(g.face);
+    const int c = positionInFace(exit, kEdgeCorners[size_t(diag)][0]) >= 0 ? kEdgeCorners[size_t(diag)][0]
+                                                                           : kEdgeCorners[size_t(diag)][1];
+    diag = edgesOfCorner(cx.mappedCorner(h, exit, c))[size_t(a2)];
+    if (g.hex == ring[0] && a2 == axis0) return true;
+    h = g.hex;
+    exit = oppositeFace(g.face);
+  }
+}
+
+// Necessary conditions for hexPull(r): the 4 side quads of r's hex are glued to 4 distinct region
+// hexes other than the two at r (the ring, which the pull removes: a host hex there is never local).
+bool hexPullMayApply(const Complex& cx, const std::vector<HexId>& host, QuadSide r) {
+  const HexId a = r.hex, b = cx.gluing(r).hex;
+  std::array<HexId, 4> ring{};
+  int n = 0;
+  for (int s = 0; s < 6; ++s) {
+    if (axisOfFace(s) == axisOfFace(r.face)) continue;
+    Gluing g = cx.gluing(a, s);
+    if (g.boundary() || g.hex == a || g.hex == b || isHost(host, g.hex) ||
+        std::find(ring.begin(), ring.begin() + n, g.hex) != ring.begin() + n)
+      return false;
+    ring[size_t(n++)] = g.hex;
+  }
+  return true;
+}
+
 // Candidate steps on region hexes. Cheap exact preconditions (a pillow partner, a blind-chord
 // partner) are checked here so that most rejections cost no exception.
-std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<OpKind>& ops, int ringSplitMax) {
+std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, const std::vector<OpKind>& ops,
+                          int ringSplitMax, bool prefilter = true) {
   using K = OpKind;
   auto use = [&](OpKind op) { return ops.empty() || std::find(ops.begin(), ops.end(), op) != ops.end(); };
   std::vector<OpStep> out;
@@ -243,7 +344,14 @@ std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, con
   auto inRegion = [&](HexId h) { return !isHost(host, h); };
   std::vector<QuadSide> seenQuads;
   std::vector<EdgeRef> seenEdges;
-  for (HexId h : region) {
+  std::vector<uint8_t> hostVertex(size_t(cx.vertexCapacity()), 0);
+  for (HexId h : host)
+    for (VertexId v : cx.hexVertices(h)) hostVertex[size_t(v)] = 1;
+  std::vector<std::array<VertexId, 4>> faceSets;  // per region hex and face: its sorted vertex ids
+  if (use(K::FaceSplit))
+    for (HexId h : region)
+      for (int f = 0; f < 6; ++f) faceSets.push_back(ops::faceVertexSet(cx, h, f));
+  for (const HexId& h : region) {
     if (use(K::Unpillow) && ops::partnerSharing(cx, h, 5) >= 0) out.push_back(makeStep(K::Unpillow, h));
     if (use(K::ChordPull) && ops::partnerSharing(cx, h, 4) >= 0) out.push_back(makeStep(K::ChordPull, h));
     for (int f = 0; f < 6; ++f) {
@@ -254,46 +362,64 @@ std::vector<OpStep> moves(const Complex& cx, const std::vector<HexId>& host, con
       if (fresh) seenQuads.push_back(c);
       if (fresh && use(K::Pillow)) out.push_back(makeStep(K::Pillow, QuadSide{h, f}));
       if (fresh && use(K::HexPush) && inRegion(g.hex)) out.push_back(makeStep(K::HexPush, QuadSide{h, f}));
-      if (use(K::HexPull) && inRegion(g.hex)) out.push_back(makeStep(K::HexPull, QuadSide{h, f}));
+      if (use(K::HexPull) && inRegion(g.hex) && (!prefilter || hexPullMayApply(cx, host, {h, f})))
+        out.push_back(makeStep(K::HexPull, QuadSide{h, f}));
     }
     if (use(K::FaceSplit))
       for (int f = 0; f < 6; ++f) {
         Gluing g = cx.gluing(h, f);
         if (g.boundary()) continue;
-        auto key = ops::faceVertexSet(cx, h, f);
-        for (HexId h2 : region)
+        const auto& key = faceSets[size_t(&h - region.data()) * 6 + size_t(f)];
+        for (size_t i2 = 0; i2 < region.size(); ++i2)
           for (int f2 = 0; f2 < 6; ++f2) {
+            const HexId h2 = region[i2];
             if ((h2 == h && f2 == f) || (h2 == g.hex && f2 == g.face) || cx.gluing(h2, f2).boundary()) continue;
-            if (QuadSide{h2, f2} < QuadSide{h, f} || ops::faceVertexSet(cx, h2, f2) != key) continue;
+            if (QuadSide{h2, f2} < QuadSide{h, f} || faceSets[i2 * 6 + size_t(f2)] != key) continue;
             Gluing g2 = cx.gluing(h2, f2);
             // Every choice of sides: the side of sL keeps the vertex ids (host sides must keep theirs).
+            // (The hex across the quad from a's side gets new ids for the split vertices: a host
+            // hex there would change its vertices, so that choice is never local.)
             for (QuadSide a : {QuadSide{h, f}, QuadSide{g.hex, g.face}})
-              for (QuadSide b : {QuadSide{h2, f2}, QuadSide{g2.hex, g2.face}}) out.push_back(makeStep(K::FaceSplit, a, b));
+              for (QuadSide b : {QuadSide{h2, f2}, QuadSide{g2.hex, g2.face}})
+                if (!prefilter || !isHost(host, cx.gluing(a).hex)) out.push_back(makeStep(K::FaceSplit, a, b));
           }
       }
     for (int e = 0; e < 12; ++e) {
-      if (use(K::RingCollapse) && (e & 2) == 0) out.push_back(makeStep(K::RingCollapse, EdgeRef{h, e}));
+      if (use(K::RingCollapse) && (e & 2) == 0 && (!prefilter || ringCollapseMayApply(cx, hostVertex, host, {h, e})))
+        out.push_back(makeStep(K::RingCollapse, EdgeRef{h, e}));
       if (!use(K::ChordPush) && !use(K::FaceCollapse)) continue;
       EdgeRef ce;
       ops::EdgeStar st;
       if (!freshClosedStar(cx, h, e, seenEdges, ce, st)) continue;
       size_t n = st.inc.size();
       auto touches = [&](size_t k) { return inRegion(st.inc[k].hex) || inRegion(st.inc[(k + 1) % n].hex); };
+      // Both operations cut e into one edge per arc (arc L: incidences i+1..j, R: the rest): with
+      // a host hex on both arcs, a host edge would be split, so the move is never local.
+      auto hostOn = [&](size_t from, size_t to) {  // incidences from..to-1, cyclically
+        for (size_t k = from; k != to; k = (k + 1) % n)
+          if (!inRegion(st.inc[k].hex)) return true;
+        return false;
+      };
       for (size_t i = 0; i < n; ++i)
         for (size_t j = i + 1; j < n; ++j) {
           if (!touches(i) || !touches(j)) continue;
+          if (prefilter && hostOn((i + 1) % n, (j + 1) % n) && hostOn((j + 1) % n, (i + 1) % n)) continue;
           QuadSide fi{st.inc[i].hex, st.exitFace[i]}, fj{st.inc[j].hex, st.exitFace[j]};
+          const ArcEnds ends = arcEnds(cx, ce, fi, fj);
+          if (prefilter && !ends.distinct()) continue;
           if (use(K::ChordPush)) out.push_back(makeStep(K::ChordPush, ce, fi, fj));
-          if (use(K::FaceCollapse)) out.push_back(makeStep(K::FaceCollapse, ce, fi, fj));
+          if (use(K::FaceCollapse) && (!prefilter || faceCollapseMayApply(cx, host, ends)))
+            out.push_back(makeStep(K::FaceCollapse, ce, fi, fj));
         }
     }
   }
-  if (use(K::RingSplit)) appendRingSplits(cx, host, ringSplitMax, out);
+  if (use(K::RingSplit)) appendRingSplits(cx, host, ringSplitMax, prefilter, out);
   return out;
 }
 
 // Rewrites a step's hex ids and local indices from complex `from` to the isomorphic `to`.
-OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalLabelling& to, const std::vector<HexId>& host) {
+OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalLabelling& to,
+                     const std::vector<HexId>& host) {
   auto indexOf = [&](HexId h) {
     for (size_t i = 0; i < from.order.size(); ++i)
       if (from.order[i] == h) return int(i);
@@ -312,7 +438,8 @@ OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalL
     int i = indexOf(h);
     h2 = to.order[size_t(i)];
     int corners[4];
-    for (int q = 0; q < 4; ++q) corners[q] = to.frame[size_t(i)][size_t(bitsOf(from.frame[size_t(i)], kFaceCorners[size_t(face)][size_t(q)]))];
+    for (int q = 0; q < 4; ++q)
+      corners[q] = to.frame[size_t(i)][size_t(bitsOf(from.frame[size_t(i)], kFaceCorners[size_t(face)][size_t(q)]))];
     for (int g = 0; g < 6; ++g) {
       int hits = 0;
       for (int q = 0; q < 4; ++q) hits += positionInFace(g, corners[q]) >= 0;
@@ -341,17 +468,26 @@ OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalL
   return st;
 }
 
-
 // One side of the bidirectional search: nodes stored as (parent, index of the move in the
 // parent's move list), 8 bytes each; the state itself is replayed from the root on demand.
 struct Side {
   Complex root;
   std::vector<int32_t> parent;
   std::vector<uint32_t> move;
+  std::vector<uint16_t> counts;                                       // packed (V, H) of each node (CountBounds::pack)
+  std::vector<uint8_t> countSeen = std::vector<uint8_t>(1 << 16, 0);  // which packed counts occur
   FlatKeyMap index{1 << 12};
   size_t levelBegin = 0, levelEnd = 1;  // the frontier: nodes [levelBegin, levelEnd)
   int depth = 0;
-  size_t memoryBytes() const { return parent.capacity() * 4 + move.capacity() * 4 + index.memoryBytes(); }
+  size_t memoryBytes() const {
+    return parent.capacity() * 4 + move.capacity() * 4 + counts.capacity() * 2 + countSeen.size() + index.memoryBytes();
+  }
+  void add(int32_t par, uint32_t mv, uint16_t c) {
+    parent.push_back(par);
+    move.push_back(mv);
+    counts.push_back(c);
+    countSeen[c] = 1;
+  }
 };
 
 // Replays nodes of one side in frontier order. Frontier nodes are stored in the order of their
@@ -360,12 +496,12 @@ struct Side {
 class Walker {
  public:
   Walker(const Side& side, const std::vector<HexId>& host, const SearchOptions& opt)
-      : side_(side), host_(host), ops_(opt.ops), cx(side.root) {
+      : side_(side), host_(host), ops_(opt.ops), prefilter_(opt.prefilter), cx(side.root) {
     ringMax_ = [&opt, this] {
       return std::min(opt.ringSplitMax, opt.maxRegionHexes - int(cx.numHexes() - int64_t(host_.size())));
     };
     path_ = {0};
-    movesAt_.push_back(moves(cx, host_, ops_, ringMax_()));
+    movesAt_.push_back(moves(cx, host_, ops_, ringMax_(), prefilter_));
   }
   void goTo(int32_t node) {
     chain_.clear();
@@ -383,7 +519,7 @@ class Walker {
       const OpStep& m = movesAt_.back()[side_.move[size_t(chain_[i])]];
       logs_.push_back(applyStep(cx, m).edits);
       path_.push_back(chain_[i]);
-      movesAt_.push_back(moves(cx, host_, ops_, ringMax_()));
+      movesAt_.push_back(moves(cx, host_, ops_, ringMax_(), prefilter_));
     }
   }
   const std::vector<OpStep>& movesHere() const { return movesAt_.back(); }
@@ -398,6 +534,7 @@ class Walker {
   const Side& side_;
   const std::vector<HexId>& host_;
   const std::vector<OpKind>& ops_;
+  bool prefilter_;
   std::vector<int32_t> path_, chain_;
   std::vector<Complex::EditLog> logs_;
   std::vector<std::vector<OpStep>> movesAt_;
@@ -412,7 +549,96 @@ struct Child {
   int32_t parent;
   uint32_t move;
   Key128 key;
+  uint16_t counts;
 };
+
+// Pruning by counts (TK03 §4: every atomic operation changes V, E, F, H by fixed amounts).
+// Every interior quad has two hex sides and every boundary quad one, so 6H = 2F - F_boundary;
+// the boundary quads are fixed, so F - 3H never changes, and neither does V - E + F - H: a state's
+// counts are determined by (V, H). One step changes H by at most upH (at least -downH) and
+// X = V - H by at most upX (at least -downX), so a state whose H is δ > 0 below the target's needs
+// at least ceil(δ / upH) more steps, and likewise for the other three cases; a state first reached
+// at depth d is dropped when that bound exceeds maxDepth - d. No state of a sequence of at most
+// maxDepth steps is dropped: its place p in the sequence is at least d, and the rest of the
+// sequence, at most maxDepth - p <= maxDepth - d steps, reaches the target. On the last level a
+// child can only meet a state of the other side, whose counts are known: any other count is dropped.
+struct CountBounds {
+  int64_t V0 = 0, H0 = 0;  // the start's counts: packed counts are relative to them
+  int upH = 0, downH = 0, upX = 0, downX = 0;
+  bool boundX = true;  // false when a ring operation is used (its change of X is not fixed)
+  static bool fits(int64_t dV, int64_t dH) { return dV >= -128 && dV < 128 && dH >= -128 && dH < 128; }
+  uint16_t pack(int64_t V, int64_t H) const {
+    int64_t dV = V - V0, dH = H - H0;
+    if (!fits(dV, dH))
+      throw Error("search: the counts moved more than 127 from the start's; the count table cannot hold them");
+    return uint16_t(uint16_t(dV + 128) << 8 | uint16_t(dH + 128));
+  }
+  static int64_t dV(uint16_t c) { return int64_t(c >> 8) - 128; }
+  static int64_t dH(uint16_t c) { return int64_t(c & 255) - 128; }
+  // Fewest steps from counts a to counts b.
+  int lowerBound(uint16_t a, uint16_t b) const {
+    auto need = [](int64_t delta, int up, int down) -> int {
+      if (delta > 0) return up > 0 ? int((delta + up - 1) / up) : 1 << 20;
+      if (delta < 0) return down > 0 ? int((-delta + down - 1) / down) : 1 << 20;
+      return 0;
+    };
+    int64_t h = dH(b) - dH(a), x = (dV(b) - dH(b)) - (dV(a) - dH(a));
+    return std::max(need(h, upH, downH), boundX ? need(x, upX, downX) : 0);
+  }
+};
+
+// Exact change of (V, H) of the operations whose counts never vary (OPERATIONS.md; checked on every
+// application by the search): pillow (+4,+2), chord push (+2,+2), hex push (+4,+4), face collapse
+// (-2,0), and their inverses. Ring collapse and split change H by the ring's length.
+bool exactDelta(OpKind k, int& dV, int& dH) {
+  switch (k) {
+    case OpKind::Pillow:
+      dV = 4, dH = 2;
+      return true;
+    case OpKind::Unpillow:
+      dV = -4, dH = -2;
+      return true;
+    case OpKind::ChordPush:
+      dV = 2, dH = 2;
+      return true;
+    case OpKind::ChordPull:
+      dV = -2, dH = -2;
+      return true;
+    case OpKind::HexPush:
+      dV = 4, dH = 4;
+      return true;
+    case OpKind::HexPull:
+      dV = -4, dH = -4;
+      return true;
+    case OpKind::FaceCollapse:
+      dV = -2, dH = 0;
+      return true;
+    case OpKind::FaceSplit:
+      dV = 2, dH = 0;
+      return true;
+    default:
+      return false;
+  }
+}
+
+CountBounds countBounds(const Complex& start, const SearchOptions& opt) {
+  CountBounds b;
+  b.V0 = start.numVertices();
+  b.H0 = start.numHexes();
+  auto use = [&](OpKind k) { return opt.ops.empty() || std::find(opt.ops.begin(), opt.ops.end(), k) != opt.ops.end(); };
+  for (int k = 0; k <= int(OpKind::FaceSplit); ++k) {
+    int dV = 0, dH = 0;
+    if (!use(OpKind(k)) || !exactDelta(OpKind(k), dV, dH)) continue;
+    b.upH = std::max(b.upH, dH), b.downH = std::max(b.downH, -dH);
+    b.upX = std::max(b.upX, dV - dH), b.downX = std::max(b.downX, dH - dV);
+  }
+  if (use(OpKind::RingSplit)) b.upH = std::max(b.upH, opt.ringSplitMax), b.boundX = false;
+  if (use(OpKind::RingCollapse)) b.downH = std::max(b.downH, opt.maxRegionHexes), b.boundX = false;
+  // The goal side applies the listed moves as inverse steps: bound both directions alike.
+  b.upH = b.downH = std::max(b.upH, b.downH);
+  b.upX = b.downX = std::max(b.upX, b.downX);
+  return b;
+}
 
 struct SearchContext {
   const std::vector<HexId>& host;
@@ -420,6 +646,7 @@ struct SearchContext {
   const HostSnapshot& hs;
   const SearchOptions& opt;
   std::vector<std::vector<VertexId>> symmetries;  // vertex maps fixing host, start and goal (not the identity)
+  CountBounds bounds;
   Key128 key(RegionEncoder& enc, const Complex& cx) const {
     return symmetries.empty() ? enc.key(cx, isHost) : enc.key(cx, isHost, symmetries);
   }
@@ -450,7 +677,8 @@ std::vector<std::vector<VertexId>> candidateMaps(const Complex& cx) {
   auto coords = [](Vec3 q) { return std::array<double, 3>{q.x, q.y, q.z}; };
   for (VertexId v : cx.vertices()) {
     auto c = coords(cx.position(v));
-    for (int i = 0; i < 3; ++i) lo[size_t(i)] = std::min(lo[size_t(i)], c[size_t(i)]), hi[size_t(i)] = std::max(hi[size_t(i)], c[size_t(i)]);
+    for (int i = 0; i < 3; ++i)
+      lo[size_t(i)] = std::min(lo[size_t(i)], c[size_t(i)]), hi[size_t(i)] = std::max(hi[size_t(i)], c[size_t(i)]);
     at[{std::lround(2 * c[0]), std::lround(2 * c[1]), std::lround(2 * c[2])}] = v;
   }
   for (auto& pm : perms)
@@ -465,8 +693,10 @@ std::vector<std::vector<VertexId>> candidateMaps(const Complex& cx) {
           d[size_t(i)] = (flip >> i) & 1 ? lo[size_t(pm[i])] + hi[size_t(pm[i])] - x : x;
         }
         auto it = at.find({std::lround(2 * d[0]), std::lround(2 * d[1]), std::lround(2 * d[2])});
-        if (it == at.end()) ok = false;
-        else m[size_t(v)] = it->second;
+        if (it == at.end())
+          ok = false;
+        else
+          m[size_t(v)] = it->second;
       }
       if (ok) out.push_back(m);
     }
@@ -504,20 +734,67 @@ std::vector<std::vector<VertexId>> problemSymmetries(const SearchProblem& pb, co
   return out;
 }
 
+// What expand needs to know of the level: whether it is the last (children must meet the other
+// side), how many steps remain after it, and the counts of the other side's root.
+struct LevelPlan {
+  bool last = false;
+  int remaining = 0;
+  uint16_t target = 0;
+};
+
 // Expands nodes [begin, end) of `side`: every move that applies, keeps the host and the region
 // cap, and reaches a state not yet stored there; stops at a state the other side stored. Reads
 // the indexes only (workers run in parallel; the merge after them writes).
-void expand(const SearchContext& ctx, const Side& side, const Side& other, bool fromGoal, size_t begin, size_t end,
-            std::vector<Child>& out, int64_t& applied, const std::function<bool()>& stop) {
+void expand(const SearchContext& ctx, const Side& side, const Side& other, bool fromGoal, const LevelPlan& plan,
+            size_t begin, size_t end, std::vector<Child>& out, int64_t& applied, int64_t& pruned,
+            const std::function<bool()>& stop) {
   Walker w(side, ctx.host, ctx.opt);
   RegionEncoder enc;
+  FlatKeyMap foundHere(1024);  // children kept by this call (not yet in side.index)
   const int64_t hostCount = int64_t(ctx.host.size());
+  const CountBounds& cb = ctx.bounds;
+  auto useful = [&](uint16_t c) {
+    if (!ctx.opt.countPruning) return true;
+    return plan.last ? other.countSeen[c] != 0 : cb.lowerBound(c, plan.target) <= plan.remaining;
+  };
   for (size_t n = begin; n < end; ++n) {
     if (stop()) return;
     w.goTo(int32_t(n));
     const auto& ms = w.movesHere();
+    const int64_t V = w.cx.numVertices(), H = w.cx.numHexes();
     for (size_t i = 0; i < ms.size(); ++i) {
+      int dV = 0, dH = 0;
+      const bool exact = exactDelta(ms[i].op, dV, dH);
+      if (exact && CountBounds::fits(V + dV - cb.V0, H + dH - cb.H0) && !useful(cb.pack(V + dV, H + dH))) {
+        ++pruned;
+        continue;
+      }
+      // Applied without the operations' invariant check first: a result whose key is stored is
+      // isomorphic (boundary fixed) to a valid state, so valid. Only a new key is applied again
+      // with every check, which also gives the exact inverse step.
       OpResult r;
+      try {
+        ops::DeferValidation unchecked;
+        r = applyStep(w.cx, ms[i]);
+      } catch (const Error&) {
+        continue;
+      }
+      if (exact && (r.dV != dV || r.dH != dH))
+        throw Error("search: " + formatOpStep(ms[i]) + " changed (V, H) by (" + std::to_string(r.dV) + ", " +
+                    std::to_string(r.dH) + "), not (" + std::to_string(dV) + ", " + std::to_string(dH) + ")");
+      const uint16_t counts = cb.pack(V + r.dV, H + r.dH);
+      if (w.cx.numHexes() - hostCount > ctx.opt.maxRegionHexes || !useful(counts)) {
+        pruned += w.cx.numHexes() - hostCount <= ctx.opt.maxRegionHexes;
+        w.cx.undo(r.edits);
+        ++applied;
+        continue;
+      }
+      Key128 key = ctx.key(enc, w.cx);
+      w.cx.undo(r.edits);
+      if (side.index.find(key) >= 0 || foundHere.find(key) >= 0) {
+        ++applied;
+        continue;
+      }
       try {
         r = applyStep(w.cx, ms[i]);
       } catch (const Error&) {
@@ -526,18 +803,125 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
       ++applied;
       // From the goal side a move stands for its inverse step: a move without one (a ring collapse
       // whose side quad was glued to the ring itself) is no step of a decomposition.
-      bool keep = w.cx.numHexes() - hostCount <= ctx.opt.maxRegionHexes && (!fromGoal || r.inverse);
-      Key128 key;
-      if (keep) {
-        key = ctx.key(enc, w.cx);
-        keep = side.index.find(key) < 0 && localityViolation(w.cx, ctx.hs).empty();
-      }
+      bool keep = (!fromGoal || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
       w.cx.undo(r.edits);
       if (!keep) continue;
-      out.push_back({int32_t(n), uint32_t(i), key});
+      out.push_back({int32_t(n), uint32_t(i), key, counts});
+      foundHere.insert(key, 0);
       if (other.index.find(key) >= 0) return;  // the two searches meet: the merge stops here
     }
   }
+}
+
+// A checkpoint: the two sides' nodes, counts and hash tables, the statistics, and where the level
+// in progress goes on (its side, the next chunk, its first new node). Binary, this machine's byte
+// order; the first lines name the format and the search it belongs to.
+struct Resume {
+  int32_t side = -1;  // -1: at a level boundary
+  uint64_t next = 0, levelStart = 0;
+  int64_t prunedThisLevel = 0;
+};
+
+std::string searchFingerprint(const SearchProblem& pb, const SearchOptions& o) {
+  std::string f = pb.name + "; depth " + std::to_string(o.maxDepth) + "; ops";
+  for (OpKind k : o.ops) f += " " + std::string(opName(k));
+  f += "; region " + std::to_string(o.maxRegionHexes) + "; ring split " + std::to_string(o.ringSplitMax) +
+       "; symmetry " + std::to_string(o.symmetry) + "; prefilter " + std::to_string(o.prefilter) + "; count pruning " +
+       std::to_string(o.countPruning) + "; chunk " + std::to_string(o.chunk);
+  return f;
+}
+
+template <class T>
+void put(std::ostream& out, const T& v) {
+  out.write(reinterpret_cast<const char*>(&v), sizeof v);
+}
+template <class T>
+void putVector(std::ostream& out, const std::vector<T>& v) {
+  put(out, uint64_t(v.size()));
+  out.write(reinterpret_cast<const char*>(v.data()), std::streamsize(v.size() * sizeof(T)));
+}
+template <class T>
+void get(std::istream& in, T& v) {
+  in.read(reinterpret_cast<char*>(&v), sizeof v);
+  if (!in) throw Error("checkpoint: the file is cut short");
+}
+template <class T>
+void getVector(std::istream& in, std::vector<T>& v) {
+  uint64_t n = 0;
+  get(in, n);
+  if (n > (uint64_t(1) << 36)) throw Error("checkpoint: a list length is damaged");
+  v.resize(size_t(n));
+  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(T)));
+  if (!in) throw Error("checkpoint: the file is cut short");
+}
+
+const char* const kCheckpointMagic = "hexdual search checkpoint v1";
+
+void writeCheckpoint(const std::string& path, const std::string& fingerprint, const Side side[2],
+                     const SearchResult& res, double seconds, const Resume& at) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw Error("checkpoint: cannot write " + tmp);
+    out << kCheckpointMagic << "\n" << fingerprint << "\n";
+    put(out, at);
+    put(out, res.movesApplied);
+    put(out, res.prunedByCounts);
+    put(out, seconds);
+    putVector(out, res.levels);
+    for (int s = 0; s < 2; ++s) {
+      const Side& d = side[s];
+      put(out, int64_t(d.depth));
+      put(out, uint64_t(d.levelBegin));
+      put(out, uint64_t(d.levelEnd));
+      putVector(out, d.parent);
+      putVector(out, d.move);
+      putVector(out, d.counts);
+      d.index.write(out);
+    }
+    if (!out.flush()) throw Error("checkpoint: writing " + tmp + " failed");
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw Error("checkpoint: cannot rename " + tmp + " to " + path);
+}
+
+Resume readCheckpoint(const std::string& path, const std::string& fingerprint, Side side[2], SearchResult& res,
+                      double& seconds) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("resume: cannot read " + path);
+  std::string magic, fp;
+  std::getline(in, magic);
+  std::getline(in, fp);
+  if (magic != kCheckpointMagic) throw Error("resume: " + path + " is not a search checkpoint");
+  if (fp != fingerprint)
+    throw Error("resume: " + path + " belongs to another search (" + fp + "), not this one (" + fingerprint + ")");
+  Resume at;
+  get(in, at);
+  get(in, res.movesApplied);
+  get(in, res.prunedByCounts);
+  get(in, seconds);
+  getVector(in, res.levels);
+  for (int s = 0; s < 2; ++s) {
+    Side& d = side[s];
+    int64_t depth = 0;
+    uint64_t begin = 0, end = 0;
+    get(in, depth);
+    get(in, begin);
+    get(in, end);
+    getVector(in, d.parent);
+    getVector(in, d.move);
+    getVector(in, d.counts);
+    d.index.read(in);
+    d.depth = int(depth);
+    d.levelBegin = size_t(begin);
+    d.levelEnd = size_t(end);
+    if (d.move.size() != d.parent.size() || d.counts.size() != d.parent.size() || d.index.size() != d.parent.size() ||
+        end > d.parent.size() || begin > end)
+      throw Error("resume: " + path + " is inconsistent (side " + std::to_string(s) + ")");
+    std::fill(d.countSeen.begin(), d.countSeen.end(), 0);
+    for (uint16_t c : d.counts) d.countSeen[c] = 1;
+  }
+  res.depthSearched = side[0].depth + side[1].depth;
+  return at;
 }
 
 }  // namespace
@@ -545,9 +929,10 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
 SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& opt) {
   auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  double secondsBefore = 0;  // of the runs before a resume
   HostSnapshot hs = snapshot(pb.start, pb.host);
   const std::vector<HexId>& host = hs.host;
-  SearchContext ctx{host, {}, hs, opt, {}};
+  SearchContext ctx{host, {}, hs, opt, {}, {}};
   for (HexId h : host) {
     if (size_t(h) >= ctx.isHost.size()) ctx.isHost.resize(size_t(h) + 1, 0);
     ctx.isHost[size_t(h)] = 1;
@@ -557,19 +942,29 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
   res.symmetries = int(ctx.symmetries.size()) + 1;
   Side side[2];
   RegionEncoder enc;
+  ctx.bounds = countBounds(pb.start, opt);
   for (int s = 0; s < 2; ++s) {
     side[s].root = s == 0 ? pb.start : pb.goal;
-    side[s].parent = {-1};
-    side[s].move = {0};
+    side[s].add(-1, 0, ctx.bounds.pack(side[s].root.numVertices(), side[s].root.numHexes()));
     side[s].index.insert(ctx.key(enc, side[s].root), 0);
   }
+  const std::string fingerprint = searchFingerprint(pb, opt);
+  Resume resume;
+  if (!opt.resumeFile.empty()) resume = readCheckpoint(opt.resumeFile, fingerprint, side, res, secondsBefore);
+  double lastSave = 0;
+  auto save = [&](int s, size_t next, size_t levelStart, int64_t prunedThisLevel) {
+    writeCheckpoint(opt.checkpointFile, fingerprint, side, res, secondsBefore + elapsed(),
+                    {int32_t(s), uint64_t(next), uint64_t(levelStart), prunedThisLevel});
+    lastSave = elapsed();
+    ++res.checkpoints;
+  };
   auto stored = [&] { return int64_t(side[0].parent.size() + side[1].parent.size()); };
   auto memory = [&] { return side[0].memoryBytes() + side[1].memoryBytes(); };
   auto finishStats = [&] {
     res.statesExplored = stored();
     res.memoryBytes = std::max(res.memoryBytes, memory());
     if (res.found) res.depthSearched = int(res.steps.size());
-    res.seconds = elapsed();
+    res.seconds = secondsBefore + elapsed();
     return res;
   };
   if (side[1].index.find(ctx.key(enc, side[0].root)) >= 0) {
@@ -595,7 +990,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
       // A local move from cur reaching the previous state: first among the generated moves (this
       // also picks the side that keeps host vertex ids for splits), else the translated inverse.
       std::optional<OpStep> chosen;
-      for (const OpStep& m : moves(cur, host, {}, opt.ringSplitMax)) {
+      for (const OpStep& m : moves(cur, host, {}, opt.ringSplitMax, opt.prefilter)) {
         OpResult r;
         try {
           r = applyStep(cur, m);
@@ -612,10 +1007,13 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
       if (!chosen) {
         Complex tmp = chain[k - 1];
         OpResult r = applyStep(tmp, back[k - 1]);
-        if (!r.inverse) throw Error("search: " + formatOpStep(back[k - 1]) + " has no inverse step (" + r.noInverse + ")");
+        if (!r.inverse)
+          throw Error("search: " + formatOpStep(back[k - 1]) + " has no inverse step (" + r.noInverse + ")");
         CanonicalLabelling from = regionLabelling(tmp, host), to = regionLabelling(cur, host);
         if (from.form != to.form)
-          throw Error("search: the paths meet only up to a symmetry where a generated move is missing; search again without symmetry");
+          throw Error(
+              "search: the paths meet only up to a symmetry where a generated move is missing; search again without "
+              "symmetry");
         chosen = translateStep(*r.inverse, from, to, host);
       }
       applyStep(cur, *chosen);
@@ -626,29 +1024,45 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     res.stoppedBy = "found";
   };
   const int threads = std::max(1, opt.threads);
-  std::atomic<bool> timeUp{false};
+  std::atomic<bool> timeUp{false}, interrupted{false};
   auto stop = [&] {
     if (!timeUp && elapsed() > opt.maxSeconds) timeUp = true;
-    return bool(timeUp);
+    if (!interrupted && opt.request && opt.request->load() == 2) interrupted = true;
+    return timeUp || interrupted;
   };
   while (side[0].depth + side[1].depth < opt.maxDepth) {
     int s = side[0].levelEnd - side[0].levelBegin <= side[1].levelEnd - side[1].levelBegin ? 0 : 1;
     Side& me = side[s];
     Side& other = side[1 - s];
-    const size_t levelStart = me.parent.size();
+    if (resume.side >= 0 && resume.side != s)
+      throw Error("resume: the checkpoint's level does not match its frontiers");
+    const bool resuming = resume.side >= 0;
+    const size_t levelStart = resuming ? size_t(resume.levelStart) : me.parent.size();
     // Chunks of the frontier, split between the threads; children merge in frontier order, so
     // node ids and the result do not depend on the thread count.
-    const size_t chunk = 512;
-    for (size_t b = me.levelBegin; b < me.levelEnd; b += chunk) {
+    const size_t chunk = std::max<size_t>(1, opt.chunk);
+    int64_t prunedThisLevel = resuming ? resume.prunedThisLevel : 0;
+    const size_t firstChunk = resuming ? size_t(resume.next) : me.levelBegin;
+    resume.side = -1;
+    LevelPlan plan;
+    plan.remaining = opt.maxDepth - (me.depth + 1);  // steps left for a child of this level to reach the other root
+    plan.last = side[0].depth + side[1].depth + 1 == opt.maxDepth;
+    plan.target = other.counts[0];
+    for (size_t b = firstChunk; b < me.levelEnd; b += chunk) {
       size_t e = std::min(me.levelEnd, b + chunk);
+      if (!opt.checkpointFile.empty() && ((opt.checkpointEvery > 0 && elapsed() - lastSave >= opt.checkpointEvery) ||
+                                          (opt.request && opt.request->load() == 1))) {
+        if (opt.request && opt.request->load() == 1) opt.request->store(0);
+        save(s, b, levelStart, prunedThisLevel);
+      }
       std::vector<std::vector<Child>> found(static_cast<size_t>(threads));
-      std::vector<int64_t> applied(static_cast<size_t>(threads), 0);
+      std::vector<int64_t> applied(static_cast<size_t>(threads), 0), pruned(static_cast<size_t>(threads), 0);
       std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
       auto work = [&](int t) {
         size_t per = (e - b + size_t(threads) - 1) / size_t(threads);
         size_t lo = std::min(e, b + per * size_t(t)), hi = std::min(e, lo + per);
         try {
-          expand(ctx, me, other, s == 1, lo, hi, found[size_t(t)], applied[size_t(t)], stop);
+          expand(ctx, me, other, s == 1, plan, lo, hi, found[size_t(t)], applied[size_t(t)], pruned[size_t(t)], stop);
         } catch (...) {
           errors[size_t(t)] = std::current_exception();
         }
@@ -662,41 +1076,53 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
       }
       for (auto& err : errors)
         if (err) std::rethrow_exception(err);
+      // Stopped inside this chunk: the checkpoint is the state before it (the chunk is redone).
+      if ((timeUp || interrupted) && !opt.checkpointFile.empty()) save(s, b, levelStart, prunedThisLevel);
       for (int64_t a : applied) res.movesApplied += a;
+      for (int64_t a : pruned) res.prunedByCounts += a, prunedThisLevel += a;
       for (const auto& list : found)
         for (const Child& c : list) {
           int32_t id = int32_t(me.parent.size());
           if (me.index.insert(c.key, id) != id) continue;
-          me.parent.push_back(c.parent);
-          me.move.push_back(c.move);
+          me.add(c.parent, c.move, c.counts);
           int32_t there = other.index.find(c.key);
           if (there >= 0) {
-            if (s == 0) finish(id, there);
-            else finish(there, id);
+            if (s == 0)
+              finish(id, there);
+            else
+              finish(there, id);
             return finishStats();
           }
         }
       res.memoryBytes = std::max(res.memoryBytes, memory());
+      const std::string saved = opt.checkpointFile.empty() ? "" : "; checkpoint in " + opt.checkpointFile;
+      if (interrupted) {
+        res.stoppedBy = "interrupted";
+        res.message = "stopped on request during depth " + std::to_string(side[0].depth + side[1].depth + 1) + saved;
+        return finishStats();
+      }
       if (timeUp) {
         res.stoppedBy = "time";
         char secs[32];
         std::snprintf(secs, sizeof secs, "%g", opt.maxSeconds);
         res.message = "stopped by the time limit (--max-seconds " + std::string(secs) + ") during depth " +
-                      std::to_string(side[0].depth + side[1].depth + 1);
+                      std::to_string(side[0].depth + side[1].depth + 1) + saved;
         return finishStats();
       }
       if (stored() > opt.maxStates) {
+        if (!opt.checkpointFile.empty()) save(s, e, levelStart, prunedThisLevel);
         res.stoppedBy = "states";
         res.message = "stopped at the state cap (--max-states " + std::to_string(opt.maxStates) + ") during depth " +
-                      std::to_string(side[0].depth + side[1].depth + 1);
+                      std::to_string(side[0].depth + side[1].depth + 1) + saved;
         return finishStats();
       }
       // A hash set grows by doubling: stop before the next growth could pass the memory limit.
       if (double(memory()) + double(me.index.memoryBytes()) * 2 > opt.maxMemoryMB * 1048576.0) {
+        if (!opt.checkpointFile.empty()) save(s, e, levelStart, prunedThisLevel);
         res.stoppedBy = "memory";
         res.message = "stopped by the memory guard (--max-memory " + std::to_string(int64_t(opt.maxMemoryMB)) +
                       " MB; " + std::to_string(memory() >> 20) + " MB in use) during depth " +
-                      std::to_string(side[0].depth + side[1].depth + 1);
+                      std::to_string(side[0].depth + side[1].depth + 1) + saved;
         return finishStats();
       }
     }
@@ -704,8 +1130,17 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     me.levelEnd = me.parent.size();
     ++me.depth;
     res.depthSearched = side[0].depth + side[1].depth;
-    res.levels.push_back({s, me.depth, int64_t(me.levelEnd - me.levelBegin), stored(), res.movesApplied, elapsed()});
+    res.levels.push_back(
+        {s, me.depth, int64_t(me.levelEnd - me.levelBegin), stored(), res.movesApplied, secondsBefore + elapsed()});
     if (opt.progress) opt.progress(res.levels.back());
+    if (me.levelBegin == me.levelEnd && prunedThisLevel > 0) {
+      // Every new state was dropped by the count bound: no sequence of at most maxDepth steps.
+      res.depthSearched = opt.maxDepth;
+      res.stoppedBy = "depth";
+      res.message = "no new state of depth " + std::to_string(me.depth) + " from the " + (s ? "goal" : "start") +
+                    " survives the count bound of --max-depth " + std::to_string(opt.maxDepth);
+      return finishStats();
+    }
     if (me.levelBegin == me.levelEnd) {
       // No new state on this side: every sequence of any length (within the region cap) was seen.
       res.stoppedBy = "exhausted";
@@ -723,7 +1158,8 @@ void verifyDecomposition(const SearchProblem& pb, const std::vector<OpStep>& ste
     try {
       applyStep(cx, steps[k]);
     } catch (const Error& e) {
-      throw Error("verify " + pb.name + ": step " + std::to_string(k + 1) + " (" + formatOpStep(steps[k]) + "): " + e.what());
+      throw Error("verify " + pb.name + ": step " + std::to_string(k + 1) + " (" + formatOpStep(steps[k]) +
+                  "): " + e.what());
     }
     std::string why = localityViolation(cx, hs);
     if (!why.empty()) throw Error("verify " + pb.name + ": step " + std::to_string(k + 1) + " is not local: " + why);
@@ -732,7 +1168,6 @@ void verifyDecomposition(const SearchProblem& pb, const std::vector<OpStep>& ste
   if (regionLabelling(cx, hs.host).form != regionLabelling(pb.goal, hs.host).form)
     throw Error("verify " + pb.name + ": the result is not isomorphic to the flip's after side");
 }
-
 
 namespace {
 
@@ -770,8 +1205,8 @@ Complex renamedRegion(const Complex& cx, const std::vector<HexId>& region, const
 }
 
 // Labelling of a region with its hexes named by their ids in cx (not 0..n-1 of the renamed copy).
-CanonicalLabelling labelRegion(const Complex& cx, const std::vector<HexId>& host, const std::map<VertexId, VertexId>& rename,
-                               VertexId fresh) {
+CanonicalLabelling labelRegion(const Complex& cx, const std::vector<HexId>& host,
+                               const std::map<VertexId, VertexId>& rename, VertexId fresh) {
   std::vector<HexId> order;
   Complex r = renamedRegion(cx, regionOf(cx, host), rename, fresh, order);
   CanonicalLabelling L = canonicalLabelling(r, true);
@@ -797,7 +1232,8 @@ std::vector<Embedding> flipEmbeddings(const std::string& name) {
         out.push_back({"4-cube boundary, host pillowed at h" + std::to_string(a) + "f" + std::to_string(f), p, before});
         Complex q = c;
         hexPush(q, {a, f});
-        out.push_back({"4-cube boundary, host hex-pushed at h" + std::to_string(a) + "f" + std::to_string(f), q, before});
+        out.push_back(
+            {"4-cube boundary, host hex-pushed at h" + std::to_string(a) + "f" + std::to_string(f), q, before});
         goto grids;
       }
     }
@@ -820,9 +1256,12 @@ grids:
     // Interior places: near the mesh boundary some atomic steps are refused by design (an unpillow
     // of a pillow on the boundary, a ring collapse merging boundary vertices).
     if (n == 1) gridPlaces = {{gid(2, 2, 2)}, {gid(1, 2, 3)}}, ringPlaces = {{rid(2, 1, 1)}};
-    if (n == 2) gridPlaces = {{gid(2, 2, 2), gid(3, 2, 2)}, {gid(1, 1, 2), gid(1, 1, 3)}}, ringPlaces = {{rid(2, 1, 1), rid(3, 1, 1)}};
+    if (n == 2)
+      gridPlaces = {{gid(2, 2, 2), gid(3, 2, 2)}, {gid(1, 1, 2), gid(1, 1, 3)}},
+      ringPlaces = {{rid(2, 1, 1), rid(3, 1, 1)}};
     // (3-5c's decomposition uses a ring collapse, which never merges boundary vertices: interior places.)
-    if (n == 3) gridPlaces = {{gid(2, 2, 1), gid(2, 2, 2), gid(2, 2, 3)}, {gid(1, 2, 2), gid(2, 2, 2), gid(3, 2, 2)}},
+    if (n == 3)
+      gridPlaces = {{gid(2, 2, 1), gid(2, 2, 2), gid(2, 2, 3)}, {gid(1, 2, 2), gid(2, 2, 2), gid(3, 2, 2)}},
       ringPlaces = {{rid(2, 1, 1), rid(3, 1, 1), rid(4, 1, 1)}};
     for (auto& pl : gridPlaces) out.push_back({"5x5x5 grid at h" + std::to_string(pl[0]), g, pl});
     for (auto& pl : ringPlaces) out.push_back({"8x3x3 O-grid at h" + std::to_string(pl[0]), r, pl});
@@ -831,7 +1270,7 @@ grids:
 }
 
 std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector<OpStep>& steps, Complex& mesh,
-                                           const std::vector<HexId>& beforeHexes, const std::string& placeName) {
+                                      const std::vector<HexId>& beforeHexes, const std::string& placeName) {
   const std::string what = pb.name + " in " + placeName;
   Embedding where{placeName, mesh, beforeHexes};
   // Match the problem's before side (its region) with the embedding's before hexes: flipping both
@@ -848,7 +1287,8 @@ std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector
   std::map<VertexId, VertexId> toProblem;  // embedding vertex -> problem vertex
   for (size_t i = 0; i < lp.order.size(); ++i)
     for (int b = 0; b < 8; ++b)
-      toProblem[where.mesh.vertex(le.order[i], le.frame[i][size_t(b)])] = pb.start.vertex(lp.order[i], lp.frame[i][size_t(b)]);
+      toProblem[where.mesh.vertex(le.order[i], le.frame[i][size_t(b)])] =
+          pb.start.vertex(lp.order[i], lp.frame[i][size_t(b)]);
   std::vector<HexId> hostP = pb.host;
   std::sort(hostP.begin(), hostP.end());
   std::sort(hostE.begin(), hostE.end());
@@ -875,14 +1315,16 @@ std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector
       OpArg& arg = src.args[i];
       if (arg.kind == OpArg::Pair && isHost(hostP, arg.second.hex)) {
         Gluing g = cp.gluing(arg.second);
-        if (g.boundary() || isHost(hostP, g.hex)) throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
+        if (g.boundary() || isHost(hostP, g.hex))
+          throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
         arg.second = {g.hex, g.face};
         partner2[i] = true;
       }
       if (!isHost(hostP, arg.hex)) continue;
       if (arg.kind == OpArg::Quad || arg.kind == OpArg::Pair) {
         Gluing g = cp.gluing(arg.hex, arg.local);
-        if (g.boundary() || isHost(hostP, g.hex)) throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
+        if (g.boundary() || isHost(hostP, g.hex))
+          throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
         arg.hex = g.hex;
         arg.local = g.face;
         partner[i] = true;

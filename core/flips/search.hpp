@@ -6,6 +6,7 @@
 // joins the region, and every host hex keeps its vertices, its gluings to other host hexes and
 // its edges — only which region hex it touches across a region boundary quad may change.
 #pragma once
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -29,38 +30,48 @@ SearchProblem tripleChordPushProblem();
 
 // One completed level of the search (for progress and growth figures).
 struct SearchLevel {
-  int side = 0;            // 0: from the start, 1: from the goal
-  int depth = 0;           // that side's depth after the level
-  int64_t newStates = 0;   // states first reached at this level
+  int side = 0;                                // 0: from the start, 1: from the goal
+  int depth = 0;                               // that side's depth after the level
+  int64_t newStates = 0;                       // states first reached at this level
   int64_t storedStates = 0, movesApplied = 0;  // totals so far
   double seconds = 0;
 };
 
 struct SearchOptions {
-  int maxDepth = 4;              // total steps (split between the two directions)
-  int64_t maxStates = 200000;    // stop when this many distinct states were stored
+  int maxDepth = 4;            // total steps (split between the two directions)
+  int64_t maxStates = 200000;  // stop when this many distinct states were stored
   double maxSeconds = 60;
-  std::vector<OpKind> ops;       // operations to use; empty = all atomic operations and inverses
-  int maxRegionHexes = 16;       // prune states whose region grows beyond this
-  int threads = 1;               // threads over the frontier (the result does not depend on it)
-  double maxMemoryMB = 4096;     // stop before the stored states could pass this
-  int ringSplitMax = 8;          // ring splits generated forward: loops of at most this many edges (0: none)
-  bool symmetry = false;         // store one state per orbit of the problem's symmetries
+  std::vector<OpKind> ops;    // operations to use; empty = all atomic operations and inverses
+  int maxRegionHexes = 16;    // prune states whose region grows beyond this
+  int threads = 1;            // threads over the frontier (the result does not depend on it)
+  double maxMemoryMB = 4096;  // stop before the stored states could pass this
+  int ringSplitMax = 8;       // ring splits generated forward: loops of at most this many edges (0: none)
+  bool symmetry = false;      // store one state per orbit of the problem's symmetries
+  bool prefilter = true;      // skip moves proven never valid and local without trying them
+  bool countPruning = true;   // drop states whose (V, H) cannot reach the other end in the steps left
   std::function<void(const SearchLevel&)> progress;  // called after every completed level
+  size_t chunk = 512;          // frontier states per chunk: merges, limits and checkpoints fall between chunks
+  std::string checkpointFile;  // where checkpoints are written ("": none)
+  double checkpointEvery = 0;  // seconds between checkpoints (0: only when a limit or a request stops the search)
+  std::string resumeFile;      // continue the search saved there (same problem and options)
+  // Set from outside (a signal handler): 1 = write a checkpoint and go on, 2 = write one and stop.
+  std::atomic<int>* request = nullptr;
 };
 
 struct SearchResult {
   bool found = false;
-  std::vector<OpStep> steps;       // steps from start (replay with applyStep)
-  int depthSearched = 0;           // every sequence up to this length was examined (if not found)
-  int64_t statesExplored = 0;      // distinct states stored (both directions)
-  int64_t movesApplied = 0;        // moves that applied (before deduplication)
-  size_t memoryBytes = 0;          // peak bytes of the stored states and their hash sets
+  std::vector<OpStep> steps;   // steps from start (replay with applyStep)
+  int depthSearched = 0;       // every sequence up to this length was examined (if not found)
+  int64_t statesExplored = 0;  // distinct states stored (both directions)
+  int64_t movesApplied = 0;    // moves that applied (before deduplication)
+  int64_t prunedByCounts = 0;  // children dropped by the count bound (countPruning)
+  size_t memoryBytes = 0;      // peak bytes of the stored states and their hash sets
   double seconds = 0;
-  std::string stoppedBy;  // "found", "depth", "exhausted", "states", "time", "memory"
+  std::string stoppedBy;  // "found", "depth", "exhausted", "states", "time", "memory", "interrupted"
   std::string message;    // why the search stopped early, for the user
   std::vector<SearchLevel> levels;
-  int symmetries = 1;     // the order of the symmetry group used (1: none)
+  int symmetries = 1;   // the order of the symmetry group used (1: none)
+  int checkpoints = 0;  // checkpoints written by this run
 };
 
 SearchResult searchDecomposition(const SearchProblem& problem, const SearchOptions& options);

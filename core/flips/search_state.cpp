@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <istream>
+#include <ostream>
 
 namespace hexdual {
 using namespace tables;
@@ -63,6 +65,30 @@ void FlatKeyMap::grow() {
   size_ = 0;
   for (size_t i = 0; i < oldKeys.size(); ++i)
     if (!oldKeys[i].empty()) insert(oldKeys[i], oldValues[i]);
+}
+
+void FlatKeyMap::write(std::ostream& out) const {
+  const uint64_t n = keys_.size(), used = size_;
+  out.write(reinterpret_cast<const char*>(&n), sizeof n);
+  out.write(reinterpret_cast<const char*>(&used), sizeof used);
+  out.write(reinterpret_cast<const char*>(keys_.data()), std::streamsize(n * sizeof(Key128)));
+  out.write(reinterpret_cast<const char*>(values_.data()), std::streamsize(n * sizeof(int32_t)));
+}
+
+void FlatKeyMap::read(std::istream& in) {
+  uint64_t n = 0, used = 0;
+  in.read(reinterpret_cast<char*>(&n), sizeof n);
+  in.read(reinterpret_cast<char*>(&used), sizeof used);
+  if (!in || n < 16 || (n & (n - 1)) != 0 || used > n || n > (uint64_t(1) << 40))
+    throw Error("checkpoint: the hash table header is damaged");
+  keys_.assign(size_t(n), Key128{});
+  values_.assign(size_t(n), -1);
+  in.read(reinterpret_cast<char*>(keys_.data()), std::streamsize(n * sizeof(Key128)));
+  in.read(reinterpret_cast<char*>(values_.data()), std::streamsize(n * sizeof(int32_t)));
+  if (!in) throw Error("checkpoint: the hash table is cut short");
+  size_ = 0;
+  for (const Key128& k : keys_) size_ += !k.empty();
+  if (size_ != used) throw Error("checkpoint: the hash table does not hold the keys it says");
 }
 
 namespace {

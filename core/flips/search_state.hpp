@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <iosfwd>
 #include <utility>
 #include <vector>
 
@@ -37,6 +38,10 @@ class FlatKeyMap {
   size_t size() const { return size_; }
   size_t slots() const { return keys_.size(); }
   size_t memoryBytes() const { return keys_.size() * (sizeof(Key128) + sizeof(int32_t)); }
+  // The table as raw slots (a checkpoint of the search); read() replaces this map's contents and
+  // throws Error on a short or inconsistent stream.
+  void write(std::ostream& out) const;
+  void read(std::istream& in);
 
  private:
   void grow();

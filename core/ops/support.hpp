@@ -63,6 +63,18 @@ ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const st
 // The hexes an edit touched: `hexes` and every hex glued to one of them.
 std::vector<HexId> withNeighbours(const Complex& cx, const std::vector<HexId>& hexes);
 
+// While one is alive on a thread, Transaction::commit skips its invariant check (the manifold
+// vertices and validateAround): for a caller that checks the results it keeps itself, as the
+// decomposition search does once per new state. Results committed meanwhile may be invalid.
+class DeferValidation {
+ public:
+  DeferValidation();
+  ~DeferValidation();
+  DeferValidation(const DeferValidation&) = delete;
+  DeferValidation& operator=(const DeferValidation&) = delete;
+  static bool active();
+};
+
 // Opens a transaction; rolls back unless commit() is reached. Also fills the result's counts.
 class Transaction {
  public:
