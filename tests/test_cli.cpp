@@ -101,3 +101,31 @@ TEST_CASE("cli: sheets writes SVG and JSON diagrams; bad arguments are one-line 
   CHECK(run("sheets /tmp/hexdual_cli_s.hxd --sheet 1 --svg /nonexistent/dir").out ==
         "hexdual: /nonexistent/dir/sheet-1.svg: cannot open file for writing (does the directory exist?)\n");
 }
+
+TEST_CASE("cli: flip search stopped at a cap writes a checkpoint; --resume finishes it with the uninterrupted result") {
+  const std::string search = "flip search 3-5e --max-depth 4 --symmetry --threads 1";
+  // The record without its seconds field (field 7 of 8).
+  auto record = [](const std::string& out) {
+    std::string line = out.substr(out.rfind("3-5e|"));
+    line = line.substr(0, line.find('\n'));
+    size_t end = line.rfind('|'), start = line.rfind('|', end - 1);
+    return line.substr(0, start) + line.substr(end);
+  };
+  Run whole = run(search);
+  CHECK(whole.status == 0);
+  CHECK(record(whole.out) == "3-5e|found|v1;hexpush h0f0;facecollapse h1e8 h9f2 h4f1;facesplit h6f4 h12f2;chordpull h4|4|4|896|all");
+  std::remove("/tmp/hexdual_cli_search.ckpt");
+  Run capped = run(search + " --max-states 100 --checkpoint /tmp/hexdual_cli_search.ckpt");
+  CHECK(capped.status == 0);
+  CHECK(contains(capped.out, "stopped at the state cap (--max-states 100) during depth 3; checkpoint in /tmp/hexdual_cli_search.ckpt\n"));
+  CHECK(contains(capped.out, "1 checkpoint(s) written to /tmp/hexdual_cli_search.ckpt\n"));
+  Run resumed = run(search + " --resume /tmp/hexdual_cli_search.ckpt");
+  CHECK(resumed.status == 0);
+  CHECK(record(resumed.out) == record(whole.out));
+  CHECK(contains(whole.out, "depth 1 from the start"));
+  CHECK_FALSE(contains(resumed.out, "depth 1 from the start"));  // it went on from the checkpoint
+  CHECK(run(search + " --checkpoint-every 5").out == "hexdual: --checkpoint-every needs --checkpoint FILE\n");
+  Run missing = run(search + " --resume /tmp/hexdual_cli_no_such.ckpt");
+  CHECK(missing.status == 1);
+  CHECK(missing.out == "hexdual: resume: cannot read /tmp/hexdual_cli_no_such.ckpt\n");
+}
