@@ -17,6 +17,7 @@
 #include "flips/flip.hpp"
 #include "flips/fourcube.hpp"
 #include "flips/search_state.hpp"
+#include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
 #include "ops/support.hpp"
 
@@ -587,48 +588,14 @@ struct CountBounds {
   }
 };
 
-// Exact change of (V, H) of the operations whose counts never vary (OPERATIONS.md; checked on every
-// application by the search): pillow (+4,+2), chord push (+2,+2), hex push (+4,+4), face collapse
-// (-2,0), and their inverses. Ring collapse and split change H by the ring's length.
-bool exactDelta(OpKind k, int& dV, int& dH) {
-  switch (k) {
-    case OpKind::Pillow:
-      dV = 4, dH = 2;
-      return true;
-    case OpKind::Unpillow:
-      dV = -4, dH = -2;
-      return true;
-    case OpKind::ChordPush:
-      dV = 2, dH = 2;
-      return true;
-    case OpKind::ChordPull:
-      dV = -2, dH = -2;
-      return true;
-    case OpKind::HexPush:
-      dV = 4, dH = 4;
-      return true;
-    case OpKind::HexPull:
-      dV = -4, dH = -4;
-      return true;
-    case OpKind::FaceCollapse:
-      dV = -2, dH = 0;
-      return true;
-    case OpKind::FaceSplit:
-      dV = 2, dH = 0;
-      return true;
-    default:
-      return false;
-  }
-}
-
 CountBounds countBounds(const Complex& start, const SearchOptions& opt) {
   CountBounds b;
   b.V0 = start.numVertices();
   b.H0 = start.numHexes();
   auto use = [&](OpKind k) { return opt.ops.empty() || std::find(opt.ops.begin(), opt.ops.end(), k) != opt.ops.end(); };
-  for (int k = 0; k <= int(OpKind::FaceSplit); ++k) {
-    int dV = 0, dH = 0;
-    if (!use(OpKind(k)) || !exactDelta(OpKind(k), dV, dH)) continue;
+  for (const OpInfo& op : allOps()) {
+    if (!use(op.kind) || !op.counts.fixed) continue;
+    const int dV = op.counts.dV, dH = op.counts.dH;
     b.upH = std::max(b.upH, dH), b.downH = std::max(b.downH, -dH);
     b.upX = std::max(b.upX, dV - dH), b.downX = std::max(b.downX, dH - dV);
   }
@@ -763,8 +730,9 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
     const auto& ms = w.movesHere();
     const int64_t V = w.cx.numVertices(), H = w.cx.numHexes();
     for (size_t i = 0; i < ms.size(); ++i) {
-      int dV = 0, dH = 0;
-      const bool exact = exactDelta(ms[i].op, dV, dH);
+      const CountChange& change = opInfo(ms[i].op).counts;
+      const bool exact = change.fixed;
+      const int dV = change.dV, dH = change.dH;
       if (exact && CountBounds::fits(V + dV - cb.V0, H + dH - cb.H0) && !useful(cb.pack(V + dV, H + dH))) {
         ++pruned;
         continue;

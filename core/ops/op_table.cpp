@@ -52,27 +52,29 @@ struct Signature<OpResult (*)(Complex&, A...)> {
 };
 
 template <auto F>
-OpInfo row(OpKind kind, const char* name, char urlCode, bool keepsSheetTopology, CandidateSet candidates) {
+OpInfo row(OpKind kind, const char* name, char urlCode, bool keepsSheetTopology, CandidateSet candidates, CountChange counts) {
   using S = Signature<decltype(F)>;
-  return {kind, name, urlCode, S::kinds(), keepsSheetTopology, candidates, &S::template apply<F>};
+  return {kind, name, urlCode, S::kinds(), keepsSheetTopology, candidates, counts, &S::template apply<F>};
 }
 
 constexpr bool kKeepsSheets = true, kReshapesSheets = false;
+constexpr CountChange kByRingLength{false, 0, 0};
+constexpr CountChange counts(int dV, int dH) { return {true, dV, dH}; }
 
 std::vector<OpInfo> makeTable() {
   using K = OpKind;
   using C = CandidateSet;
   std::vector<OpInfo> t = {
-      row<&pillow>(K::Pillow, "pillow", 'P', kKeepsSheets, C::InteriorQuads),
-      row<&unpillow>(K::Unpillow, "unpillow", 'Q', kKeepsSheets, C::Hexes),
-      row<&chordPush>(K::ChordPush, "chordpush", 'C', kKeepsSheets, C::EdgeStarQuadPairs),
-      row<&chordPull>(K::ChordPull, "chordpull", 'D', kKeepsSheets, C::Hexes),
-      row<&hexPush>(K::HexPush, "hexpush", 'H', kKeepsSheets, C::InteriorQuads),
-      row<&hexPull>(K::HexPull, "hexpull", 'I', kKeepsSheets, C::InteriorQuadSides),
-      row<&ringCollapse>(K::RingCollapse, "ringcollapse", 'R', kReshapesSheets, C::ClosedChordEdges),
-      row<&ringSplit>(K::RingSplit, "ringsplit", 'S', kReshapesSheets, C::None),
-      row<&faceCollapse>(K::FaceCollapse, "facecollapse", 'F', kReshapesSheets, C::EdgeStarQuadPairs),
-      row<&faceSplit>(K::FaceSplit, "facesplit", 'G', kReshapesSheets, C::SameVertexQuadPairs),
+      row<&pillow>(K::Pillow, "pillow", 'P', kKeepsSheets, C::InteriorQuads, counts(4, 2)),
+      row<&unpillow>(K::Unpillow, "unpillow", 'Q', kKeepsSheets, C::Hexes, counts(-4, -2)),
+      row<&chordPush>(K::ChordPush, "chordpush", 'C', kKeepsSheets, C::EdgeStarQuadPairs, counts(2, 2)),
+      row<&chordPull>(K::ChordPull, "chordpull", 'D', kKeepsSheets, C::Hexes, counts(-2, -2)),
+      row<&hexPush>(K::HexPush, "hexpush", 'H', kKeepsSheets, C::InteriorQuads, counts(4, 4)),
+      row<&hexPull>(K::HexPull, "hexpull", 'I', kKeepsSheets, C::InteriorQuadSides, counts(-4, -4)),
+      row<&ringCollapse>(K::RingCollapse, "ringcollapse", 'R', kReshapesSheets, C::ClosedChordEdges, kByRingLength),
+      row<&ringSplit>(K::RingSplit, "ringsplit", 'S', kReshapesSheets, C::None, kByRingLength),
+      row<&faceCollapse>(K::FaceCollapse, "facecollapse", 'F', kReshapesSheets, C::EdgeStarQuadPairs, counts(-2, 0)),
+      row<&faceSplit>(K::FaceSplit, "facesplit", 'G', kReshapesSheets, C::SameVertexQuadPairs, counts(2, 0)),
   };
   for (size_t k = 0; k < t.size(); ++k)
     if (t[k].kind != OpKind(k)) throw Error("internal: the operation table is not in OpKind order");

@@ -21,6 +21,13 @@ enum class CandidateSet : uint8_t {
   SameVertexQuadPairs,  // every two interior quads on the same 4 vertices, both sides of the second
 };
 
+// How an operation changes the vertex and hex counts: the same for every application (OPERATIONS.md),
+// or, for ring collapse and ring split, by the ring's length.
+struct CountChange {
+  bool fixed;
+  int dV, dH;
+};
+
 struct OpInfo {
   OpKind kind;
   const char* name;  // the log name, e.g. "chordpush"; also the prefix of the operation's errors
@@ -28,6 +35,7 @@ struct OpInfo {
   std::vector<OpArg::Kind> args;  // a single Pair means "one or more pairs"
   bool keepsSheetTopology;        // never cuts, merges or re-shapes an existing sheet (DualTracker)
   CandidateSet candidates;
+  CountChange counts;
   OpResult (*apply)(Complex&, const OpStep&);  // called with arguments already checked
 };
 
