@@ -128,4 +128,23 @@ TEST_CASE("cli: flip search stopped at a cap writes a checkpoint; --resume finis
   Run missing = run(search + " --resume /tmp/hexdual_cli_no_such.ckpt");
   CHECK(missing.status == 1);
   CHECK(missing.out == "hexdual: resume: cannot read /tmp/hexdual_cli_no_such.ckpt\n");
+  // A checkpoint of the stored mode is not resumed by a search with the last level by lookup.
+  Run other = run(search + " --lookup-last --resume /tmp/hexdual_cli_search.ckpt");
+  CHECK(other.status == 1);
+  CHECK(contains(other.out, "belongs to another search (3-5e; depth 4;"));
+  CHECK(contains(other.out, "chunk 512), not this one (3-5e; depth 4;"));
+  CHECK(contains(other.out, "chunk 512; last level by lookup)\n"));
+}
+
+TEST_CASE("cli: flip search --lookup-last: the last level looked up, not stored; the same answer") {
+  Run r = run("flip search 4-4v --max-depth 5 --symmetry --lookup-last");
+  CHECK(r.status == 0);
+  CHECK(contains(r.out, "depth 2 from the goal: 333 new states, 682 stored,"));
+  CHECK(contains(r.out, "depth 3 from the start: looked up (not stored), 682 stored,"));
+  CHECK(contains(r.out, "4-4v|none|-|5|5|682|"));
+  CHECK(contains(r.out, "none found; stopped by depth after 682 states,"));
+  CHECK(contains(r.out, ", 24 symmetries, 6746 image keys looked up\n"));
+  Run found = run("flip search 3-5e --max-depth 4 --symmetry --lookup-last");
+  CHECK(contains(found.out, "3-5e|found|v1;hexpush h0f0;facecollapse h1e8 h9f2 h4f1;facesplit h6f4 h12f2;chordpull h4|4|4|487|"));
+  CHECK(contains(found.out, "found 4 steps (verified)"));
 }

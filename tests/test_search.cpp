@@ -428,3 +428,52 @@ TEST_CASE("the hex push is a ring split: the 2-6 flip is one ring split of the 4
   }
   CHECK(places == 6);  // the 4-cube as is, pillowed, hex-pushed; two 5x5x5 grid places, one O-grid place
 }
+
+TEST_CASE("last level by lookup: the same answers, the last level's children neither checked nor stored") {
+  // The other side is keyed once under every symmetry; a last-level child is keyed under the
+  // identity only and looked up there. Found and not found alike must agree with the stored mode.
+  for (bool symmetry : {true, false}) {
+    INFO("symmetry " << symmetry);
+    SearchProblem pb = flipProblem("3-5e");
+    SearchOptions o;
+    o.maxDepth = 4;
+    o.symmetry = symmetry;
+    SearchResult stored = searchDecomposition(pb, o);
+    o.lookupLastLevel = true;
+    SearchResult looked = searchDecomposition(pb, o);
+    o.threads = 2;
+    SearchResult two = searchDecomposition(pb, o);
+    REQUIRE(stored.found);
+    REQUIRE(looked.found);
+    REQUIRE(two.found);
+    CHECK(looked.steps.size() == 4);
+    verifyDecomposition(pb, looked.steps);
+    CHECK(formatOpLog({1, looked.steps}) == formatOpLog({1, two.steps}));
+    CHECK(looked.statesExplored < stored.statesExplored);
+    CHECK(looked.lookupKeys > 0);
+    CHECK(stored.lookupKeys == 0);
+  }
+  // 4-4 vertex flip to depth 5: none either way; the first four levels are the same, the fifth
+  // (the start side's level 3) is looked up against the goal side's 341 states in their 24 images.
+  SearchProblem v = flipProblem("4-4v");
+  SearchOptions o;
+  o.maxDepth = 5;
+  o.symmetry = true;
+  o.maxStates = 1000000;
+  SearchResult stored = searchDecomposition(v, o);
+  o.lookupLastLevel = true;
+  SearchResult looked = searchDecomposition(v, o);
+  CHECK_FALSE(stored.found);
+  CHECK_FALSE(looked.found);
+  CHECK(stored.depthSearched == 5);
+  CHECK(looked.depthSearched == 5);
+  CHECK(looked.stoppedBy == "depth");
+  CHECK(stored.statesExplored == 19898);
+  CHECK(looked.statesExplored == 682);
+  CHECK(looked.lookupKeys == 6746);
+  REQUIRE(looked.levels.size() == 5);
+  CHECK(looked.levels.back().lookedUp);
+  CHECK_FALSE(stored.levels.back().lookedUp);
+  for (size_t i = 0; i + 1 < looked.levels.size(); ++i) CHECK(looked.levels[i].newStates == stored.levels[i].newStates);
+  CHECK(looked.memoryBytes > 0);
+}

@@ -48,7 +48,7 @@ const char* kUsage =
     "  hexdual flip verify --all [--json]        check every stored decomposition in host meshes\n"
     "  hexdual flip search NAME --max-depth D [--max-seconds S] [--max-states N] [--ops a,b]\n"
     "                   [--threads T] [--max-memory MB] [--max-region H] [--ring-split L] [--symmetry]\n"
-    "                   [--checkpoint FILE [--checkpoint-every S]] [--resume FILE]\n"
+    "                   [--lookup-last] [--checkpoint FILE [--checkpoint-every S]] [--resume FILE]\n"
     "                                            search atomic sequences for a flip (SIGUSR1: checkpoint\n"
     "                                            now; SIGINT/SIGTERM: checkpoint and stop)\n"
     "Reading (every command): .vtk (legacy 2.0-5.1), .vtu, .msh (2.2, 4.1), .mesh, .meshb, .hxd, any of\n"
@@ -58,7 +58,7 @@ struct Args {
   std::vector<std::string> positional;
   std::string output, ops, at, local, jsonDir, svgDir, checkpoint, resume;
   double checkpointEvery = 0;
-  bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false;
+  bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false, lookupLast = false;
   int sheet = -1, rings = 2;
   int maxDepth = 4;
   double maxSeconds = 60;
@@ -114,6 +114,8 @@ Args parseArgs(int argc, char** argv, int from) {
       }
     } else if (s == "--symmetry") {
       a.symmetry = true;
+    } else if (s == "--lookup-last") {
+      a.lookupLast = true;
     } else if (s == "--via-atomic") {
       a.viaAtomic = true;
     } else if (s == "--all") {
@@ -283,6 +285,7 @@ int runFlip(const Args& a) {
     o.maxMemoryMB = a.maxMemory;
     o.maxRegionHexes = a.maxRegion;
     o.symmetry = a.symmetry;
+    o.lookupLastLevel = a.lookupLast;
     o.ringSplitMax = a.ringSplit;
     o.checkpointFile = a.checkpoint;
     o.checkpointEvery = a.checkpointEvery;
@@ -296,8 +299,8 @@ int runFlip(const Args& a) {
       std::signal(SIGTERM, [](int) { searchRequest = 2; });
     }
     o.progress = [](const SearchLevel& l) {
-      std::cerr << "depth " << l.depth << (l.side ? " from the goal: " : " from the start: ") << l.newStates << " new states, "
-                << l.storedStates << " stored, " << l.movesApplied << " moves applied, " << l.seconds << " s\n";
+      std::cerr << "depth " << l.depth << (l.side ? " from the goal: " : " from the start: ")
+                << (l.lookedUp ? "looked up (not stored), " : std::to_string(l.newStates) + " new states, ") << l.storedStates << " stored, " << l.movesApplied << " moves applied, " << l.seconds << " s\n";
     };
     for (const std::string& op : splitList(a.ops)) o.ops.push_back(opNamed(op, "flip search --ops"));
     std::string name = a.positional[1];
@@ -308,7 +311,8 @@ int runFlip(const Args& a) {
     std::cout << formatDecomposition(label, r, o) << "\n";
     std::cerr << (r.found ? "found " + std::to_string(r.steps.size()) + " steps (verified)" : "none found") << "; stopped by "
               << r.stoppedBy << " after " << r.statesExplored << " states, " << r.movesApplied << " moves applied, "
-              << (r.memoryBytes >> 20) << " MB" << (r.symmetries > 1 ? ", " + std::to_string(r.symmetries) + " symmetries" : "") << "\n";
+              << (r.memoryBytes >> 20) << " MB" << (r.symmetries > 1 ? ", " + std::to_string(r.symmetries) + " symmetries" : "")
+              << (r.lookupKeys ? ", " + std::to_string(r.lookupKeys) + " image keys looked up" : "") << "\n";
     if (!r.message.empty()) std::cerr << r.message << "\n";
     if (r.checkpoints > 0) std::cerr << r.checkpoints << " checkpoint(s) written to " << o.checkpointFile << "\n";
     return 0;

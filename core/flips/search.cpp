@@ -9,6 +9,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <thread>
 
@@ -502,7 +503,8 @@ class Walker {
       return std::min(opt.ringSplitMax, opt.maxRegionHexes - int(cx.numHexes() - int64_t(host_.size())));
     };
     path_ = {0};
-    movesAt_.push_back(moves(cx, host_, ops_, ringMax_(), prefilter_));
+    movesAt_.emplace_back();
+    ready_.push_back(false);
   }
   void goTo(int32_t node) {
     chain_.clear();
@@ -514,16 +516,25 @@ class Walker {
       cx.undo(logs_.back());
       logs_.pop_back();
       movesAt_.pop_back();
+      ready_.pop_back();
       path_.pop_back();
     }
     for (size_t i = common; i < chain_.size(); ++i) {
-      const OpStep& m = movesAt_.back()[side_.move[size_t(chain_[i])]];
+      const OpStep& m = movesHere()[side_.move[size_t(chain_[i])]];
       logs_.push_back(applyStep(cx, m).edits);
       path_.push_back(chain_[i]);
-      movesAt_.push_back(moves(cx, host_, ops_, ringMax_(), prefilter_));
+      movesAt_.emplace_back();
+      ready_.push_back(false);
     }
   }
-  const std::vector<OpStep>& movesHere() const { return movesAt_.back(); }
+  // The current node's move list (generated on first use: a node only replayed needs none).
+  const std::vector<OpStep>& movesHere() {
+    if (!ready_.back()) {
+      movesAt_.back() = moves(cx, host_, ops_, ringMax_(), prefilter_);
+      ready_.back() = true;
+    }
+    return movesAt_.back();
+  }
   // The steps from the root to the current node.
   std::vector<OpStep> steps() const {
     std::vector<OpStep> out;
@@ -539,6 +550,7 @@ class Walker {
   std::vector<int32_t> path_, chain_;
   std::vector<Complex::EditLog> logs_;
   std::vector<std::vector<OpStep>> movesAt_;
+  std::vector<bool> ready_;  // whether movesAt_ of that path node was generated
   std::function<int()> ringMax_;  // ring splits: loops up to the region cap's headroom
 
  public:
@@ -707,7 +719,62 @@ struct LevelPlan {
   bool last = false;
   int remaining = 0;
   uint16_t target = 0;
+  const FlatKeyMap* images = nullptr;  // a last level by lookup: the other side's image keys
 };
+
+// Runs work(0..threads-1) on that many threads (the calling one when 1); rethrows the first error.
+void onThreads(int threads, const std::function<void(int)>& work) {
+  std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
+  auto guarded = [&](int t) {
+    try {
+      work(t);
+    } catch (...) {
+      errors[size_t(t)] = std::current_exception();
+    }
+  };
+  if (threads == 1) {
+    guarded(0);
+  } else {
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t) pool.emplace_back(guarded, t);
+    for (auto& th : pool) th.join();
+  }
+  for (auto& err : errors)
+    if (err) std::rethrow_exception(err);
+}
+
+// The plain keys (identity only) of every state of `side` and of its images under the problem's
+// symmetries, each mapped to its node: a state meets that side iff its plain key is here, so a
+// last level needs one identity encoding per child instead of one per symmetry. States are
+// replayed in node order (parents first, so consecutive nodes share their paths).
+FlatKeyMap imageKeys(const SearchContext& ctx, const Side& side, int threads) {
+  const size_t n = side.parent.size(), maps = ctx.symmetries.size() + 1;
+  size_t slots = 1024;
+  while (10 * (n * maps + 1) > 7 * slots) slots *= 2;
+  FlatKeyMap out(slots);
+  std::vector<std::unique_ptr<Walker>> walkers;
+  std::vector<RegionEncoder> enc(static_cast<size_t>(threads));
+  for (int t = 0; t < threads; ++t) walkers.push_back(std::make_unique<Walker>(side, ctx.host, ctx.opt));
+  std::vector<std::vector<std::pair<Key128, int32_t>>> keys(static_cast<size_t>(threads));
+  const size_t chunk = size_t(1) << 14;
+  for (size_t b = 0; b < n; b += chunk) {
+    const size_t e = std::min(n, b + chunk), per = (e - b + size_t(threads) - 1) / size_t(threads);
+    onThreads(threads, [&](int t) {
+      Walker& w = *walkers[size_t(t)];
+      RegionEncoder& en = enc[size_t(t)];
+      auto& list = keys[size_t(t)];
+      list.clear();
+      for (size_t v = std::min(e, b + per * size_t(t)), hi = std::min(e, v + per); v < hi; ++v) {
+        w.goTo(int32_t(v));
+        list.push_back({hashWords(en.form(w.cx, ctx.isHost)), int32_t(v)});
+        for (const auto& m : ctx.symmetries) list.push_back({hashWords(en.form(w.cx, ctx.isHost, &m)), int32_t(v)});
+      }
+    });
+    for (const auto& list : keys)
+      for (const auto& [k, v] : list) out.insert(k, v);
+  }
+  return out;
+}
 
 // Expands nodes [begin, end) of `side`: every move that applies, keeps the host and the region
 // cap, and reaches a state not yet stored there; stops at a state the other side stored. Reads
@@ -757,6 +824,28 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
         ++applied;
         continue;
       }
+      if (plan.images) {
+        // A last level by lookup: only a child whose plain key is an image of a state of the
+        // other side can meet it; that one is checked like any new state.
+        const bool hit = plan.images->find(enc.key(w.cx, ctx.isHost)) >= 0;
+        w.cx.undo(r.edits);
+        if (!hit) {
+          ++applied;
+          continue;
+        }
+        try {
+          r = applyStep(w.cx, ms[i]);
+        } catch (const Error&) {
+          continue;
+        }
+        ++applied;
+        const bool keep = (!fromGoal || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
+        const Key128 key = keep ? ctx.key(enc, w.cx) : Key128{};
+        w.cx.undo(r.edits);
+        if (!keep || other.index.find(key) < 0) continue;  // (a 128-bit collision: not a meeting)
+        out.push_back({int32_t(n), uint32_t(i), key, counts});
+        return;  // the merge stores it and meets there
+      }
       Key128 key = ctx.key(enc, w.cx);
       w.cx.undo(r.edits);
       if (side.index.find(key) >= 0 || foundHere.find(key) >= 0) {
@@ -795,7 +884,8 @@ std::string searchFingerprint(const SearchProblem& pb, const SearchOptions& o) {
   for (OpKind k : o.ops) f += " " + std::string(opName(k));
   f += "; region " + std::to_string(o.maxRegionHexes) + "; ring split " + std::to_string(o.ringSplitMax) +
        "; symmetry " + std::to_string(o.symmetry) + "; prefilter " + std::to_string(o.prefilter) + "; count pruning " +
-       std::to_string(o.countPruning) + "; chunk " + std::to_string(o.chunk);
+       std::to_string(o.countPruning) + "; chunk " + std::to_string(o.chunk) +
+       (o.lookupLastLevel ? "; last level by lookup" : "");
   return f;
 }
 
@@ -927,7 +1017,8 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     ++res.checkpoints;
   };
   auto stored = [&] { return int64_t(side[0].parent.size() + side[1].parent.size()); };
-  auto memory = [&] { return side[0].memoryBytes() + side[1].memoryBytes(); };
+  FlatKeyMap images{1};  // the other side's image keys, for a last level by lookup
+  auto memory = [&] { return side[0].memoryBytes() + side[1].memoryBytes() + images.memoryBytes(); };
   auto finishStats = [&] {
     res.statesExplored = stored();
     res.memoryBytes = std::max(res.memoryBytes, memory());
@@ -1016,6 +1107,11 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     plan.remaining = opt.maxDepth - (me.depth + 1);  // steps left for a child of this level to reach the other root
     plan.last = side[0].depth + side[1].depth + 1 == opt.maxDepth;
     plan.target = other.counts[0];
+    if (plan.last && opt.lookupLastLevel) {
+      images = imageKeys(ctx, other, threads);
+      res.lookupKeys = int64_t(images.size());
+      plan.images = &images;
+    }
     for (size_t b = firstChunk; b < me.levelEnd; b += chunk) {
       size_t e = std::min(me.levelEnd, b + chunk);
       if (!opt.checkpointFile.empty() && ((opt.checkpointEvery > 0 && elapsed() - lastSave >= opt.checkpointEvery) ||
@@ -1025,25 +1121,11 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
       }
       std::vector<std::vector<Child>> found(static_cast<size_t>(threads));
       std::vector<int64_t> applied(static_cast<size_t>(threads), 0), pruned(static_cast<size_t>(threads), 0);
-      std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
-      auto work = [&](int t) {
+      onThreads(threads, [&](int t) {
         size_t per = (e - b + size_t(threads) - 1) / size_t(threads);
         size_t lo = std::min(e, b + per * size_t(t)), hi = std::min(e, lo + per);
-        try {
-          expand(ctx, me, other, s == 1, plan, lo, hi, found[size_t(t)], applied[size_t(t)], pruned[size_t(t)], stop);
-        } catch (...) {
-          errors[size_t(t)] = std::current_exception();
-        }
-      };
-      if (threads == 1) {
-        work(0);
-      } else {
-        std::vector<std::thread> pool;
-        for (int t = 0; t < threads; ++t) pool.emplace_back(work, t);
-        for (auto& th : pool) th.join();
-      }
-      for (auto& err : errors)
-        if (err) std::rethrow_exception(err);
+        expand(ctx, me, other, s == 1, plan, lo, hi, found[size_t(t)], applied[size_t(t)], pruned[size_t(t)], stop);
+      });
       // Stopped inside this chunk: the checkpoint is the state before it (the chunk is redone).
       if ((timeUp || interrupted) && !opt.checkpointFile.empty()) save(s, b, levelStart, prunedThisLevel);
       for (int64_t a : applied) res.movesApplied += a;
@@ -1098,9 +1180,10 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     me.levelEnd = me.parent.size();
     ++me.depth;
     res.depthSearched = side[0].depth + side[1].depth;
-    res.levels.push_back(
-        {s, me.depth, int64_t(me.levelEnd - me.levelBegin), stored(), res.movesApplied, secondsBefore + elapsed()});
+    res.levels.push_back({s, me.depth, int64_t(me.levelEnd - me.levelBegin), stored(), res.movesApplied,
+                          secondsBefore + elapsed(), plan.images != nullptr});
     if (opt.progress) opt.progress(res.levels.back());
+    if (plan.images) break;  // the last level, by lookup: its children were not stored
     if (me.levelBegin == me.levelEnd && prunedThisLevel > 0) {
       // Every new state was dropped by the count bound: no sequence of at most maxDepth steps.
       res.depthSearched = opt.maxDepth;

@@ -35,6 +35,7 @@ struct SearchLevel {
   int64_t newStates = 0;                       // states first reached at this level
   int64_t storedStates = 0, movesApplied = 0;  // totals so far
   double seconds = 0;
+  bool lookedUp = false;  // a last level by lookup (SearchOptions::lookupLastLevel): children not stored
 };
 
 struct SearchOptions {
@@ -49,6 +50,11 @@ struct SearchOptions {
   bool symmetry = false;      // store one state per orbit of the problem's symmetries
   bool prefilter = true;      // skip moves proven never valid and local without trying them
   bool countPruning = true;   // drop states whose (V, H) cannot reach the other end in the steps left
+  // The last level by lookup: the other side's states are keyed once under every symmetry (the
+  // identity alone without symmetry), and each child of the last level is keyed under the identity
+  // only and looked up there; children are neither checked nor stored unless they meet. Same
+  // answers; far less memory, and about half the time per move with symmetry.
+  bool lookupLastLevel = false;
   std::function<void(const SearchLevel&)> progress;  // called after every completed level
   size_t chunk = 512;          // frontier states per chunk: merges, limits and checkpoints fall between chunks
   std::string checkpointFile;  // where checkpoints are written ("": none)
@@ -72,6 +78,7 @@ struct SearchResult {
   std::vector<SearchLevel> levels;
   int symmetries = 1;   // the order of the symmetry group used (1: none)
   int checkpoints = 0;  // checkpoints written by this run
+  int64_t lookupKeys = 0;  // keys of the other side's states and their images (lookupLastLevel)
 };
 
 SearchResult searchDecomposition(const SearchProblem& problem, const SearchOptions& options);
