@@ -476,4 +476,15 @@ TEST_CASE("last level by lookup: the same answers, the last level's children nei
   CHECK_FALSE(stored.levels.back().lookedUp);
   for (size_t i = 0; i + 1 < looked.levels.size(); ++i) CHECK(looked.levels[i].newStates == stored.levels[i].newStates);
   CHECK(looked.memoryBytes > 0);
+  // When the image keys (16,384 slots here) would pass the memory limit, children are keyed by
+  // orbit and looked up in the other side's index: the same answer, no image keys.
+  o.maxMemoryMB = 0.6;
+  SearchResult byOrbit = searchDecomposition(v, o);
+  CHECK_FALSE(byOrbit.found);
+  CHECK(byOrbit.stoppedBy == "depth");
+  CHECK(byOrbit.depthSearched == 5);
+  CHECK(byOrbit.lookupKeys == 0);
+  CHECK(byOrbit.statesExplored == 682);
+  CHECK(byOrbit.movesApplied == looked.movesApplied);
+  CHECK(byOrbit.levels.back().lookedUp);
 }

@@ -719,7 +719,8 @@ struct LevelPlan {
   bool last = false;
   int remaining = 0;
   uint16_t target = 0;
-  const FlatKeyMap* images = nullptr;  // a last level by lookup: the other side's image keys
+  bool lookup = false;                 // a last level by lookup: children only compared, never stored
+  const FlatKeyMap* images = nullptr;  // the other side's image keys (null: children keyed by orbit)
 };
 
 // Runs work(0..threads-1) on that many threads (the calling one when 1); rethrows the first error.
@@ -747,11 +748,16 @@ void onThreads(int threads, const std::function<void(int)>& work) {
 // symmetries, each mapped to its node: a state meets that side iff its plain key is here, so a
 // last level needs one identity encoding per child instead of one per symmetry. States are
 // replayed in node order (parents first, so consecutive nodes share their paths).
-FlatKeyMap imageKeys(const SearchContext& ctx, const Side& side, int threads) {
-  const size_t n = side.parent.size(), maps = ctx.symmetries.size() + 1;
+size_t imageSlots(const SearchContext& ctx, const Side& side) {
+  const size_t keys = side.parent.size() * (ctx.symmetries.size() + 1);
   size_t slots = 1024;
-  while (10 * (n * maps + 1) > 7 * slots) slots *= 2;
-  FlatKeyMap out(slots);
+  while (10 * (keys + 1) > 7 * slots) slots *= 2;  // FlatKeyMap's load limit: it never grows
+  return slots;
+}
+
+FlatKeyMap imageKeys(const SearchContext& ctx, const Side& side, int threads) {
+  const size_t n = side.parent.size();
+  FlatKeyMap out(imageSlots(ctx, side));
   std::vector<std::unique_ptr<Walker>> walkers;
   std::vector<RegionEncoder> enc(static_cast<size_t>(threads));
   for (int t = 0; t < threads; ++t) walkers.push_back(std::make_unique<Walker>(side, ctx.host, ctx.opt));
@@ -824,10 +830,12 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
         ++applied;
         continue;
       }
-      if (plan.images) {
+      if (plan.lookup) {
         // A last level by lookup: only a child whose plain key is an image of a state of the
-        // other side can meet it; that one is checked like any new state.
-        const bool hit = plan.images->find(enc.key(w.cx, ctx.isHost)) >= 0;
+        // other side (or, without images, whose orbit key is stored there) can meet it; that one
+        // is checked like any new state.
+        const bool hit = plan.images ? plan.images->find(enc.key(w.cx, ctx.isHost)) >= 0
+                                     : other.index.find(ctx.key(enc, w.cx)) >= 0;
         w.cx.undo(r.edits);
         if (!hit) {
           ++applied;
@@ -1108,9 +1116,14 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     plan.last = side[0].depth + side[1].depth + 1 == opt.maxDepth;
     plan.target = other.counts[0];
     if (plan.last && opt.lookupLastLevel) {
-      images = imageKeys(ctx, other, threads);
-      res.lookupKeys = int64_t(images.size());
-      plan.images = &images;
+      plan.lookup = true;
+      // Beyond the memory limit, children are keyed by orbit and looked up in the other side's index.
+      const double imageBytes = double(imageSlots(ctx, other) * (sizeof(Key128) + sizeof(int32_t)));
+      if (double(memory()) + imageBytes <= opt.maxMemoryMB * 1048576.0) {
+        images = imageKeys(ctx, other, threads);
+        res.lookupKeys = int64_t(images.size());
+        plan.images = &images;
+      }
     }
     for (size_t b = firstChunk; b < me.levelEnd; b += chunk) {
       size_t e = std::min(me.levelEnd, b + chunk);
@@ -1167,7 +1180,8 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
         return finishStats();
       }
       // A hash set grows by doubling: stop before the next growth could pass the memory limit.
-      if (double(memory()) + double(me.index.memoryBytes()) * 2 > opt.maxMemoryMB * 1048576.0) {
+      // (A last level by lookup adds no states.)
+      if (double(memory()) + (plan.lookup ? 0.0 : double(me.index.memoryBytes()) * 2) > opt.maxMemoryMB * 1048576.0) {
         if (!opt.checkpointFile.empty()) save(s, e, levelStart, prunedThisLevel);
         res.stoppedBy = "memory";
         res.message = "stopped by the memory guard (--max-memory " + std::to_string(int64_t(opt.maxMemoryMB)) +
@@ -1181,9 +1195,9 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     ++me.depth;
     res.depthSearched = side[0].depth + side[1].depth;
     res.levels.push_back({s, me.depth, int64_t(me.levelEnd - me.levelBegin), stored(), res.movesApplied,
-                          secondsBefore + elapsed(), plan.images != nullptr});
+                          secondsBefore + elapsed(), plan.lookup});
     if (opt.progress) opt.progress(res.levels.back());
-    if (plan.images) break;  // the last level, by lookup: its children were not stored
+    if (plan.lookup) break;  // the last level, by lookup: its children were not stored
     if (me.levelBegin == me.levelEnd && prunedThisLevel > 0) {
       // Every new state was dropped by the count bound: no sequence of at most maxDepth steps.
       res.depthSearched = opt.maxDepth;
