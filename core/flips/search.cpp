@@ -847,7 +847,7 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
           continue;
         }
         ++applied;
-        const bool keep = (!fromGoal || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
+        const bool keep = (!(fromGoal || ctx.opt.reversible) || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
         const Key128 key = keep ? ctx.key(enc, w.cx) : Key128{};
         w.cx.undo(r.edits);
         if (!keep || other.index.find(key) < 0) continue;  // (a 128-bit collision: not a meeting)
@@ -867,8 +867,9 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
       }
       ++applied;
       // From the goal side a move stands for its inverse step: a move without one (a ring collapse
-      // whose side quad was glued to the ring itself) is no step of a decomposition.
-      bool keep = (!fromGoal || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
+      // whose side quad was glued to the ring itself) is no step of a decomposition. With
+      // `reversible`, forward moves need one too.
+      bool keep = (!(fromGoal || ctx.opt.reversible) || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
       w.cx.undo(r.edits);
       if (!keep) continue;
       out.push_back({int32_t(n), uint32_t(i), key, counts});
@@ -893,7 +894,7 @@ std::string searchFingerprint(const SearchProblem& pb, const SearchOptions& o) {
   f += "; region " + std::to_string(o.maxRegionHexes) + "; ring split " + std::to_string(o.ringSplitMax) +
        "; symmetry " + std::to_string(o.symmetry) + "; prefilter " + std::to_string(o.prefilter) + "; count pruning " +
        std::to_string(o.countPruning) + "; chunk " + std::to_string(o.chunk) +
-       (o.lookupLastLevel ? "; last level by lookup" : "");
+       (o.lookupLastLevel ? "; last level by lookup" : "") + (o.reversible ? "; reversible" : "");
   return f;
 }
 
@@ -923,6 +924,22 @@ void getVector(std::istream& in, std::vector<T>& v) {
 
 const char* const kCheckpointMagic = "hexdual search checkpoint v1";
 
+// A completed level as format v1 stores it (40 bytes; a level by lookup is always the last one and
+// never saved, so SearchLevel::lookedUp needs no field).
+struct LevelRecord {
+  int32_t side, depth;
+  int64_t newStates, storedStates, movesApplied;
+  double seconds;
+};
+static_assert(sizeof(LevelRecord) == 40, "the v1 checkpoint layout");
+
+std::vector<LevelRecord> levelRecords(const std::vector<SearchLevel>& levels) {
+  std::vector<LevelRecord> out;
+  for (const SearchLevel& l : levels)
+    out.push_back({l.side, l.depth, l.newStates, l.storedStates, l.movesApplied, l.seconds});
+  return out;
+}
+
 void writeCheckpoint(const std::string& path, const std::string& fingerprint, const Side side[2],
                      const SearchResult& res, double seconds, const Resume& at) {
   const std::string tmp = path + ".tmp";
@@ -934,7 +951,7 @@ void writeCheckpoint(const std::string& path, const std::string& fingerprint, co
     put(out, res.movesApplied);
     put(out, res.prunedByCounts);
     put(out, seconds);
-    putVector(out, res.levels);
+    putVector(out, levelRecords(res.levels));
     for (int s = 0; s < 2; ++s) {
       const Side& d = side[s];
       put(out, int64_t(d.depth));
@@ -965,7 +982,11 @@ Resume readCheckpoint(const std::string& path, const std::string& fingerprint, S
   get(in, res.movesApplied);
   get(in, res.prunedByCounts);
   get(in, seconds);
-  getVector(in, res.levels);
+  std::vector<LevelRecord> levels;
+  getVector(in, levels);
+  res.levels.clear();
+  for (const LevelRecord& l : levels)
+    res.levels.push_back({l.side, l.depth, l.newStates, l.storedStates, l.movesApplied, l.seconds, false});
   for (int s = 0; s < 2; ++s) {
     Side& d = side[s];
     int64_t depth = 0;
@@ -1064,7 +1085,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
         } catch (const Error&) {
           continue;
         }
-        bool hit = ctx.key(enc, cur) == want && localityViolation(cur, hs).empty();
+        bool hit = ctx.key(enc, cur) == want && (!opt.reversible || r.inverse) && localityViolation(cur, hs).empty();
         cur.undo(r.edits);
         if (hit) {
           chosen = m;

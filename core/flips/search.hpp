@@ -56,6 +56,9 @@ struct SearchOptions {
   // answers; far less memory, and about half the time per move with symmetry. When the image keys
   // (20 bytes a hash slot, load <= 0.7) would pass maxMemoryMB, children are keyed by orbit instead.
   bool lookupLastLevel = false;
+  // Every step must report its inverse step (so the sequence read backwards, step by step inverted,
+  // is a decomposition of the inverse flip). Goal-side moves always must.
+  bool reversible = false;
   std::function<void(const SearchLevel&)> progress;  // called after every completed level
   size_t chunk = 512;          // frontier states per chunk: merges, limits and checkpoints fall between chunks
   std::string checkpointFile;  // where checkpoints are written ("": none)
