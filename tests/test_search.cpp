@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <random>
 
+#include "complex/builders.hpp"
 #include "complex/canonical.hpp"
 #include "flips/flip.hpp"
 #include "flips/fourcube.hpp"
@@ -487,4 +488,27 @@ TEST_CASE("last level by lookup: the same answers, the last level's children nei
   CHECK(byOrbit.statesExplored == 682);
   CHECK(byOrbit.movesApplied == looked.movesApplied);
   CHECK(byOrbit.levels.back().lookedUp);
+}
+
+TEST_CASE("reversible: a step without an inverse step (a ring glued to itself) is no step of a reversible sequence") {
+  // In a 3x3x3 grid: a chord push at the centre hex, then the ring collapse of its blind chord,
+  // whose side quads are glued to the ring itself: that collapse reports no inverse step.
+  Complex start = makeGrid(3, 3, 3);
+  applyStep(start, parseOpLog("v1;chordpush h13e3 h13f3 h16f5").steps.at(0));
+  Complex goal = start;
+  OpResult r = applyStep(goal, parseOpLog("v1;ringcollapse h27e0").steps.at(0));
+  REQUIRE_FALSE(r.inverse);
+  CHECK(r.noInverse == "a side quad of the ring was glued to the ring itself");
+  SearchProblem pb{"blind chord", start, goal, {}};  // no host: the whole grid is the region
+  SearchOptions o;
+  o.maxDepth = 1;
+  o.maxRegionHexes = 40;
+  o.ops = {OpKind::RingCollapse};
+  SearchResult any = searchDecomposition(pb, o);
+  REQUIRE(any.found);
+  CHECK(formatOpLog({1, any.steps}) == "v1;ringcollapse h27e0");
+  o.reversible = true;
+  SearchResult reversible = searchDecomposition(pb, o);
+  CHECK_FALSE(reversible.found);
+  CHECK(reversible.depthSearched == 1);
 }
