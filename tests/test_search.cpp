@@ -488,6 +488,31 @@ TEST_CASE("last level by lookup: the same answers, the last level's children nei
   CHECK(byOrbit.statesExplored == 682);
   CHECK(byOrbit.movesApplied == looked.movesApplied);
   CHECK(byOrbit.levels.back().lookedUp);
+  // Stopped at the start of the last level (a request after level 4, as SIGINT sets it) and
+  // resumed: the image keys are made again and the result is the uninterrupted one.
+  const std::string file = (std::filesystem::temp_directory_path() / "hexdual_test_lookup.ckpt").string();
+  std::atomic<int> request{0};
+  o.maxMemoryMB = 4096;
+  o.chunk = 64;
+  o.checkpointFile = file;
+  o.request = &request;
+  o.progress = [&](const SearchLevel& l) {
+    if (l.side == 1 && l.depth == 2) request = 2;
+  };
+  SearchResult stopped = searchDecomposition(v, o);
+  CHECK(stopped.stoppedBy == "interrupted");
+  CHECK(stopped.message == "stopped on request during depth 5; checkpoint in " + file);
+  request = 0;
+  o.progress = nullptr;
+  o.checkpointFile.clear();
+  o.resumeFile = file;
+  SearchResult resumed = searchDecomposition(v, o);
+  CHECK_FALSE(resumed.found);
+  CHECK(resumed.depthSearched == 5);
+  CHECK(resumed.statesExplored == 682);
+  CHECK(resumed.lookupKeys == 6746);
+  CHECK(resumed.movesApplied == looked.movesApplied);
+  std::filesystem::remove(file);
 }
 
 TEST_CASE("reversible: a step without an inverse step (a ring glued to itself) is no step of a reversible sequence") {
