@@ -830,33 +830,20 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
         ++applied;
         continue;
       }
-      if (plan.lookup) {
-        // A last level by lookup: only a child whose plain key is an image of a state of the
-        // other side (or, without images, whose orbit key is stored there) can meet it; that one
-        // is checked like any new state.
-        const bool hit = plan.images ? plan.images->find(enc.key(w.cx, ctx.isHost)) >= 0
-                                     : other.index.find(ctx.key(enc, w.cx)) >= 0;
-        w.cx.undo(r.edits);
-        if (!hit) {
-          ++applied;
-          continue;
-        }
-        try {
-          r = applyStep(w.cx, ms[i]);
-        } catch (const Error&) {
-          continue;
-        }
-        ++applied;
-        const bool keep = (!(fromGoal || ctx.opt.reversible) || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
-        const Key128 key = keep ? ctx.key(enc, w.cx) : Key128{};
-        w.cx.undo(r.edits);
-        if (!keep || other.index.find(key) < 0) continue;  // (a 128-bit collision: not a meeting)
-        out.push_back({int32_t(n), uint32_t(i), key, counts});
-        return;  // the merge stores it and meets there
+      // On a last level by lookup a child is only compared: it may meet the other side when its
+      // plain key is an image of one of its states (or, without images, its orbit key is stored there).
+      Key128 key{};
+      bool skip = false;
+      if (!plan.lookup) {
+        key = ctx.key(enc, w.cx);
+        skip = side.index.find(key) >= 0 || foundHere.find(key) >= 0;
+      } else if (plan.images) {
+        skip = plan.images->find(enc.key(w.cx, ctx.isHost)) < 0;
+      } else {
+        skip = other.index.find(ctx.key(enc, w.cx)) < 0;
       }
-      Key128 key = ctx.key(enc, w.cx);
       w.cx.undo(r.edits);
-      if (side.index.find(key) >= 0 || foundHere.find(key) >= 0) {
+      if (skip) {
         ++applied;
         continue;
       }
@@ -870,9 +857,11 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
       // whose side quad was glued to the ring itself) is no step of a decomposition. With
       // `reversible`, forward moves need one too.
       bool keep = (!(fromGoal || ctx.opt.reversible) || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
+      if (keep && plan.lookup) key = ctx.key(enc, w.cx);  // a meeting child's orbit key
       w.cx.undo(r.edits);
-      if (!keep) continue;
+      if (!keep || (plan.lookup && other.index.find(key) < 0)) continue;  // (lookup: a 128-bit collision)
       out.push_back({int32_t(n), uint32_t(i), key, counts});
+      if (plan.lookup) return;  // the merge stores it and meets there
       foundHere.insert(key, 0);
       if (other.index.find(key) >= 0) return;  // the two searches meet: the merge stops here
     }
