@@ -173,7 +173,42 @@ TEST_CASE("every stored decomposition is verified at three or more places") {
     }
     CHECK(places >= 3);
   }
-  CHECK(found == 10);  // all six flip classes and their inverses (4-4v and 4-4m are their own)
+  CHECK(found == 11);  // the ten flips (six classes and inverses; 4-4v, 4-4m their own) and the triple-chord push
+}
+
+TEST_CASE("the triple-chord push is 8 atomic steps: two hex pushes, collapses and splits, a chord pull") {
+  // TK03 §4.5.1 left its decomposition open; verified here in the 3x3x3 grid and in four more places.
+  const StoredDecomposition* d = storedFor("tripleChordPush");
+  REQUIRE(d != nullptr);
+  REQUIRE(d->found);
+  REQUIRE(d->steps.size() == 8);
+  std::vector<std::string> kinds;
+  for (const OpStep& st : d->steps) kinds.push_back(opName(st.op));
+  CHECK(kinds == std::vector<std::string>{"hexpush", "hexpush", "facecollapse", "ringcollapse", "facesplit", "facecollapse",
+                                          "facesplit", "chordpull"});
+  SearchProblem pb = problemFor("tripleChordPush");
+  Complex cx = pb.start;
+  std::vector<int64_t> hexes{cx.numHexes()};
+  for (const OpStep& st : d->steps) {
+    applyStep(cx, st);
+    cx.validate();
+    hexes.push_back(cx.numHexes());
+  }
+  CHECK(hexes == std::vector<int64_t>{27, 31, 35, 35, 31, 31, 31, 31, 29});
+  verifyDecomposition(pb, d->steps);
+  std::vector<std::string> places;
+  for (const Embedding& e : flipEmbeddings("tripleChordPush")) {
+    CAPTURE(e.name);
+    verifyInEmbedding(pb, d->steps, e);
+    places.push_back(e.name);
+  }
+  CHECK(places == std::vector<std::string>{"3x3x3 grid, host pillowed at h26f0", "4x4x4 grid at vertex (2,2,2)",
+                                           "5x5x5 grid at vertex (2,3,2)", "8x3x3 O-grid at h6"});
+  // A sequence that does something else is refused: without its last step (the chord pull) the
+  // result has two more hexes than any triple-chord push.
+  std::vector<OpStep> shorter(d->steps.begin(), d->steps.end() - 1);
+  CHECK_THROWS_WITH(verifyInEmbedding(pb, shorter, flipEmbeddings("tripleChordPush")[1]),
+                    "verify tripleChordPush in 4x4x4 grid at vertex (2,2,2): the result is not isomorphic to the operation applied directly");
 }
 
 TEST_CASE("the 4-4 vertex flip (triple-hex push) is 9 atomic steps: a 1-7 flip, ring split and collapses, ...") {
