@@ -251,6 +251,21 @@ test('flips view: the 4-4 vertex flip (triple-hex push) steps through its 9 atom
   await page.screenshot({ path: join(screenshotDir, 'explorer-flip-44v-after.png') });
 });
 
+test('the triple-chord push decomposition: the tutorial link replays its 8 steps in the explorer', async () => {
+  const html = readFileSync(new URL('../../web/tutorials/flips.html', import.meta.url), 'utf8');
+  const href = html.match(/id="tcp-explorer" href="\.\.\/index\.html(#[^"]+)"/)[1].replace(/&amp;/g, '&');
+  await open(href);
+  const s = await state();
+  assert.ok(!s.error, s.error);
+  assert.deepEqual(s.steps, ['hexpush h4f5', 'hexpush h29f2', 'facecollapse h1e11 h5f0 h34f2', 'ringcollapse h30e4',
+    'facesplit h28f4 h36f4', 'facecollapse h7e2 h27f5 h35f5', 'facesplit h27f1 h5f0', 'chordpull h35']);
+  assert.equal(s.at, 8);
+  // 27 hexes + the triple-chord push's 2; (V, E, F, H) change by (+2, +6, +6, +2).
+  assert.deepEqual(await shownCounts(), { ...(await shownCounts()), vertices: 66, edges: 150, quads: 114, hexes: 29 });
+  await settle();
+  await page.screenshot({ path: join(screenshotDir, 'explorer-triple-chord-push.png') });
+});
+
 test('phone width: the page stacks and still shows the mesh', async () => {
   await page.setViewportSize({ width: 375, height: 812 });
   await open('#mesh=grid:3x3x3&steps=v1;pillow%20h13f5&sel=s9&diag=9');
