@@ -230,21 +230,21 @@ test('flips view: step through the 3-5e decomposition with before and after', as
   assert.equal((await state()).at, total - 1);
 });
 
-test('flips view: the 4-4 vertex flip (triple-hex push) steps through its 9 atomic steps', async () => {
+test('flips view: the 4-4 vertex flip (triple-hex push) steps through its 8 atomic steps', async () => {
   await open('#view=flips');
   await page.selectOption('#flip-name', '4-4v');
   await page.click('#flip-load');
-  assert.equal((await state()).steps.length, 9);
-  assert.match(await page.locator('#flip-status').textContent(), /before side; 9 steps/);
-  for (let i = 1; i <= 9; i++) {
+  assert.equal((await state()).steps.length, 8);
+  assert.match(await page.locator('#flip-status').textContent(), /before side; 8 steps/);
+  for (let i = 1; i <= 8; i++) {
     await page.keyboard.press('ArrowRight');
     assert.equal((await state()).at, i);
-    if (i === 3) {
+    if (i === 4) {
       await settle();
-      await page.screenshot({ path: join(screenshotDir, 'explorer-flip-44v-step3.png') });
+      await page.screenshot({ path: join(screenshotDir, 'explorer-flip-44v-step4.png') });
     }
   }
-  assert.match(await page.locator('#flip-status').textContent(), /step 9 of 9/);
+  assert.match(await page.locator('#flip-status').textContent(), /step 8 of 8/);
   assert.match(await page.locator('#flip-status').textContent(), /the after side/);
   assert.equal(await page.evaluate(() => window.hexdual.store.get().mesh.counts.hexes), 8);
   await settle();
