@@ -179,6 +179,7 @@ TEST_CASE("search limits: the state cap and the memory guard stop with a message
   CHECK(capped.message == "stopped at the state cap (--max-states 20) during depth 3");
   CHECK(capped.statesExplored > 20);
   o.maxStates = 1000000;
+  o.maxSeconds = 3600;  // (under ASan on a loaded machine this takes minutes)
   o.maxMemoryMB = 0.01;
   SearchResult guarded = searchDecomposition(pb, o);
   CHECK(guarded.stoppedBy == "memory");
@@ -439,6 +440,7 @@ TEST_CASE("last level by lookup: the same answers, the last level's children nei
     SearchOptions o;
     o.maxDepth = 4;
     o.symmetry = symmetry;
+    o.maxSeconds = 3600;
     SearchResult stored = searchDecomposition(pb, o);
     o.lookupLastLevel = true;
     SearchResult looked = searchDecomposition(pb, o);
@@ -461,6 +463,7 @@ TEST_CASE("last level by lookup: the same answers, the last level's children nei
   o.maxDepth = 5;
   o.symmetry = true;
   o.maxStates = 1000000;
+  o.maxSeconds = 3600;  // (under ASan on a loaded machine this takes minutes)
   SearchResult stored = searchDecomposition(v, o);
   o.lookupLastLevel = true;
   SearchResult looked = searchDecomposition(v, o);
