@@ -732,10 +732,14 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
   for (size_t p = 0; p < pieces.size(); ++p) affected.push_back(pieceId[p]);
   std::sort(affected.begin(), affected.end());
   affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
-  // Hexes whose slots may change sheet: their self-intersection counts are redone.
-  std::vector<HexId> recount(touched.begin(), touched.end());
+  // Hexes whose slot labels change (dead, in a piece, or new): their pairs of slots are counted
+  // again. The other hexes keep their labels, and a merge moves their pairs itself.
+  std::vector<HexId> recount;
+  for (HexId h : touched)
+    if (!cx.isHex(h)) recount.push_back(h);
   for (const auto& piece : pieces)
     for (Slot t : piece) recount.push_back(t.hex);
+  for (Slot t : newInRest) recount.push_back(t.hex);
   std::vector<int32_t> merged;
   for (size_t k = 0; k < old.size(); ++k)
     if (owner[k] >= 0 && keepOf[size_t(owner[k])] != old[k]) merged.push_back(old[k]);
