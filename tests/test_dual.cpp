@@ -195,3 +195,31 @@ TEST_CASE("dual tracker: ring and face collapse updates explore O(region) sheet 
     CHECK(big.merged == 1);
   }
 }
+
+// A merged sheet's list is settled when read: runs join in order, removals drop one listed copy
+// each (a slot removed and added back before the read stays listed once).
+TEST_CASE("SlotList: pending runs and removals read as one sorted list") {
+  auto slots = [](std::initializer_list<std::pair<int, int>> xs) {
+    std::vector<Slot> v;
+    for (auto [h, a] : xs) v.push_back({h, a});
+    return v;
+  };
+  SlotList a(slots({{1, 0}, {4, 2}, {9, 1}}));
+  SlotList b(slots({{2, 1}, {4, 0}}));
+  b.add(slots({{7, 2}}));
+  b.remove(slots({{2, 1}}));
+  a.absorb(std::move(b));
+  CHECK(b.empty());
+  CHECK(a.size() == 5);
+  a.remove(slots({{9, 1}, {1, 0}}));
+  a.add(slots({{1, 0}, {3, 1}}));
+  CHECK(a.size() == 5);
+  CHECK(a.get() == slots({{1, 0}, {3, 1}, {4, 0}, {4, 2}, {7, 2}}));
+  CHECK(a.size() == a.get().size());
+  SlotList many;
+  for (int h = 40; h-- > 0;) many.add(slots({{h, 0}}));  // more runs than are kept pending
+  CHECK(many.size() == 40);
+  CHECK(std::is_sorted(many.begin(), many.end()));
+  CHECK(many.front() == Slot{0, 0});
+  CHECK(many.back() == Slot{39, 0});
+}

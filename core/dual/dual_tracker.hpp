@@ -1,7 +1,8 @@
 // Keeps the dual current across operations. Sheets through the touched hexes are updated by a
 // lockstep flood from every touched slot that stops as soon as each old sheet is either wholly
 // explored or continues in one unexplored remainder, so a sheet cut or re-glued in one place costs
-// the explored region, and a real split its smaller pieces; Euler characteristics, loops and
+// the explored region, and a real split its smaller pieces (a merge re-points sheet labels and
+// writes no slot: see Dual::sheetLabel); Euler characteristics, loops and
 // orientations of the remainder follow from per-slot shares kept between updates. Edits that
 // touch the boundary or non-orientable sheets re-flood the sheets they touch. Chords through the
 // touched hexes are re-walked. Surviving sheets and chords keep their ids; new ones get fresh ids;
