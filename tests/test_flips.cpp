@@ -154,6 +154,7 @@ TEST_CASE("triple-chord push at a hex corner: (+2,+6,+6,+2), valid, no new sheet
 
 #include "flips/decompositions.hpp"
 #include "flips/search.hpp"
+#include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
 
 TEST_CASE("every stored decomposition is verified at three or more places") {
@@ -172,7 +173,37 @@ TEST_CASE("every stored decomposition is verified at three or more places") {
     }
     CHECK(places >= 3);
   }
-  CHECK(found == 9);  // all six flips and their inverses except the 4-4 vertex type
+  CHECK(found == 10);  // all six flip classes and their inverses (4-4v and 4-4m are their own)
+}
+
+TEST_CASE("the 4-4 vertex flip (triple-hex push) is 9 atomic steps: a 1-7 flip, ring split and collapses, ...") {
+  // TK03 §4.5.2 left it open ("most likely involving hex push and some form of ring collapse").
+  const StoredDecomposition* d = storedFor("4-4v");
+  REQUIRE(d != nullptr);
+  REQUIRE(d->found);
+  REQUIRE(d->steps.size() == 9);
+  std::vector<std::string> kinds;
+  for (const OpStep& st : d->steps) kinds.push_back(opName(st.op));
+  CHECK(kinds == std::vector<std::string>{"pillow", "hexpush", "ringsplit", "ringcollapse", "ringcollapse", "chordpush",
+                                          "facecollapse", "facesplit", "hexpull"});
+  // Hex counts along the way: the region peaks at the search's cap of 16 (host: 4 facets).
+  SearchProblem pb = problemFor("4-4v");
+  Complex cx = pb.start;
+  std::vector<int64_t> hexes{cx.numHexes()};
+  for (const OpStep& st : d->steps) {
+    applyStep(cx, st);
+    cx.validate();
+    hexes.push_back(cx.numHexes());
+  }
+  CHECK(hexes == std::vector<int64_t>{8, 10, 14, 20, 14, 10, 12, 12, 12, 8});
+  verifyDecomposition(pb, d->steps);  // local steps, and the goal with the region boundary fixed
+  // The first two steps are the paper's traditional pillow: the 1-7 flip of facet 0.
+  Complex seven = pb.start;
+  applyStep(seven, d->steps[0]);
+  applyStep(seven, d->steps[1]);
+  Complex direct = pb.start;
+  flip(direct, "1-7", {0});
+  CHECK(isomorphic(seven, direct, false));
 }
 
 TEST_CASE("search finds the paper's decompositions: 2-6 is one hex push, 1-7 is pillow + hex push") {

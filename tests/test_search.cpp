@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <random>
 
+#include "complex/builders.hpp"
 #include "complex/canonical.hpp"
 #include "flips/flip.hpp"
 #include "flips/fourcube.hpp"
@@ -476,4 +477,63 @@ TEST_CASE("last level by lookup: the same answers, the last level's children nei
   CHECK_FALSE(stored.levels.back().lookedUp);
   for (size_t i = 0; i + 1 < looked.levels.size(); ++i) CHECK(looked.levels[i].newStates == stored.levels[i].newStates);
   CHECK(looked.memoryBytes > 0);
+  // When the image keys (16,384 slots here) would pass the memory limit, children are keyed by
+  // orbit and looked up in the other side's index: the same answer, no image keys.
+  o.maxMemoryMB = 0.6;
+  SearchResult byOrbit = searchDecomposition(v, o);
+  CHECK_FALSE(byOrbit.found);
+  CHECK(byOrbit.stoppedBy == "depth");
+  CHECK(byOrbit.depthSearched == 5);
+  CHECK(byOrbit.lookupKeys == 0);
+  CHECK(byOrbit.statesExplored == 682);
+  CHECK(byOrbit.movesApplied == looked.movesApplied);
+  CHECK(byOrbit.levels.back().lookedUp);
+  // Stopped at the start of the last level (a request after level 4, as SIGINT sets it) and
+  // resumed: the image keys are made again and the result is the uninterrupted one.
+  const std::string file = (std::filesystem::temp_directory_path() / "hexdual_test_lookup.ckpt").string();
+  std::atomic<int> request{0};
+  o.maxMemoryMB = 4096;
+  o.chunk = 64;
+  o.checkpointFile = file;
+  o.request = &request;
+  o.progress = [&](const SearchLevel& l) {
+    if (l.side == 1 && l.depth == 2) request = 2;
+  };
+  SearchResult stopped = searchDecomposition(v, o);
+  CHECK(stopped.stoppedBy == "interrupted");
+  CHECK(stopped.message == "stopped on request during depth 5; checkpoint in " + file);
+  request = 0;
+  o.progress = nullptr;
+  o.checkpointFile.clear();
+  o.resumeFile = file;
+  SearchResult resumed = searchDecomposition(v, o);
+  CHECK_FALSE(resumed.found);
+  CHECK(resumed.depthSearched == 5);
+  CHECK(resumed.statesExplored == 682);
+  CHECK(resumed.lookupKeys == 6746);
+  CHECK(resumed.movesApplied == looked.movesApplied);
+  std::filesystem::remove(file);
+}
+
+TEST_CASE("reversible: a step without an inverse step (a ring glued to itself) is no step of a reversible sequence") {
+  // In a 3x3x3 grid: a chord push at the centre hex, then the ring collapse of its blind chord,
+  // whose side quads are glued to the ring itself: that collapse reports no inverse step.
+  Complex start = makeGrid(3, 3, 3);
+  applyStep(start, parseOpLog("v1;chordpush h13e3 h13f3 h16f5").steps.at(0));
+  Complex goal = start;
+  OpResult r = applyStep(goal, parseOpLog("v1;ringcollapse h27e0").steps.at(0));
+  REQUIRE_FALSE(r.inverse);
+  CHECK(r.noInverse == "a side quad of the ring was glued to the ring itself");
+  SearchProblem pb{"blind chord", start, goal, {}};  // no host: the whole grid is the region
+  SearchOptions o;
+  o.maxDepth = 1;
+  o.maxRegionHexes = 40;
+  o.ops = {OpKind::RingCollapse};
+  SearchResult any = searchDecomposition(pb, o);
+  REQUIRE(any.found);
+  CHECK(formatOpLog({1, any.steps}) == "v1;ringcollapse h27e0");
+  o.reversible = true;
+  SearchResult reversible = searchDecomposition(pb, o);
+  CHECK_FALSE(reversible.found);
+  CHECK(reversible.depthSearched == 1);
 }

@@ -48,7 +48,7 @@ const char* kUsage =
     "  hexdual flip verify --all [--json]        check every stored decomposition in host meshes\n"
     "  hexdual flip search NAME --max-depth D [--max-seconds S] [--max-states N] [--ops a,b]\n"
     "                   [--threads T] [--max-memory MB] [--max-region H] [--ring-split L] [--symmetry]\n"
-    "                   [--lookup-last] [--checkpoint FILE [--checkpoint-every S]] [--resume FILE]\n"
+    "                   [--lookup-last] [--reversible] [--checkpoint FILE [--checkpoint-every S]] [--resume FILE]\n"
     "                                            search atomic sequences for a flip (SIGUSR1: checkpoint\n"
     "                                            now; SIGINT/SIGTERM: checkpoint and stop)\n"
     "Reading (every command): .vtk (legacy 2.0-5.1), .vtu, .msh (2.2, 4.1), .mesh, .meshb, .hxd, any of\n"
@@ -58,7 +58,7 @@ struct Args {
   std::vector<std::string> positional;
   std::string output, ops, at, local, jsonDir, svgDir, checkpoint, resume;
   double checkpointEvery = 0;
-  bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false, lookupLast = false;
+  bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false, lookupLast = false, reversible = false;
   int sheet = -1, rings = 2;
   int maxDepth = 4;
   double maxSeconds = 60;
@@ -116,6 +116,8 @@ Args parseArgs(int argc, char** argv, int from) {
       a.symmetry = true;
     } else if (s == "--lookup-last") {
       a.lookupLast = true;
+    } else if (s == "--reversible") {
+      a.reversible = true;
     } else if (s == "--via-atomic") {
       a.viaAtomic = true;
     } else if (s == "--all") {
@@ -286,6 +288,7 @@ int runFlip(const Args& a) {
     o.maxRegionHexes = a.maxRegion;
     o.symmetry = a.symmetry;
     o.lookupLastLevel = a.lookupLast;
+    o.reversible = a.reversible;
     o.ringSplitMax = a.ringSplit;
     o.checkpointFile = a.checkpoint;
     o.checkpointEvery = a.checkpointEvery;

@@ -719,7 +719,8 @@ struct LevelPlan {
   bool last = false;
   int remaining = 0;
   uint16_t target = 0;
-  const FlatKeyMap* images = nullptr;  // a last level by lookup: the other side's image keys
+  bool lookup = false;                 // a last level by lookup: children only compared, never stored
+  const FlatKeyMap* images = nullptr;  // the other side's image keys (null: children keyed by orbit)
 };
 
 // Runs work(0..threads-1) on that many threads (the calling one when 1); rethrows the first error.
@@ -747,11 +748,16 @@ void onThreads(int threads, const std::function<void(int)>& work) {
 // symmetries, each mapped to its node: a state meets that side iff its plain key is here, so a
 // last level needs one identity encoding per child instead of one per symmetry. States are
 // replayed in node order (parents first, so consecutive nodes share their paths).
-FlatKeyMap imageKeys(const SearchContext& ctx, const Side& side, int threads) {
-  const size_t n = side.parent.size(), maps = ctx.symmetries.size() + 1;
+size_t imageSlots(const SearchContext& ctx, const Side& side) {
+  const size_t keys = side.parent.size() * (ctx.symmetries.size() + 1);
   size_t slots = 1024;
-  while (10 * (n * maps + 1) > 7 * slots) slots *= 2;
-  FlatKeyMap out(slots);
+  while (10 * (keys + 1) > 7 * slots) slots *= 2;  // FlatKeyMap's load limit: it never grows
+  return slots;
+}
+
+FlatKeyMap imageKeys(const SearchContext& ctx, const Side& side, int threads) {
+  const size_t n = side.parent.size();
+  FlatKeyMap out(imageSlots(ctx, side));
   std::vector<std::unique_ptr<Walker>> walkers;
   std::vector<RegionEncoder> enc(static_cast<size_t>(threads));
   for (int t = 0; t < threads; ++t) walkers.push_back(std::make_unique<Walker>(side, ctx.host, ctx.opt));
@@ -824,31 +830,20 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
         ++applied;
         continue;
       }
-      if (plan.images) {
-        // A last level by lookup: only a child whose plain key is an image of a state of the
-        // other side can meet it; that one is checked like any new state.
-        const bool hit = plan.images->find(enc.key(w.cx, ctx.isHost)) >= 0;
-        w.cx.undo(r.edits);
-        if (!hit) {
-          ++applied;
-          continue;
-        }
-        try {
-          r = applyStep(w.cx, ms[i]);
-        } catch (const Error&) {
-          continue;
-        }
-        ++applied;
-        const bool keep = (!fromGoal || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
-        const Key128 key = keep ? ctx.key(enc, w.cx) : Key128{};
-        w.cx.undo(r.edits);
-        if (!keep || other.index.find(key) < 0) continue;  // (a 128-bit collision: not a meeting)
-        out.push_back({int32_t(n), uint32_t(i), key, counts});
-        return;  // the merge stores it and meets there
+      // On a last level by lookup a child is only compared: it may meet the other side when its
+      // plain key is an image of one of its states (or, without images, its orbit key is stored there).
+      Key128 key{};
+      bool skip = false;
+      if (!plan.lookup) {
+        key = ctx.key(enc, w.cx);
+        skip = side.index.find(key) >= 0 || foundHere.find(key) >= 0;
+      } else if (plan.images) {
+        skip = plan.images->find(enc.key(w.cx, ctx.isHost)) < 0;
+      } else {
+        skip = other.index.find(ctx.key(enc, w.cx)) < 0;
       }
-      Key128 key = ctx.key(enc, w.cx);
       w.cx.undo(r.edits);
-      if (side.index.find(key) >= 0 || foundHere.find(key) >= 0) {
+      if (skip) {
         ++applied;
         continue;
       }
@@ -859,11 +854,14 @@ void expand(const SearchContext& ctx, const Side& side, const Side& other, bool 
       }
       ++applied;
       // From the goal side a move stands for its inverse step: a move without one (a ring collapse
-      // whose side quad was glued to the ring itself) is no step of a decomposition.
-      bool keep = (!fromGoal || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
+      // whose side quad was glued to the ring itself) is no step of a decomposition. With
+      // `reversible`, forward moves need one too.
+      bool keep = (!(fromGoal || ctx.opt.reversible) || r.inverse) && localityViolation(w.cx, ctx.hs).empty();
+      if (keep && plan.lookup) key = ctx.key(enc, w.cx);  // a meeting child's orbit key
       w.cx.undo(r.edits);
-      if (!keep) continue;
+      if (!keep || (plan.lookup && other.index.find(key) < 0)) continue;  // (lookup: a 128-bit collision)
       out.push_back({int32_t(n), uint32_t(i), key, counts});
+      if (plan.lookup) return;  // the merge stores it and meets there
       foundHere.insert(key, 0);
       if (other.index.find(key) >= 0) return;  // the two searches meet: the merge stops here
     }
@@ -885,7 +883,7 @@ std::string searchFingerprint(const SearchProblem& pb, const SearchOptions& o) {
   f += "; region " + std::to_string(o.maxRegionHexes) + "; ring split " + std::to_string(o.ringSplitMax) +
        "; symmetry " + std::to_string(o.symmetry) + "; prefilter " + std::to_string(o.prefilter) + "; count pruning " +
        std::to_string(o.countPruning) + "; chunk " + std::to_string(o.chunk) +
-       (o.lookupLastLevel ? "; last level by lookup" : "");
+       (o.lookupLastLevel ? "; last level by lookup" : "") + (o.reversible ? "; reversible" : "");
   return f;
 }
 
@@ -915,6 +913,22 @@ void getVector(std::istream& in, std::vector<T>& v) {
 
 const char* const kCheckpointMagic = "hexdual search checkpoint v1";
 
+// A completed level as format v1 stores it (40 bytes; a level by lookup is always the last one and
+// never saved, so SearchLevel::lookedUp needs no field).
+struct LevelRecord {
+  int32_t side, depth;
+  int64_t newStates, storedStates, movesApplied;
+  double seconds;
+};
+static_assert(sizeof(LevelRecord) == 40, "the v1 checkpoint layout");
+
+std::vector<LevelRecord> levelRecords(const std::vector<SearchLevel>& levels) {
+  std::vector<LevelRecord> out;
+  for (const SearchLevel& l : levels)
+    out.push_back({l.side, l.depth, l.newStates, l.storedStates, l.movesApplied, l.seconds});
+  return out;
+}
+
 void writeCheckpoint(const std::string& path, const std::string& fingerprint, const Side side[2],
                      const SearchResult& res, double seconds, const Resume& at) {
   const std::string tmp = path + ".tmp";
@@ -926,7 +940,7 @@ void writeCheckpoint(const std::string& path, const std::string& fingerprint, co
     put(out, res.movesApplied);
     put(out, res.prunedByCounts);
     put(out, seconds);
-    putVector(out, res.levels);
+    putVector(out, levelRecords(res.levels));
     for (int s = 0; s < 2; ++s) {
       const Side& d = side[s];
       put(out, int64_t(d.depth));
@@ -957,7 +971,11 @@ Resume readCheckpoint(const std::string& path, const std::string& fingerprint, S
   get(in, res.movesApplied);
   get(in, res.prunedByCounts);
   get(in, seconds);
-  getVector(in, res.levels);
+  std::vector<LevelRecord> levels;
+  getVector(in, levels);
+  res.levels.clear();
+  for (const LevelRecord& l : levels)
+    res.levels.push_back({l.side, l.depth, l.newStates, l.storedStates, l.movesApplied, l.seconds, false});
   for (int s = 0; s < 2; ++s) {
     Side& d = side[s];
     int64_t depth = 0;
@@ -1056,7 +1074,7 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
         } catch (const Error&) {
           continue;
         }
-        bool hit = ctx.key(enc, cur) == want && localityViolation(cur, hs).empty();
+        bool hit = ctx.key(enc, cur) == want && (!opt.reversible || r.inverse) && localityViolation(cur, hs).empty();
         cur.undo(r.edits);
         if (hit) {
           chosen = m;
@@ -1108,9 +1126,14 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     plan.last = side[0].depth + side[1].depth + 1 == opt.maxDepth;
     plan.target = other.counts[0];
     if (plan.last && opt.lookupLastLevel) {
-      images = imageKeys(ctx, other, threads);
-      res.lookupKeys = int64_t(images.size());
-      plan.images = &images;
+      plan.lookup = true;
+      // Beyond the memory limit, children are keyed by orbit and looked up in the other side's index.
+      const double imageBytes = double(imageSlots(ctx, other) * (sizeof(Key128) + sizeof(int32_t)));
+      if (double(memory()) + imageBytes <= opt.maxMemoryMB * 1048576.0) {
+        images = imageKeys(ctx, other, threads);
+        res.lookupKeys = int64_t(images.size());
+        plan.images = &images;
+      }
     }
     for (size_t b = firstChunk; b < me.levelEnd; b += chunk) {
       size_t e = std::min(me.levelEnd, b + chunk);
@@ -1167,7 +1190,8 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
         return finishStats();
       }
       // A hash set grows by doubling: stop before the next growth could pass the memory limit.
-      if (double(memory()) + double(me.index.memoryBytes()) * 2 > opt.maxMemoryMB * 1048576.0) {
+      // (A last level by lookup adds no states.)
+      if (double(memory()) + (plan.lookup ? 0.0 : double(me.index.memoryBytes()) * 2) > opt.maxMemoryMB * 1048576.0) {
         if (!opt.checkpointFile.empty()) save(s, e, levelStart, prunedThisLevel);
         res.stoppedBy = "memory";
         res.message = "stopped by the memory guard (--max-memory " + std::to_string(int64_t(opt.maxMemoryMB)) +
@@ -1181,9 +1205,9 @@ SearchResult searchDecomposition(const SearchProblem& pb, const SearchOptions& o
     ++me.depth;
     res.depthSearched = side[0].depth + side[1].depth;
     res.levels.push_back({s, me.depth, int64_t(me.levelEnd - me.levelBegin), stored(), res.movesApplied,
-                          secondsBefore + elapsed(), plan.images != nullptr});
+                          secondsBefore + elapsed(), plan.lookup});
     if (opt.progress) opt.progress(res.levels.back());
-    if (plan.images) break;  // the last level, by lookup: its children were not stored
+    if (plan.lookup) break;  // the last level, by lookup: its children were not stored
     if (me.levelBegin == me.levelEnd && prunedThisLevel > 0) {
       // Every new state was dropped by the count bound: no sequence of at most maxDepth steps.
       res.depthSearched = opt.maxDepth;

@@ -53,8 +53,12 @@ struct SearchOptions {
   // The last level by lookup: the other side's states are keyed once under every symmetry (the
   // identity alone without symmetry), and each child of the last level is keyed under the identity
   // only and looked up there; children are neither checked nor stored unless they meet. Same
-  // answers; far less memory, and about half the time per move with symmetry.
+  // answers; far less memory, and about half the time per move with symmetry. When the image keys
+  // (20 bytes a hash slot, load <= 0.7) would pass maxMemoryMB, children are keyed by orbit instead.
   bool lookupLastLevel = false;
+  // Every step must report its inverse step (so the sequence read backwards, step by step inverted,
+  // is a decomposition of the inverse flip). Goal-side moves always must.
+  bool reversible = false;
   std::function<void(const SearchLevel&)> progress;  // called after every completed level
   size_t chunk = 512;          // frontier states per chunk: merges, limits and checkpoints fall between chunks
   std::string checkpointFile;  // where checkpoints are written ("": none)

@@ -230,6 +230,27 @@ test('flips view: step through the 3-5e decomposition with before and after', as
   assert.equal((await state()).at, total - 1);
 });
 
+test('flips view: the 4-4 vertex flip (triple-hex push) steps through its 9 atomic steps', async () => {
+  await open('#view=flips');
+  await page.selectOption('#flip-name', '4-4v');
+  await page.click('#flip-load');
+  assert.equal((await state()).steps.length, 9);
+  assert.match(await page.locator('#flip-status').textContent(), /before side; 9 steps/);
+  for (let i = 1; i <= 9; i++) {
+    await page.keyboard.press('ArrowRight');
+    assert.equal((await state()).at, i);
+    if (i === 3) {
+      await settle();
+      await page.screenshot({ path: join(screenshotDir, 'explorer-flip-44v-step3.png') });
+    }
+  }
+  assert.match(await page.locator('#flip-status').textContent(), /step 9 of 9/);
+  assert.match(await page.locator('#flip-status').textContent(), /the after side/);
+  assert.equal(await page.evaluate(() => window.hexdual.store.get().mesh.counts.hexes), 8);
+  await settle();
+  await page.screenshot({ path: join(screenshotDir, 'explorer-flip-44v-after.png') });
+});
+
 test('phone width: the page stacks and still shows the mesh', async () => {
   await page.setViewportSize({ width: 375, height: 812 });
   await open('#mesh=grid:3x3x3&steps=v1;pillow%20h13f5&sel=s9&diag=9');
