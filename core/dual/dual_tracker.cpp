@@ -145,14 +145,19 @@ size_t DualTracker::PairCounts::find(uint64_t key) const {
 }
 
 void DualTracker::PairCounts::add(int32_t a, int32_t b, int32_t n) {
-  if (2 * (used_ + 1) > keys_.size()) {
+  if (2 * (used_ + 1) > keys_.size()) {  // rehashed without the zero counts (pairs of labels gone)
     std::vector<uint64_t> keys = std::move(keys_);
     std::vector<int32_t> counts = std::move(counts_);
-    keys_.assign(std::max<size_t>(64, 2 * keys.size()), kNoKey);
+    size_t live = 0;
+    for (size_t i = 0; i < keys.size(); ++i) live += keys[i] != kNoKey && counts[i] != 0;
+    size_t size = 64;
+    while (size < 4 * (live + 1)) size *= 2;
+    keys_.assign(size, kNoKey);
     shift_ = 64 - std::countr_zero(keys_.size());
     counts_.assign(keys_.size(), 0);
+    used_ = live;
     for (size_t i = 0; i < keys.size(); ++i)
-      if (keys[i] != kNoKey) {
+      if (keys[i] != kNoKey && counts[i] != 0) {
         const size_t j = find(keys[i]);
         keys_[j] = keys[i];
         counts_[j] = counts[i];
