@@ -21,6 +21,7 @@ size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
 SlotList& SlotList::operator=(std::vector<Slot> sorted) {
   list_ = std::move(sorted);
   runs_.clear();
+  adds_.clear();
   gone_.clear();
   size_ = list_.size();
   return *this;
@@ -29,30 +30,39 @@ SlotList& SlotList::operator=(std::vector<Slot> sorted) {
 void SlotList::clear() {
   list_.clear();
   runs_.clear();
+  adds_.clear();
   gone_.clear();
   size_ = 0;
 }
 
 namespace {
-// Pending runs and removals kept before a list is merged without being read: few runs, and
-// removals up to an eighth of the list, so that merging them stays linear in the list.
+// Pending runs, additions and removals kept before a list is merged without being read: few runs,
+// and additions or removals up to an eighth of the list, so that merging them stays linear in it.
 constexpr size_t kMaxRuns = 16;
-bool tooManyGone(size_t gone, size_t size) { return gone > 64 + size / 8; }
+bool tooMany(size_t pending, size_t size) { return pending > 64 + size / 8; }
+
+// Merges sorted `run` into sorted `base` in place, from the back (no second buffer).
+void mergeInto(std::vector<Slot>& base, const std::vector<Slot>& run) {
+  size_t i = base.size(), j = run.size(), k = i + j;
+  base.resize(k);
+  while (j > 0) base[--k] = i > 0 && run[j - 1] < base[i - 1] ? base[--i] : run[--j];
+}
 }  // namespace
 
 void SlotList::add(std::vector<Slot> sorted) {
   if (sorted.empty()) return;
   size_ += sorted.size();
-  if (list_.empty() && runs_.empty() && gone_.empty())
+  if (list_.empty() && runs_.empty() && adds_.empty() && gone_.empty()) {
     list_ = std::move(sorted);
-  else
-    runs_.push_back(std::move(sorted));
-  if (runs_.size() > kMaxRuns) settle();
+    return;
+  }
+  mergeInto(adds_, sorted);
+  if (tooMany(adds_.size(), size_)) settle();
 }
 
 void SlotList::absorb(SlotList&& other) {
   if (other.size_ == 0 && other.gone_.empty()) return;
-  if (size_ == 0 && runs_.empty() && gone_.empty()) {
+  if (size_ == 0 && runs_.empty() && adds_.empty() && gone_.empty()) {
     *this = std::move(other);
     other.clear();
     return;
@@ -60,23 +70,22 @@ void SlotList::absorb(SlotList&& other) {
   size_ += other.size_;
   if (!other.list_.empty()) runs_.push_back(std::move(other.list_));
   for (auto& r : other.runs_) runs_.push_back(std::move(r));
+  if (!other.adds_.empty()) runs_.push_back(std::move(other.adds_));
   gone_.insert(gone_.end(), other.gone_.begin(), other.gone_.end());
   other.clear();
-  if (runs_.size() > kMaxRuns || tooManyGone(gone_.size(), size_)) settle();
+  if (runs_.size() > kMaxRuns || tooMany(gone_.size(), size_)) settle();
 }
 
 void SlotList::remove(std::vector<Slot> listed) {
   if (listed.empty()) return;
   size_ -= listed.size();
-  if (gone_.empty())
-    gone_ = std::move(listed);
-  else
-    gone_.insert(gone_.end(), listed.begin(), listed.end());
-  if (tooManyGone(gone_.size(), size_)) settle();
+  gone_.insert(gone_.end(), listed.begin(), listed.end());
+  if (tooMany(gone_.size(), size_)) settle();
 }
 
 // Merges the pending runs into the longest list (the smaller ones first, then once into it from
-// the back, in place) and drops the pending removals in one pass (one listed copy per removal).
+// the back, in place), then the pending additions, and drops the pending removals in one pass
+// (one listed copy per removal). The pending buffers keep their capacity.
 void SlotList::settle() const {
   if (!runs_.empty()) {
     runs_.push_back(std::move(list_));
@@ -91,11 +100,13 @@ void SlotList::settle() const {
       std::merge(rest.begin(), rest.end(), runs_[r].begin(), runs_[r].end(), both.begin());
       rest = std::move(both);
     }
-    size_t i = base.size(), j = rest.size(), k = i + j;
-    base.resize(k);
-    while (j > 0) base[--k] = i > 0 && rest[j - 1] < base[i - 1] ? base[--i] : rest[--j];
+    mergeInto(base, rest);
     list_ = std::move(base);
     runs_.clear();
+  }
+  if (!adds_.empty()) {
+    mergeInto(list_, adds_);
+    adds_.clear();
   }
   if (!gone_.empty()) {
     std::sort(gone_.begin(), gone_.end());

@@ -28,7 +28,7 @@ class SlotList {
   SlotList(std::vector<Slot> sorted) : list_(std::move(sorted)), size_(list_.size()) {}
   SlotList& operator=(std::vector<Slot> sorted);
   const std::vector<Slot>& get() const {
-    if (!runs_.empty() || !gone_.empty()) settle();
+    if (!runs_.empty() || !adds_.empty() || !gone_.empty()) settle();
     return list_;
   }
   operator const std::vector<Slot>&() const { return get(); }
@@ -56,7 +56,8 @@ class SlotList {
  private:
   void settle() const;
   mutable std::vector<Slot> list_;
-  mutable std::vector<std::vector<Slot>> runs_;  // sorted runs waiting to join
+  mutable std::vector<std::vector<Slot>> runs_;  // sorted runs (merged lists) waiting to join
+  mutable std::vector<Slot> adds_;               // sorted slots waiting to join (a few per edit)
   mutable std::vector<Slot> gone_;               // listed slots waiting to leave
   size_t size_ = 0;
 };

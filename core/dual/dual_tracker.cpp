@@ -190,10 +190,19 @@ void DualTracker::countPair(int32_t la, int32_t lb, int32_t n) {
 }
 
 int32_t DualTracker::newLabel(int32_t id) {
-  const int32_t l = int32_t(dual_.labelSheet.size());
-  dual_.labelSheet.push_back(id);
-  labelSlots_.push_back(0);
-  labelFlip_.push_back(0);
+  int32_t l;
+  if (!freeLabels_.empty()) {
+    l = freeLabels_.back();
+    freeLabels_.pop_back();
+    dual_.labelSheet[size_t(l)] = id;
+    labelSlots_[size_t(l)] = 0;
+    labelFlip_[size_t(l)] = 0;
+  } else {
+    l = int32_t(dual_.labelSheet.size());
+    dual_.labelSheet.push_back(id);
+    labelSlots_.push_back(0);
+    labelFlip_.push_back(0);
+  }
   if (labels_.size() <= size_t(id)) labels_.resize(size_t(id) + 1);
   labels_[size_t(id)].push_back(l);
   return l;
@@ -218,7 +227,12 @@ void DualTracker::setSign(Slot t, int sign) {
 
 void DualTracker::pruneLabels(int32_t id) {
   auto& ls = labels_[size_t(id)];
-  ls.erase(std::remove_if(ls.begin(), ls.end(), [&](int32_t l) { return labelSlots_[size_t(l)] == 0; }), ls.end());
+  auto gone = [&](int32_t l) {
+    if (labelSlots_[size_t(l)] != 0) return false;
+    freeLabels_.push_back(l);
+    return true;
+  };
+  ls.erase(std::remove_if(ls.begin(), ls.end(), gone), ls.end());
 }
 
 // Sheet x joins sheet `keep` (flipped when `flip`) without writing its slots: its labels are
@@ -345,7 +359,10 @@ void DualTracker::releaseRetiredTail() {
   while (!dual_.sheets.empty() && !dual_.sheets.back().alive) {
     dual_.sheets.pop_back();
     selfPairs_.pop_back();
-    if (labels_.size() > dual_.sheets.size()) labels_.resize(dual_.sheets.size());
+    if (labels_.size() > dual_.sheets.size()) {
+      for (int32_t l : labels_.back()) freeLabels_.push_back(l);  // carried by no slot: the sheet is retired
+      labels_.pop_back();
+    }
   }
   while (!dual_.chords.empty() && !dual_.chords.back().alive) dual_.chords.pop_back();
 }
@@ -1002,7 +1019,10 @@ void DualTracker::updateSheetsByFlood(const Complex& cx, const std::vector<HexId
   recount.erase(std::unique(recount.begin(), recount.end()), recount.end());
   countSelfHexes(recount, -1);
   for (int32_t id : old) {
-    for (int32_t l : labels_[size_t(id)]) labelSlots_[size_t(l)] = 0;
+    for (int32_t l : labels_[size_t(id)]) {
+      labelSlots_[size_t(l)] = 0;
+      freeLabels_.push_back(l);  // every slot carrying it is parked below, before any new label
+    }
     labels_[size_t(id)].clear();
   }
   auto labelOf = [&](int id) {

@@ -77,6 +77,7 @@ class DualTracker {
   std::vector<std::vector<int32_t>> labels_;  // per sheet id: the labels naming it
   std::vector<int32_t> labelSlots_;           // per label: slots carrying it
   std::vector<uint8_t> labelFlip_;            // per label: its slots' stored orientations are flipped
+  std::vector<int32_t> freeLabels_;           // labels no slot carries, handed out again
   // Per sheet id: (hex, pair of its axes) with both slots on the sheet; a sheet self-intersects when
   // it has one. The same pairs across two sheets are counted per pair of labels (a merge reads them).
   std::vector<int32_t> selfPairs_;
