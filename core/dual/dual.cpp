@@ -513,7 +513,7 @@ void validateDual(const Complex& cx, const Dual& d) {
   for (size_t i = 0; i < d.sheets.size(); ++i)
     for (Slot s : d.sheets[i].slots) {
       mark(seenSheet, s, "sheet", d.sheets[i].id);
-      if (d.sheetAt(s.hex, s.axis) != d.sheets[i].id) fail(slotName(s) + " is in sheet " + std::to_string(d.sheets[i].id) + " but sheetOf says otherwise");
+      if (d.sheetAt(s.hex, s.axis) != d.sheets[i].id) fail(slotName(s) + " is in sheet " + std::to_string(d.sheets[i].id) + " but its label names another");
     }
   for (size_t i = 0; i < d.chords.size(); ++i) {
     const Chord& ch = d.chords[i];

@@ -144,9 +144,9 @@ struct SheetStats {
 class SheetFlooder {
  public:
   void reserve(size_t hexCapacity);
-  // Floods the sheet through `start`, labelling unlabelled slots (-1 in the flat per-slot array
-  // `sheetOf`, 3 per hex) with `id`; appends the slots to `out` and the labels they had (all
-  // negative) to `previous` when given.
+  // Floods the sheet through `start`, labelling unlabelled slots (negative in the flat per-slot
+  // label array `sheetOf`, 3 per hex: Dual::sheetLabel) with `id`; appends the slots to `out` and
+  // the labels they had (all negative) to `previous` when given.
   SheetStats flood(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, std::vector<Slot>* out,
                    std::vector<int32_t>* previous = nullptr);
   // Resets the edge and loop marks of these slots (their orientations stay: they persist).
@@ -194,7 +194,7 @@ void compareDuals(const Complex& cx, const Dual& a, const Dual& b);
 
 namespace hexdual {
 // Checks that a Dual describes the complex: every live slot is listed exactly once in the sheet
-// and chord named by sheetOf/chordOf, slots glued across parallel (sheet) or normal (chord) quads
+// and chord named by sheetAt/chordOf, slots glued across parallel (sheet) or normal (chord) quads
 // share a sheet or chord, and chords list consecutive glued slots. Throws Error naming the first
 // inconsistency. Used after incremental updates in debug builds and tests.
 void validateDual(const Complex& cx, const Dual& dual);
