@@ -66,7 +66,7 @@ struct Sheet {
   int id = -1;
   bool alive = true;  // false for an id retired by an operation (DualTracker)
   SlotList slots;     // sorted; a self-intersecting sheet has a hex twice
-  int64_t euler = 0;        // of the sheet's mid-surface
+  int64_t euler = 0;  // of the sheet's mid-surface
   int boundaryLoops = 0;
   bool orientable = true;
   bool selfIntersecting = false;
@@ -108,7 +108,7 @@ int mapAxisAcross(const Complex& cx, HexId h, int face, int axis);
 struct DualExtras {
   std::vector<int8_t> slotSigns;
   std::vector<uint16_t> edgeMarks;
-  std::vector<int8_t> slotShares;   // per slot: slotShare() below
+  std::vector<int8_t> slotShares;    // per slot: slotShare() below
   std::vector<int32_t> chordPlaces;  // per slot: its place in its chord's slot list
 };
 constexpr uint16_t kEdgeNearBoundary = uint16_t(1u << 15);

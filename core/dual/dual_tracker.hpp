@@ -92,17 +92,17 @@ class DualTracker {
     size_t used_ = 0;
     int shift_ = 58;
   } pairs_;
-  SheetFlooder flooder_;            // its signs() persist: one orientation per orientable sheet
+  SheetFlooder flooder_;  // its signs() persist: one orientation per orientable sheet
   // Per hex: bit e set when (h, e) is its edge's smallest incidence; kNearBoundary when any of its
   // 12 edges reaches the boundary.
   std::vector<uint16_t> edgeMarks_;
   // Per slot: twice its share of its sheet's Euler characteristic (2 - sides - boundary sides +
   // 2 x primal edges it holds the smallest incidence of); a sheet's Euler characteristic is half the sum.
   std::vector<int8_t> share_;
-  std::vector<int32_t> front_;    // per slot: lockstep front + 1 that reached it (0 outside an update)
-  std::vector<uint16_t> walked_;  // per hex: edges walked by the current refreshShares (0 outside it)
+  std::vector<int32_t> front_;     // per slot: lockstep front + 1 that reached it (0 outside an update)
+  std::vector<uint16_t> walked_;   // per hex: edges walked by the current refreshShares (0 outside it)
   std::vector<int32_t> chordPos_;  // per slot: its place in its chord's slot list
-  std::vector<int64_t> delta_;    // per sheet id: change of twice its Euler characteristic (0 outside an update)
+  std::vector<int64_t> delta_;     // per sheet id: change of twice its Euler characteristic (0 outside an update)
   size_t slotsTouched_ = 0, sheetSlotsTouched_ = 0, mergedLabels_ = 0;
   bool reflooded_ = false;
 };
