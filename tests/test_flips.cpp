@@ -173,21 +173,20 @@ TEST_CASE("every stored decomposition is verified at three or more places") {
     }
     CHECK(places >= 3);
   }
-  CHECK(found == 10);  // all six flip classes and their inverses (4-4v and 4-4m are their own)
+  CHECK(found == 11);  // the ten flips (six classes and inverses; 4-4v, 4-4m their own) and the triple-chord push
 }
 
-TEST_CASE("the 4-4 vertex flip (triple-hex push) is 9 atomic steps: a 1-7 flip, ring split and collapses, ...") {
-  // TK03 §4.5.2 left it open ("most likely involving hex push and some form of ring collapse").
-  const StoredDecomposition* d = storedFor("4-4v");
+TEST_CASE("the triple-chord push is 8 atomic steps: two hex pushes, collapses and splits, a chord pull") {
+  // TK03 §4.5.1 left its decomposition open; verified here in the 3x3x3 grid and in four more places.
+  const StoredDecomposition* d = storedFor("tripleChordPush");
   REQUIRE(d != nullptr);
   REQUIRE(d->found);
-  REQUIRE(d->steps.size() == 9);
+  REQUIRE(d->steps.size() == 8);
   std::vector<std::string> kinds;
   for (const OpStep& st : d->steps) kinds.push_back(opName(st.op));
-  CHECK(kinds == std::vector<std::string>{"pillow", "hexpush", "ringsplit", "ringcollapse", "ringcollapse", "chordpush",
-                                          "facecollapse", "facesplit", "hexpull"});
-  // Hex counts along the way: the region peaks at the search's cap of 16 (host: 4 facets).
-  SearchProblem pb = problemFor("4-4v");
+  CHECK(kinds == std::vector<std::string>{"hexpush", "hexpush", "facecollapse", "ringcollapse", "facesplit", "facecollapse",
+                                          "facesplit", "chordpull"});
+  SearchProblem pb = problemFor("tripleChordPush");
   Complex cx = pb.start;
   std::vector<int64_t> hexes{cx.numHexes()};
   for (const OpStep& st : d->steps) {
@@ -195,15 +194,51 @@ TEST_CASE("the 4-4 vertex flip (triple-hex push) is 9 atomic steps: a 1-7 flip, 
     cx.validate();
     hexes.push_back(cx.numHexes());
   }
-  CHECK(hexes == std::vector<int64_t>{8, 10, 14, 20, 14, 10, 12, 12, 12, 8});
+  CHECK(hexes == std::vector<int64_t>{27, 31, 35, 35, 31, 31, 31, 31, 29});
+  verifyDecomposition(pb, d->steps);
+  std::vector<std::string> places;
+  for (const Embedding& e : flipEmbeddings("tripleChordPush")) {
+    CAPTURE(e.name);
+    verifyInEmbedding(pb, d->steps, e);
+    places.push_back(e.name);
+  }
+  CHECK(places == std::vector<std::string>{"3x3x3 grid, host pillowed at h26f0", "4x4x4 grid at vertex (2,2,2)",
+                                           "5x5x5 grid at vertex (2,3,2)", "8x3x3 O-grid at h6"});
+  // A sequence that does something else is refused: without its last step (the chord pull) the
+  // result has two more hexes than any triple-chord push.
+  std::vector<OpStep> shorter(d->steps.begin(), d->steps.end() - 1);
+  CHECK_THROWS_WITH(verifyInEmbedding(pb, shorter, flipEmbeddings("tripleChordPush")[1]),
+                    "verify tripleChordPush in 4x4x4 grid at vertex (2,2,2): the result is not isomorphic to the operation applied directly");
+}
+
+TEST_CASE("the 4-4 vertex flip (triple-hex push) is 8 atomic steps: hex pushes and pulls, ring splits and collapses") {
+  // TK03 §4.5.2 left it open ("most likely involving hex push and some form of ring collapse").
+  const StoredDecomposition* d = storedFor("4-4v");
+  REQUIRE(d != nullptr);
+  REQUIRE(d->found);
+  REQUIRE(d->steps.size() == 8);
+  std::vector<std::string> kinds;
+  for (const OpStep& st : d->steps) kinds.push_back(opName(st.op));
+  CHECK(kinds == std::vector<std::string>{"hexpush", "ringsplit", "ringsplit", "ringsplit", "ringcollapse", "hexpull",
+                                          "ringcollapse", "hexpull"});
+  // Hex counts along the way (host: 4 facets; the region peaks at 22 hexes), and every step
+  // reports an inverse step that gives back the complex before it.
+  SearchProblem pb = problemFor("4-4v");
+  Complex cx = pb.start;
+  std::vector<int64_t> hexes{cx.numHexes()};
+  for (const OpStep& st : d->steps) {
+    CAPTURE(formatOpStep(st));
+    Complex before = cx;
+    OpResult r = applyStep(cx, st);
+    cx.validate();
+    hexes.push_back(cx.numHexes());
+    REQUIRE(r.inverse);
+    Complex back = cx;
+    applyStep(back, *r.inverse);
+    CHECK(isomorphic(back, before, true));
+  }
+  CHECK(hexes == std::vector<int64_t>{8, 12, 16, 20, 26, 20, 16, 12, 8});
   verifyDecomposition(pb, d->steps);  // local steps, and the goal with the region boundary fixed
-  // The first two steps are the paper's traditional pillow: the 1-7 flip of facet 0.
-  Complex seven = pb.start;
-  applyStep(seven, d->steps[0]);
-  applyStep(seven, d->steps[1]);
-  Complex direct = pb.start;
-  flip(direct, "1-7", {0});
-  CHECK(isomorphic(seven, direct, false));
 }
 
 TEST_CASE("search finds the paper's decompositions: 2-6 is one hex push, 1-7 is pillow + hex push") {

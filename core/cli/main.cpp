@@ -252,7 +252,7 @@ int runFlip(const Args& a) {
       try {
         verifyDecomposition(pb, d.steps);
         places.push_back("search problem");
-        if (d.problem.find('/') == std::string::npos && d.problem != "tripleChordPush")
+        if (d.problem.find('/') == std::string::npos)
           for (const Embedding& e : flipEmbeddings(d.problem)) {
             verifyInEmbedding(pb, d.steps, e);
             places.push_back(e.name);

@@ -1248,6 +1248,37 @@ namespace {
 
 // The region of `cx` as a complex whose vertex ids are renamed: ids in `rename` take their mapped
 // value (boundary vertices shared with the problem), all others get fresh ids from `fresh` on.
+// The vertex shared by all of `hexes` (the centre of a triple-chord push's 8 hexes), or -1.
+VertexId commonVertex(const Complex& cx, const std::vector<HexId>& hexes) {
+  for (VertexId v : cx.hexVertices(hexes.at(0))) {
+    bool all = true;
+    for (HexId h : hexes) {
+      auto vs = cx.hexVertices(h);
+      all = all && std::find(vs.begin(), vs.end(), v) != vs.end();
+    }
+    if (all) return v;
+  }
+  return -1;
+}
+
+// Every triple-chord push at vertex v (TK03 §4.5.1): one per hex at v, pulling apart its three
+// faces at the corner on v. The 8 hexes around v are symmetric, so a placed sequence is checked
+// against all of them: it must give one.
+std::vector<Complex> tripleChordPushesAt(const Complex& cx, const std::vector<HexId>& hexes, VertexId v) {
+  std::vector<Complex> out;
+  for (HexId h : hexes)
+    for (int c = 0; c < 8; ++c) {
+      if (cx.vertex(h, c) != v) continue;
+      std::vector<QuadSide> q;
+      for (int f = 0; f < 6; ++f)
+        for (int p = 0; p < 4; ++p)
+          if (kFaceCorners[size_t(f)][size_t(p)] == c) q.push_back({h, f});
+      out.push_back(cx);
+      tripleChordPush(out.back(), h, c, q.at(0), q.at(1), q.at(2));
+    }
+  return out;
+}
+
 Complex renamedRegion(const Complex& cx, const std::vector<HexId>& region, const std::map<VertexId, VertexId>& rename,
                       VertexId fresh, std::vector<HexId>& regionOrder) {
   std::map<VertexId, VertexId> ids = rename;
@@ -1291,7 +1322,31 @@ CanonicalLabelling labelRegion(const Complex& cx, const std::vector<HexId>& host
 
 }  // namespace
 
+// Places for the triple-chord push: the 8 hexes around an interior vertex of other grids, an
+// O-grid, and the problem's grid with its host pillowed (the problem's own place touches the mesh
+// boundary, and so do some of these).
+std::vector<Embedding> tripleChordPushEmbeddings() {
+  auto block = [](auto id, int i0, int j0, int k0) {
+    std::vector<HexId> out;
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) out.push_back(id(i0 + i, j0 + j, k0 + k));
+    return out;
+  };
+  auto gridId = [](int n) { return [n](int i, int j, int k) { return HexId(i + n * (j + n * k)); }; };
+  auto rid = [](int t, int s, int k) { return HexId((k * 8 + t) * 3 + s); };
+  std::vector<Embedding> out;
+  Complex pillowed = makeGrid(3, 3, 3);
+  pillow(pillowed, {26, 0});
+  out.push_back({"3x3x3 grid, host pillowed at h26f0", pillowed, block(gridId(3), 0, 0, 0)});
+  out.push_back({"4x4x4 grid at vertex (2,2,2)", makeGrid(4, 4, 4), block(gridId(4), 1, 1, 1)});
+  out.push_back({"5x5x5 grid at vertex (2,3,2)", makeGrid(5, 5, 5), block(gridId(5), 1, 2, 1)});
+  out.push_back({"8x3x3 O-grid at h" + std::to_string(rid(2, 0, 0)), makeRing(8, 3, 3), block(rid, 2, 0, 0)});
+  return out;
+}
+
 std::vector<Embedding> flipEmbeddings(const std::string& name) {
+  if (name == "tripleChordPush") return tripleChordPushEmbeddings();
   const FlipClass& fc = flipClass(name);
   std::vector<Embedding> out;
   auto before = facetsOf(fc.before), hostFacets = facetsOf(uint8_t(~fc.before));
@@ -1375,6 +1430,9 @@ std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector
   std::map<VertexId, VertexId> idP, toProblemHost;
   for (HexId h : hostP)
     for (VertexId v : pb.start.hexVertices(h)) idP[v] = v;
+  // (and so do region vertices on the mesh boundary, which the embedding names through toProblem)
+  for (HexId h : regionP)
+    for (VertexId v : pb.start.hexVertices(h)) idP[v] = v;
   for (HexId h : where.before)  // the before side's vertices, on the mesh boundary or not
     for (VertexId v : where.mesh.hexVertices(h)) toProblemHost[v] = toProblem[v];
   const VertexId fresh = std::max(pb.start.vertexCapacity(), where.mesh.vertexCapacity()) + 64;
@@ -1444,8 +1502,14 @@ std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector
 
 void verifyInEmbedding(const SearchProblem& pb, const std::vector<OpStep>& steps, const Embedding& where) {
   const std::string what = "verify " + pb.name + " in " + where.name;
-  Complex direct = where.mesh, viaSteps = where.mesh;
-  flip(direct, pb.name, where.before);
+  Complex viaSteps = where.mesh;
+  std::vector<Complex> directs;  // the operation applied directly there (any one of them must match)
+  if (pb.name == "tripleChordPush") {
+    directs = tripleChordPushesAt(where.mesh, where.before, commonVertex(where.mesh, where.before));
+  } else {
+    directs = {where.mesh};
+    flip(directs[0], pb.name, where.before);
+  }
   try {
     replayInEmbedding(pb, steps, viaSteps, where.before, where.name);
   } catch (const Error& e) {
@@ -1458,9 +1522,14 @@ void verifyInEmbedding(const SearchProblem& pb, const std::vector<OpStep>& steps
   std::map<VertexId, VertexId> idE;
   for (HexId h : where.mesh.hexes())
     for (VertexId v : where.mesh.hexVertices(h)) idE[v] = v;
-  const VertexId fresh = std::max(direct.vertexCapacity(), viaSteps.vertexCapacity()) + 64;
-  if (labelRegion(viaSteps, hostE, idE, fresh).form != labelRegion(direct, hostE, idE, fresh).form)
-    throw Error(what + ": the result is not isomorphic to the flip applied directly");
+  VertexId fresh = viaSteps.vertexCapacity();
+  for (const Complex& d : directs) fresh = std::max(fresh, d.vertexCapacity());
+  fresh += 64;
+  const auto form = labelRegion(viaSteps, hostE, idE, fresh).form;
+  for (const Complex& d : directs)
+    if (labelRegion(d, hostE, idE, fresh).form == form) return;
+  throw Error(what + ": the result is not isomorphic to the " +
+              (pb.name == "tripleChordPush" ? "operation" : std::string("flip")) + " applied directly");
 }
 
 }  // namespace hexdual

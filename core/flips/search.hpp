@@ -102,11 +102,13 @@ struct Embedding {
 };
 // Host meshes for a flip: the closed 4-cube boundary with its host part changed in three ways
 // (as is, with a pillow between two host hexes, with a hex push between two host hexes), and,
-// where the before side occurs in them, places in a 5x5x5 grid and an 8x3x3 O-grid.
+// where the before side occurs in them, places in a 5x5x5 grid and an 8x3x3 O-grid. For
+// "tripleChordPush": the 8 hexes around a vertex of 4x4x4 and 5x5x5 grids and an 8x3x3 O-grid,
+// and the problem's 3x3x3 grid with a host quad pillowed.
 std::vector<Embedding> flipEmbeddings(const std::string& flipName);
 // Replays the problem's steps inside the embedding (translated step by step through the
 // canonical labellings of the two regions) and checks the result against the flip applied
-// directly there, every step local, region boundary fixed. Throws Error naming what failed.
+// directly there (the triple-chord push: at one of the 8 hexes around the place's vertex), every step local, region boundary fixed. Throws Error naming what failed.
 void verifyInEmbedding(const SearchProblem& problem, const std::vector<OpStep>& steps, const Embedding& where);
 // Applies the problem's steps to `mesh`, where `beforeHexes` form the problem's before side;
 // returns the steps as applied there (ids of `mesh`). Throws Error when a step cannot be placed.

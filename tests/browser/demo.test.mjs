@@ -230,25 +230,40 @@ test('flips view: step through the 3-5e decomposition with before and after', as
   assert.equal((await state()).at, total - 1);
 });
 
-test('flips view: the 4-4 vertex flip (triple-hex push) steps through its 9 atomic steps', async () => {
+test('flips view: the 4-4 vertex flip (triple-hex push) steps through its 8 atomic steps', async () => {
   await open('#view=flips');
   await page.selectOption('#flip-name', '4-4v');
   await page.click('#flip-load');
-  assert.equal((await state()).steps.length, 9);
-  assert.match(await page.locator('#flip-status').textContent(), /before side; 9 steps/);
-  for (let i = 1; i <= 9; i++) {
+  assert.equal((await state()).steps.length, 8);
+  assert.match(await page.locator('#flip-status').textContent(), /before side; 8 steps/);
+  for (let i = 1; i <= 8; i++) {
     await page.keyboard.press('ArrowRight');
     assert.equal((await state()).at, i);
-    if (i === 3) {
+    if (i === 4) {
       await settle();
-      await page.screenshot({ path: join(screenshotDir, 'explorer-flip-44v-step3.png') });
+      await page.screenshot({ path: join(screenshotDir, 'explorer-flip-44v-step4.png') });
     }
   }
-  assert.match(await page.locator('#flip-status').textContent(), /step 9 of 9/);
+  assert.match(await page.locator('#flip-status').textContent(), /step 8 of 8/);
   assert.match(await page.locator('#flip-status').textContent(), /the after side/);
   assert.equal(await page.evaluate(() => window.hexdual.store.get().mesh.counts.hexes), 8);
   await settle();
   await page.screenshot({ path: join(screenshotDir, 'explorer-flip-44v-after.png') });
+});
+
+test('the triple-chord push decomposition: the tutorial link replays its 8 steps in the explorer', async () => {
+  const html = readFileSync(new URL('../../web/tutorials/flips.html', import.meta.url), 'utf8');
+  const href = html.match(/id="tcp-explorer" href="\.\.\/index\.html(#[^"]+)"/)[1].replace(/&amp;/g, '&');
+  await open(href);
+  const s = await state();
+  assert.ok(!s.error, s.error);
+  assert.deepEqual(s.steps, ['hexpush h4f5', 'hexpush h29f2', 'facecollapse h1e11 h5f0 h34f2', 'ringcollapse h30e4',
+    'facesplit h28f4 h36f4', 'facecollapse h7e2 h27f5 h35f5', 'facesplit h27f1 h5f0', 'chordpull h35']);
+  assert.equal(s.at, 8);
+  // 27 hexes + the triple-chord push's 2; (V, E, F, H) change by (+2, +6, +6, +2).
+  assert.deepEqual(await shownCounts(), { ...(await shownCounts()), vertices: 66, edges: 150, quads: 114, hexes: 29 });
+  await settle();
+  await page.screenshot({ path: join(screenshotDir, 'explorer-triple-chord-push.png') });
 });
 
 test('phone width: the page stacks and still shows the mesh', async () => {

@@ -230,8 +230,8 @@ test('apply: operation steps from JS, with errors that leave the mesh unchanged'
 test('flips: the 4-cube and the stored decompositions replay in wasm', async () => {
   const all = flips();
   assert.deepEqual(all.map((f) => f.name), ['1-7', '2-6', '3-5c', '3-5e', '4-4m', '4-4v', '5-3c', '5-3e', '6-2', '7-1']);
-  // The 4-4 vertex flip (triple-hex push): 9 atomic steps, replayed below like the others.
-  assert.equal(all.find((f) => f.name === '4-4v').steps.length, 9);
+  // The 4-4 vertex flip (triple-hex push): 8 atomic steps, replayed below like the others.
+  assert.equal(all.find((f) => f.name === '4-4v').steps.length, 8);
   assert.ok(all.every((f) => Array.isArray(f.steps)));
   assert.deepEqual(all.find((f) => f.name === '1-7').steps, ['pillow h0f1', 'hexpush h0f1']);
   for (const f of all.filter((x) => x.steps)) {
