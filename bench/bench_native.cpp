@@ -188,7 +188,7 @@ static int benchThroughput(int n, int steps) {
 static int benchLayout(int n, int reps) {
   Complex cx = makeGrid(n, n, 2);
   Dual d = extractDual(cx);
-  int sheet = d.sheetOf[0][2];
+  int sheet = d.sheetAt(0, 2);
   std::vector<double> t;
   size_t crossings = 0;
   for (int r = 0; r < reps; ++r) {

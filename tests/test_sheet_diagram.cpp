@@ -39,7 +39,7 @@ TEST_CASE("sheet diagrams of grids: disks, every slot once, chords meet only at 
   // The x=0 layer of a 3x3x3 grid: 9 crossings, 6 chords (3 each way), 12 boundary points.
   Complex g = makeGrid(3, 3, 3);
   Dual d = extractDual(g);
-  SheetDiagram dg = layoutSheet(g, d, d.sheetOf[0][0]);
+  SheetDiagram dg = layoutSheet(g, d, d.sheetAt(0, 0));
   CHECK(dg.crossings.size() == 9);
   CHECK(dg.chords.size() == 6);
   CHECK(dg.boundary.size() == 12);
@@ -104,7 +104,7 @@ TEST_CASE("sheet diagrams after chord push, hex push, the 1-7 flip, and in every
 TEST_CASE("local diagrams: k rings of chosen hexes inside a dotted circle") {
   Complex g = makeGrid(5, 5, 5);
   Dual d = extractDual(g);
-  int sheet = d.sheetOf[62][2];
+  int sheet = d.sheetAt(62, 2);
   SheetDiagram one = layoutLocal(g, d, sheet, {62}, 1);
   CHECK(one.local);
   CHECK(one.method == "local");

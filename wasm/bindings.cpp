@@ -532,7 +532,7 @@ class WasmMesh {
       g_lastErrorCode = "PRECONDITION";
       return val::null();
     }
-    const auto& slots = sheet ? d.sheets[size_t(id)].slots : d.chords[size_t(id)].slots;
+    const std::vector<Slot>& slots = sheet ? d.sheets[size_t(id)].slots.get() : d.chords[size_t(id)].slots;
     scratch_.clear();
     for (const Slot& s : slots) scratch_.push_back(s.hex);
     return copyOut("Int32Array", scratch_);

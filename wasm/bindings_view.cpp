@@ -114,9 +114,10 @@ val viewHexDual(double dualAddress) {
   return guardedObject([&] {
     const Dual& d = dualAt(dualAddress);
     std::vector<int32_t> sheets, chords;
-    sheets.reserve(d.sheetOf.size() * 3);
+    sheets.reserve(d.sheetLabel.size() * 3);
     chords.reserve(d.chordOf.size() * 3);
-    for (const auto& s : d.sheetOf) sheets.insert(sheets.end(), s.begin(), s.end());
+    for (size_t h = 0; h < d.sheetLabel.size(); ++h)
+      for (int a = 0; a < 3; ++a) sheets.push_back(d.sheetAt(HexId(h), a));
     for (const auto& c : d.chordOf) chords.insert(chords.end(), c.begin(), c.end());
     val out = val::object();
     out.set("sheetOf", copyOut("Int32Array", sheets));

@@ -353,7 +353,7 @@ int runSheets(const Args& a) {
     for (const Sheet& s : dual.sheets)
       if (!around.empty()) {
         for (HexId h : around)
-          if (cx.isHex(h) && (dual.sheetOf[size_t(h)][0] == s.id || dual.sheetOf[size_t(h)][1] == s.id || dual.sheetOf[size_t(h)][2] == s.id)) {
+          if (cx.isHex(h) && (dual.sheetAt(h, 0) == s.id || dual.sheetAt(h, 1) == s.id || dual.sheetAt(h, 2) == s.id)) {
             ids.push_back(s.id);
             break;
           }

@@ -18,6 +18,112 @@ size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
 
 }  // namespace
 
+SlotList& SlotList::operator=(std::vector<Slot> sorted) {
+  list_ = std::move(sorted);
+  runs_.clear();
+  adds_.clear();
+  gone_.clear();
+  size_ = list_.size();
+  return *this;
+}
+
+void SlotList::clear() {
+  list_.clear();
+  runs_.clear();
+  adds_.clear();
+  gone_.clear();
+  size_ = 0;
+}
+
+namespace {
+// Pending runs, additions and removals kept before a list is merged without being read: few runs,
+// and additions or removals up to an eighth of the list, so that merging them stays linear in it.
+constexpr size_t kMaxRuns = 16;
+bool tooMany(size_t pending, size_t size) { return pending > 64 + size / 8; }
+
+// Merges sorted `run` into sorted `base` in place, from the back (no second buffer).
+void mergeInto(std::vector<Slot>& base, const std::vector<Slot>& run) {
+  size_t i = base.size(), j = run.size(), k = i + j;
+  base.resize(k);
+  while (j > 0) base[--k] = i > 0 && run[j - 1] < base[i - 1] ? base[--i] : run[--j];
+}
+}  // namespace
+
+void SlotList::add(std::vector<Slot> sorted) {
+  if (sorted.empty()) return;
+  size_ += sorted.size();
+  if (list_.empty() && runs_.empty() && adds_.empty() && gone_.empty()) {
+    list_ = std::move(sorted);
+    return;
+  }
+  mergeInto(adds_, sorted);
+  if (tooMany(adds_.size(), size_)) settle();
+}
+
+void SlotList::absorb(SlotList&& other) {
+  if (other.size_ == 0 && other.gone_.empty()) return;
+  if (size_ == 0 && runs_.empty() && adds_.empty() && gone_.empty()) {
+    *this = std::move(other);
+    other.clear();
+    return;
+  }
+  size_ += other.size_;
+  if (!other.list_.empty()) runs_.push_back(std::move(other.list_));
+  for (auto& r : other.runs_) runs_.push_back(std::move(r));
+  if (!other.adds_.empty()) runs_.push_back(std::move(other.adds_));
+  gone_.insert(gone_.end(), other.gone_.begin(), other.gone_.end());
+  other.clear();
+  if (runs_.size() > kMaxRuns || tooMany(gone_.size(), size_)) settle();
+}
+
+void SlotList::remove(std::vector<Slot> listed) {
+  if (listed.empty()) return;
+  size_ -= listed.size();
+  gone_.insert(gone_.end(), listed.begin(), listed.end());
+  if (tooMany(gone_.size(), size_)) settle();
+}
+
+// Merges the pending runs into the longest list (the smaller ones first, then once into it from
+// the back, in place), then the pending additions, and drops the pending removals in one pass
+// (one listed copy per removal). The pending buffers keep their capacity.
+void SlotList::settle() const {
+  if (!runs_.empty()) {
+    runs_.push_back(std::move(list_));
+    std::sort(runs_.begin(), runs_.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    std::vector<Slot> base = std::move(runs_[0]), rest;
+    for (size_t r = runs_.size(); r-- > 1;) {
+      if (rest.empty()) {
+        rest = std::move(runs_[r]);
+        continue;
+      }
+      std::vector<Slot> both(rest.size() + runs_[r].size());
+      std::merge(rest.begin(), rest.end(), runs_[r].begin(), runs_[r].end(), both.begin());
+      rest = std::move(both);
+    }
+    mergeInto(base, rest);
+    list_ = std::move(base);
+    runs_.clear();
+  }
+  if (!adds_.empty()) {
+    mergeInto(list_, adds_);
+    adds_.clear();
+  }
+  if (!gone_.empty()) {
+    std::sort(gone_.begin(), gone_.end());
+    size_t w = 0, g = 0;
+    for (size_t r = 0; r < list_.size(); ++r) {
+      while (g < gone_.size() && gone_[g] < list_[r]) ++g;
+      if (g < gone_.size() && gone_[g] == list_[r]) {
+        ++g;
+        continue;
+      }
+      list_[w++] = list_[r];
+    }
+    list_.resize(w);
+    gone_.clear();
+  }
+}
+
 void SheetFlooder::reserve(size_t hexCapacity) {
   if (sign_.size() < 3 * hexCapacity) sign_.resize(3 * hexCapacity, 0);
   if (edgeSeen_.size() < hexCapacity) edgeSeen_.resize(hexCapacity, 0);
@@ -268,7 +374,7 @@ class OrientedUnionFind {
 // over the glued quads, then each slot's share of its mid-surface measured in one more pass.
 void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
   std::vector<int8_t>* signs = extras ? &extras->slotSigns : nullptr;
-  int32_t* sheetOf = d.sheetOf.empty() ? nullptr : d.sheetOf[0].data();
+  int32_t* sheetOf = d.sheetLabel.empty() ? nullptr : d.sheetLabel[0].data();
   OrientedUnionFind uf(3 * size_t(cx.hexCapacity()));
   for (HexId h : cx.hexes())
     for (int f = 0; f < 6; ++f) {
@@ -300,7 +406,9 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
   for (HexId h : cx.hexes())
     for (int a = 0; a < 3; ++a) flooder.measure(cx, h, a, stats[size_t(sheetOf[slotIndex(h, a)])]);
   d.sheets.resize(stats.size());
+  d.labelSheet.resize(stats.size());
   for (size_t s = 0; s < stats.size(); ++s) {
+    d.labelSheet[s] = int32_t(s);
     d.sheets[s].id = int32_t(s);
     stats[s].orientable = !uf.twisted(roots[s]);
     stats[s].classify(d.sheets[s]);
@@ -357,7 +465,7 @@ std::vector<int32_t> extractChords(const Complex& cx, Dual& d) {
 Dual extractDual(const Complex& cx, DualExtras* extras) {
   const size_t n = size_t(cx.hexCapacity());
   Dual d;
-  d.sheetOf.assign(n, {-1, -1, -1});
+  d.sheetLabel.assign(n, {-1, -1, -1});
   d.chordOf.assign(n, {-1, -1, -1});
   if (extras) {
     extras->slotSigns.assign(3 * n, 0);
@@ -376,7 +484,7 @@ Dual extractDual(const Complex& cx, DualExtras* extras) {
   for (HexId h : cx.hexes()) {
     auto& c = d.chordOf[size_t(h)];
     for (int32_t& id : c) id = newChordId[size_t(id)];
-    const auto& s = d.sheetOf[size_t(h)];
+    const auto& s = d.sheetLabel[size_t(h)];  // labels are ids here
     if (s[0] == s[1] || s[0] == s[2]) d.sheets[size_t(s[0])].selfIntersecting = true;
     if (s[1] == s[2]) d.sheets[size_t(s[1])].selfIntersecting = true;
     if (c[0] == c[1] || c[0] == c[2]) d.chords[size_t(c[0])].selfIntersecting = true;
@@ -393,7 +501,7 @@ namespace hexdual {
 void validateDual(const Complex& cx, const Dual& d) {
   auto fail = [](const std::string& m) { throw Error("validateDual: " + m); };
   auto slotName = [](Slot s) { return "slot (hex " + std::to_string(s.hex) + ", axis " + std::to_string(s.axis) + ")"; };
-  if (d.sheetOf.size() < size_t(cx.hexCapacity()) || d.chordOf.size() < size_t(cx.hexCapacity()))
+  if (d.sheetLabel.size() < size_t(cx.hexCapacity()) || d.chordOf.size() < size_t(cx.hexCapacity()))
     fail("per-hex arrays are shorter than the hex capacity");
   std::vector<uint8_t> seenSheet(size_t(3) * size_t(cx.hexCapacity()), 0), seenChord(seenSheet.size(), 0);
   auto mark = [&](std::vector<uint8_t>& seen, Slot s, const char* what, int id) {
@@ -405,7 +513,7 @@ void validateDual(const Complex& cx, const Dual& d) {
   for (size_t i = 0; i < d.sheets.size(); ++i)
     for (Slot s : d.sheets[i].slots) {
       mark(seenSheet, s, "sheet", d.sheets[i].id);
-      if (d.sheetOf[s.hex][s.axis] != d.sheets[i].id) fail(slotName(s) + " is in sheet " + std::to_string(d.sheets[i].id) + " but sheetOf says otherwise");
+      if (d.sheetAt(s.hex, s.axis) != d.sheets[i].id) fail(slotName(s) + " is in sheet " + std::to_string(d.sheets[i].id) + " but its label names another");
     }
   for (size_t i = 0; i < d.chords.size(); ++i) {
     const Chord& ch = d.chords[i];
@@ -433,7 +541,7 @@ void validateDual(const Complex& cx, const Dual& d) {
         int a2 = mapAxisAcross(cx, h, f, a);
         if (axisOfFace(f) == a) {
           if (d.chordOf[h][a] != d.chordOf[g.hex][a2]) fail(slotName(s) + " and its neighbour across face " + std::to_string(f) + " are in different chords");
-        } else if (d.sheetOf[h][a] != d.sheetOf[g.hex][a2]) {
+        } else if (d.sheetAt(h, a) != d.sheetAt(g.hex, a2)) {
           fail(slotName(s) + " and its neighbour across face " + std::to_string(f) + " are in different sheets");
         }
       }
@@ -458,7 +566,7 @@ void compareDuals(const Complex& cx, const Dual& a, const Dual& b) {
   };
   for (HexId h : cx.hexes())
     for (int ax = 0; ax < 3; ++ax) {
-      link(sheetMap, sheetBack, a.sheetOf[h][ax], b.sheetOf[h][ax], "sheet", {h, ax});
+      link(sheetMap, sheetBack, a.sheetAt(h, ax), b.sheetAt(h, ax), "sheet", {h, ax});
       link(chordMap, chordBack, a.chordOf[h][ax], b.chordOf[h][ax], "chord", {h, ax});
     }
   size_t liveA = 0, liveB = 0;

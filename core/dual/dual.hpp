@@ -18,11 +18,55 @@ struct Slot {
   friend bool operator<(Slot a, Slot b) { return a.hex != b.hex ? a.hex < b.hex : a.axis < b.axis; }
 };
 
+// A sheet's slots, sorted, read like a const std::vector<Slot>. DualTracker merges two sheets by
+// handing one list to the other as a pending run and drops slots as pending removals; the first
+// read merges them (linear in the list), so an update that merges two large sheets stays local.
+// Not for concurrent reads of a list with pending edits (the first read writes the merged list).
+class SlotList {
+ public:
+  SlotList() = default;
+  SlotList(std::vector<Slot> sorted) : list_(std::move(sorted)), size_(list_.size()) {}
+  SlotList& operator=(std::vector<Slot> sorted);
+  const std::vector<Slot>& get() const {
+    if (!runs_.empty() || !adds_.empty() || !gone_.empty()) settle();
+    return list_;
+  }
+  operator const std::vector<Slot>&() const { return get(); }
+  size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  std::vector<Slot>::const_iterator begin() const { return get().begin(); }
+  std::vector<Slot>::const_iterator end() const { return get().end(); }
+  const Slot& operator[](size_t i) const { return get()[i]; }
+  const Slot& front() const { return get().front(); }
+  const Slot& back() const { return get().back(); }
+  void reserve(size_t n) { list_.reserve(n); }
+  void push_back(Slot s) {  // s after every slot listed (extraction lists slots in order)
+    get();
+    list_.push_back(s);
+    ++size_;
+  }
+  void clear();
+  // Edits that wait for the next read: `sorted` slots not listed join; `other`'s slots (disjoint
+  // from these) join; listed slots leave.
+  void add(std::vector<Slot> sorted);
+  void absorb(SlotList&& other);
+  void remove(std::vector<Slot> listed);
+  friend bool operator==(const SlotList& a, const SlotList& b) { return a.get() == b.get(); }
+
+ private:
+  void settle() const;
+  mutable std::vector<Slot> list_;
+  mutable std::vector<std::vector<Slot>> runs_;  // sorted runs (merged lists) waiting to join
+  mutable std::vector<Slot> adds_;               // sorted slots waiting to join (a few per edit)
+  mutable std::vector<Slot> gone_;               // listed slots waiting to leave
+  size_t size_ = 0;
+};
+
 struct Sheet {
   int id = -1;
-  bool alive = true;        // false for an id retired by an operation (DualTracker)
-  std::vector<Slot> slots;  // sorted; a self-intersecting sheet has a hex twice
-  int64_t euler = 0;        // of the sheet's mid-surface
+  bool alive = true;  // false for an id retired by an operation (DualTracker)
+  SlotList slots;     // sorted; a self-intersecting sheet has a hex twice
+  int64_t euler = 0;  // of the sheet's mid-surface
   int boundaryLoops = 0;
   bool orientable = true;
   bool selfIntersecting = false;
@@ -40,8 +84,19 @@ struct Chord {
 struct Dual {
   std::vector<Sheet> sheets;
   std::vector<Chord> chords;
-  std::vector<std::array<int32_t, 3>> sheetOf;  // per hex id (capacity), per axis; -1 for tombstones
-  std::vector<std::array<int32_t, 3>> chordOf;
+  // Per hex id (capacity), per axis: a sheet label, -1 for tombstones; labelSheet names each label's
+  // sheet. Extraction gives every sheet one label equal to its id; DualTracker merges two sheets by
+  // re-pointing the labels of one instead of re-writing its slots. Read sheet ids with sheetAt().
+  std::vector<std::array<int32_t, 3>> sheetLabel;
+  std::vector<int32_t> labelSheet;
+  std::vector<std::array<int32_t, 3>> chordOf;  // per hex id (capacity), per axis; -1 for tombstones
+
+  // The sheet id of slot (h, a), -1 for a tombstone.
+  int32_t sheetAt(HexId h, int a) const {
+    const int32_t l = sheetLabel[size_t(h)][size_t(a)];
+    return l < 0 ? -1 : labelSheet[size_t(l)];
+  }
+  std::array<int32_t, 3> sheetsAt(HexId h) const { return {sheetAt(h, 0), sheetAt(h, 1), sheetAt(h, 2)}; }
 };
 
 // Axis of the neighbour's hex that continues axis `a` of hex h across face f (f must be interior).
@@ -53,7 +108,7 @@ int mapAxisAcross(const Complex& cx, HexId h, int face, int axis);
 struct DualExtras {
   std::vector<int8_t> slotSigns;
   std::vector<uint16_t> edgeMarks;
-  std::vector<int8_t> slotShares;   // per slot: slotShare() below
+  std::vector<int8_t> slotShares;    // per slot: slotShare() below
   std::vector<int32_t> chordPlaces;  // per slot: its place in its chord's slot list
 };
 constexpr uint16_t kEdgeNearBoundary = uint16_t(1u << 15);
@@ -89,9 +144,9 @@ struct SheetStats {
 class SheetFlooder {
  public:
   void reserve(size_t hexCapacity);
-  // Floods the sheet through `start`, labelling unlabelled slots (-1 in the flat per-slot array
-  // `sheetOf`, 3 per hex) with `id`; appends the slots to `out` and the labels they had (all
-  // negative) to `previous` when given.
+  // Floods the sheet through `start`, labelling unlabelled slots (negative in the flat per-slot
+  // label array `sheetOf`, 3 per hex: Dual::sheetLabel) with `id`; appends the slots to `out` and
+  // the labels they had (all negative) to `previous` when given.
   SheetStats flood(const Complex& cx, Slot start, int32_t id, int32_t* sheetOf, std::vector<Slot>* out,
                    std::vector<int32_t>* previous = nullptr);
   // Resets the edge and loop marks of these slots (their orientations stay: they persist).
@@ -102,6 +157,7 @@ class SheetFlooder {
   int walkNewLoops(const Complex& cx, HexId h, int a);
   // Orientation of each slot's mid-quad (+1/-1, 0 unknown), 3 per hex: written by every flood.
   std::vector<int8_t>& signs() { return sign_; }
+  const std::vector<int8_t>& signs() const { return sign_; }
 
  private:
   bool walkEdge(const Complex& cx, HexId h, int e);  // false for a fan (a boundary edge)
@@ -138,7 +194,7 @@ void compareDuals(const Complex& cx, const Dual& a, const Dual& b);
 
 namespace hexdual {
 // Checks that a Dual describes the complex: every live slot is listed exactly once in the sheet
-// and chord named by sheetOf/chordOf, slots glued across parallel (sheet) or normal (chord) quads
+// and chord named by sheetAt/chordOf, slots glued across parallel (sheet) or normal (chord) quads
 // share a sheet or chord, and chords list consecutive glued slots. Throws Error naming the first
 // inconsistency. Used after incremental updates in debug builds and tests.
 void validateDual(const Complex& cx, const Dual& dual);

@@ -1,6 +1,7 @@
 #include "dual/dual_tracker.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <climits>
 #include <numeric>
 
@@ -33,38 +34,9 @@ std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
 }
 
 namespace {
-// Inlined even where the tracker is built for size (the wasm module): the constructor calls it 3x per hex.
-[[gnu::always_inline]] inline int slotsOnSheet(const std::array<int32_t, 3>& s, int32_t id) { return (s[0] == id) + (s[1] == id) + (s[2] == id); }
-}  // namespace
-
-namespace {
 
 constexpr uint16_t kNearBoundary = kEdgeNearBoundary;
 constexpr uint16_t kWalkedFan = uint16_t(1u << 15);  // in walked_: one of the hex's edges walked is a fan
-
-// Drops from `slots` (sorted) the slots of `leaving` (sorted) no longer labelled `id`, keeping the
-// order: found by binary search, and only the part after the first one is moved.
-void dropLeaving(std::vector<Slot>& slots, const std::vector<Slot>& leaving, const std::vector<std::array<int32_t, 3>>& of,
-                 int32_t id) {
-  std::vector<size_t> at;
-  auto from = slots.begin();
-  for (Slot t : leaving) {
-    if (of[size_t(t.hex)][size_t(t.axis)] == id) continue;
-    from = std::lower_bound(from, slots.end(), t);
-    if (from == slots.end()) break;
-    if (*from == t) at.push_back(size_t(from - slots.begin()));
-  }
-  if (at.empty()) return;
-  size_t w = at[0], k = 0;
-  for (size_t i = at[0]; i < slots.size(); ++i) {
-    if (k < at.size() && at[k] == i) {
-      ++k;
-      continue;
-    }
-    slots[w++] = slots[i];
-  }
-  slots.resize(w);
-}
 
 // The sheet or chord ids on the slots of these hexes, ascending, once each.
 std::vector<int32_t> idsThrough(const std::vector<std::array<int32_t, 3>>& of, const std::vector<HexId>& hexes) {
@@ -72,6 +44,17 @@ std::vector<int32_t> idsThrough(const std::vector<std::array<int32_t, 3>>& of, c
   for (HexId h : hexes)
     for (int32_t id : of[size_t(h)])
       if (id >= 0) ids.push_back(id);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+// The sheet ids on the slots of these hexes, ascending, once each.
+std::vector<int32_t> sheetIdsThrough(const Dual& d, const std::vector<HexId>& hexes) {
+  std::vector<int32_t> ids;
+  for (HexId h : hexes)
+    for (int a = 0; a < 3; ++a)
+      if (d.sheetAt(h, a) >= 0) ids.push_back(d.sheetAt(h, a));
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   return ids;
@@ -123,16 +106,154 @@ DualTracker::DualTracker(const Complex& cx) {
   dual_ = extractDual(cx, &extras);
   flooder_.signs() = std::move(extras.slotSigns);
   edgeMarks_ = std::move(extras.edgeMarks);
-  selfHexes_.assign(dual_.sheets.size(), 0);
-  for (HexId h : cx.hexes()) {
-    const auto& s = dual_.sheetOf[size_t(h)];
-    for (int a = 0; a < 3; ++a)
-      if (slotsOnSheet(s, s[size_t(a)]) >= 2 && (a == 0 || s[size_t(a)] != s[0]) && (a < 2 || s[2] != s[1]))
-        ++selfHexes_[size_t(s[size_t(a)])];
+  const size_t sheets = dual_.sheets.size();
+  labels_.resize(sheets);
+  labelSlots_.resize(sheets);
+  labelFlip_.assign(sheets, 0);
+  for (size_t s = 0; s < sheets; ++s) {
+    labels_[s].assign(1, int32_t(s));
+    labelSlots_[s] = int32_t(dual_.sheets[s].slots.size());
+  }
+  // A hex's two slots on axes a and b share their sheets with every hex along the chord through its
+  // third axis (TK03 §1.1: two sheets cross in chords), so the pairs are counted per chord.
+  selfPairs_.assign(sheets, 0);
+  for (const Chord& ch : dual_.chords) {
+    const Slot t = ch.slots[0];
+    const auto& l = dual_.sheetLabel[size_t(t.hex)];
+    countPair(l[size_t((t.axis + 1) % 3)], l[size_t((t.axis + 2) % 3)], int32_t(ch.slots.size()));
   }
   share_ = std::move(extras.slotShares);
   chordPos_ = std::move(extras.chordPlaces);
   delta_.assign(dual_.sheets.size(), 0);  // the scratch arrays are sized by the first update
+}
+
+namespace {
+uint64_t pairKey(int32_t a, int32_t b) {
+  if (a > b) std::swap(a, b);
+  return uint64_t(uint32_t(a)) << 32 | uint32_t(b);
+}
+constexpr uint64_t kNoKey = ~uint64_t(0);
+}  // namespace
+
+// Open addressing with linear probing; counts that drop to zero keep their entry (the same pairs
+// come back after an undo).
+size_t DualTracker::PairCounts::find(uint64_t key) const {
+  const size_t mask = keys_.size() - 1;
+  size_t i = size_t((key * 0x9E3779B97F4A7C15ull) >> shift_);  // the product's top bits (Fibonacci hashing)
+  while (keys_[i] != key && keys_[i] != kNoKey) i = (i + 1) & mask;
+  return i;
+}
+
+void DualTracker::PairCounts::add(int32_t a, int32_t b, int32_t n) {
+  if (2 * (used_ + 1) > keys_.size()) {  // rehashed without the zero counts (pairs of labels gone)
+    std::vector<uint64_t> keys = std::move(keys_);
+    std::vector<int32_t> counts = std::move(counts_);
+    size_t live = 0;
+    for (size_t i = 0; i < keys.size(); ++i) live += keys[i] != kNoKey && counts[i] != 0;
+    size_t size = 64;
+    while (size < 4 * (live + 1)) size *= 2;
+    keys_.assign(size, kNoKey);
+    shift_ = 64 - std::countr_zero(keys_.size());
+    counts_.assign(keys_.size(), 0);
+    used_ = live;
+    for (size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] != kNoKey && counts[i] != 0) {
+        const size_t j = find(keys[i]);
+        keys_[j] = keys[i];
+        counts_[j] = counts[i];
+      }
+  }
+  const uint64_t key = pairKey(a, b);
+  const size_t i = find(key);
+  if (keys_[i] == kNoKey) {
+    keys_[i] = key;
+    ++used_;
+  }
+  counts_[i] += n;
+}
+
+int32_t DualTracker::PairCounts::take(int32_t a, int32_t b) {
+  if (keys_.empty()) return 0;
+  const size_t i = find(pairKey(a, b));
+  const int32_t n = keys_[i] == kNoKey ? 0 : counts_[i];
+  if (keys_[i] != kNoKey) counts_[i] = 0;
+  return n;
+}
+
+void DualTracker::countPair(int32_t la, int32_t lb, int32_t n) {
+  if (la < 0 || lb < 0) return;
+  const int32_t a = dual_.labelSheet[size_t(la)], b = dual_.labelSheet[size_t(lb)];
+  if (a == b)
+    selfPairs_[size_t(a)] += n;
+  else
+    pairs_.add(la, lb, n);
+}
+
+int32_t DualTracker::newLabel(int32_t id) {
+  int32_t l;
+  if (!freeLabels_.empty()) {
+    l = freeLabels_.back();
+    freeLabels_.pop_back();
+    dual_.labelSheet[size_t(l)] = id;
+    labelSlots_[size_t(l)] = 0;
+    labelFlip_[size_t(l)] = 0;
+  } else {
+    l = int32_t(dual_.labelSheet.size());
+    dual_.labelSheet.push_back(id);
+    labelSlots_.push_back(0);
+    labelFlip_.push_back(0);
+  }
+  if (labels_.size() <= size_t(id)) labels_.resize(size_t(id) + 1);
+  labels_[size_t(id)].push_back(l);
+  return l;
+}
+
+void DualTracker::setLabel(Slot t, int32_t label) {
+  int32_t& l = dual_.sheetLabel[size_t(t.hex)][size_t(t.axis)];
+  if (l >= 0) --labelSlots_[size_t(l)];
+  if (label >= 0) ++labelSlots_[size_t(label)];
+  l = label;
+}
+
+int DualTracker::signOf(Slot t) const {
+  const int s = flooder_.signs()[slotIndex(t)];
+  return labelFlip_[size_t(dual_.sheetLabel[size_t(t.hex)][size_t(t.axis)])] ? -s : s;
+}
+
+void DualTracker::setSign(Slot t, int sign) {
+  const bool flip = labelFlip_[size_t(dual_.sheetLabel[size_t(t.hex)][size_t(t.axis)])];
+  flooder_.signs()[slotIndex(t)] = int8_t(flip ? -sign : sign);
+}
+
+void DualTracker::pruneLabels(int32_t id) {
+  auto& ls = labels_[size_t(id)];
+  auto gone = [&](int32_t l) {
+    if (labelSlots_[size_t(l)] != 0) return false;
+    freeLabels_.push_back(l);
+    return true;
+  };
+  ls.erase(std::remove_if(ls.begin(), ls.end(), gone), ls.end());
+}
+
+// Sheet x joins sheet `keep` (flipped when `flip`) without writing its slots: its labels are
+// re-pointed, its slot list handed over, its Euler share moved whole, and the slots it shares
+// with `keep` in one hex become the merged sheet's self-intersections.
+void DualTracker::mergeSheet(int32_t x, int32_t keep, bool flip) {
+  for (int32_t lx : labels_[size_t(x)])
+    for (int32_t lk : labels_[size_t(keep)]) selfPairs_[size_t(keep)] += pairs_.take(lx, lk);
+  selfPairs_[size_t(keep)] += selfPairs_[size_t(x)];
+  selfPairs_[size_t(x)] = 0;
+  const int64_t share = 2 * dual_.sheets[size_t(x)].euler + delta_[size_t(x)];
+  delta_[size_t(keep)] += share;
+  delta_[size_t(x)] -= share;
+  for (int32_t lx : labels_[size_t(x)]) {
+    dual_.labelSheet[size_t(lx)] = keep;
+    labelFlip_[size_t(lx)] ^= uint8_t(flip);
+    labels_[size_t(keep)].push_back(lx);
+  }
+  mergedLabels_ += labels_[size_t(x)].size();
+  labels_[size_t(x)].clear();
+  dual_.sheets[size_t(keep)].slots.absorb(std::move(dual_.sheets[size_t(x)].slots));
 }
 
 void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& touched, std::vector<ShareChange>* changes) {
@@ -214,7 +335,7 @@ void DualTracker::propagateSigns(const Complex& cx, const std::vector<Slot>& slo
       int flip;
       for (int f : kParallelFaces[size_t(s.axis)])
         if (sheetNeighbour(cx, s, f, n, flip) && sign[slotIndex(n)]) {
-          sign[slotIndex(s)] = int8_t(sign[slotIndex(n)] * flip);
+          setSign(s, signOf(n) * flip);
           progress = true;
           break;
         }
@@ -222,23 +343,26 @@ void DualTracker::propagateSigns(const Complex& cx, const std::vector<Slot>& slo
   }
 }
 
-// Adds (sign +1) or removes (-1) these hexes' counts in selfHexes_ (a hex counts once per sheet it has two slots on).
+// Adds (sign +1) or removes (-1) these hexes' pairs of slots in selfPairs_ and pairs_.
 void DualTracker::countSelfHexes(const std::vector<HexId>& hexes, int sign) {
   for (HexId h : hexes) countSelfHex(h, sign);
 }
 
 void DualTracker::countSelfHex(HexId h, int sign) {
-  const auto& s = dual_.sheetOf[size_t(h)];
-  for (int a = 0; a < 3; ++a) {
-    const int32_t id = s[size_t(a)];
-    if (id >= 0 && slotsOnSheet(s, id) >= 2 && (a == 0 || id != s[0]) && (a < 2 || s[2] != s[1])) selfHexes_[size_t(id)] += sign;
-  }
+  const auto l = dual_.sheetLabel[size_t(h)];
+  countPair(l[0], l[1], sign);
+  countPair(l[0], l[2], sign);
+  countPair(l[1], l[2], sign);
 }
 
 void DualTracker::releaseRetiredTail() {
   while (!dual_.sheets.empty() && !dual_.sheets.back().alive) {
     dual_.sheets.pop_back();
-    selfHexes_.pop_back();
+    selfPairs_.pop_back();
+    if (labels_.size() > dual_.sheets.size()) {
+      for (int32_t l : labels_.back()) freeLabels_.push_back(l);  // carried by no slot: the sheet is retired
+      labels_.pop_back();
+    }
   }
   while (!dual_.chords.empty() && !dual_.chords.back().alive) dual_.chords.pop_back();
 }
@@ -248,7 +372,7 @@ DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits,
 }
 
 bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
-  const size_t cap = dual_.sheetOf.size();
+  const size_t cap = dual_.sheetLabel.size();
   // Components of the unlabelled (new) slots, and the existing sheets each one touches.
   std::vector<std::vector<Slot>> comps;
   std::vector<std::vector<int32_t>> joins;
@@ -260,7 +384,7 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
   for (HexId h : touched) {
     if (!cx.isHex(h)) continue;
     for (int a = 0; a < 3; ++a) {
-      if (dual_.sheetOf[size_t(h)][size_t(a)] >= 0 || front_[slotIndex({h, a})]) continue;
+      if (dual_.sheetLabel[size_t(h)][size_t(a)] >= 0 || front_[slotIndex({h, a})]) continue;
       size_t ci = comps.size();
       comps.push_back({{h, a}});
       joins.emplace_back();
@@ -271,7 +395,7 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
           Slot n;
           int flip;
           if (!sheetNeighbour(cx, cur, f, n, flip)) continue;
-          int32_t id = size_t(n.hex) < cap ? dual_.sheetOf[size_t(n.hex)][size_t(n.axis)] : -1;
+          int32_t id = size_t(n.hex) < cap ? dual_.sheetAt(n.hex, n.axis) : -1;
           if (id >= 0) {
             if (std::find(joins[ci].begin(), joins[ci].end(), id) == joins[ci].end()) joins[ci].push_back(id);
           } else if (!front_[slotIndex(n)]) {
@@ -290,65 +414,71 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
   // Shares move with the edit but each sheet's sum (its Euler characteristic) does not: the
   // operation keeps every sheet's topology.
   refreshShares(cx, touched, nullptr);
-  // Remove the slots of dead hexes.
+  // Remove the slots of dead hexes (from their lists when next read).
   std::vector<int32_t> changed;
+  std::vector<std::pair<int32_t, Slot>> dead;
   for (HexId h : touched) {
     if (cx.isHex(h) || size_t(h) >= cap) continue;
-    auto& s = dual_.sheetOf[size_t(h)];
+    countSelfHex(h, -1);
     for (int a = 0; a < 3; ++a) {
-      int32_t id = s[size_t(a)];
+      const int32_t id = dual_.sheetAt(h, a);
       if (id < 0) continue;
-      if (slotsOnSheet(s, id) >= 2 && (a == 0 || id != s[0]) && (a < 2 || s[2] != s[1])) --selfHexes_[size_t(id)];
-      auto& slots = dual_.sheets[size_t(id)].slots;
-      auto it = std::lower_bound(slots.begin(), slots.end(), Slot{h, a});
-      if (it != slots.end() && *it == Slot{h, a}) slots.erase(it);
+      dead.push_back({id, Slot{h, a}});
       changed.push_back(id);
+      setLabel({h, a}, -1);
+      flooder_.signs()[3 * size_t(h) + size_t(a)] = 0;
     }
-    s = {-1, -1, -1};
-    for (int a = 0; a < 3; ++a) flooder_.signs()[3 * size_t(h) + size_t(a)] = 0;
+  }
+  std::sort(dead.begin(), dead.end(), [](const auto& x, const auto& y) { return x.first != y.first ? x.first < y.first : x.second < y.second; });
+  for (size_t i = 0; i < dead.size();) {
+    std::vector<Slot> gone;
+    size_t j = i;
+    for (; j < dead.size() && dead[j].first == dead[i].first; ++j) gone.push_back(dead[j].second);
+    dual_.sheets[size_t(dead[i].first)].slots.remove(std::move(gone));
+    i = j;
   }
   // Label the new components: join the one sheet they touch, or form a new sheet.
+  std::vector<HexId> born;
   for (size_t ci = 0; ci < comps.size(); ++ci) {
-    int32_t id;
+    for (Slot t : comps[ci]) born.push_back(t.hex);
     if (joins[ci].empty()) {
-      id = int32_t(dual_.sheets.size());
+      const int32_t id = int32_t(dual_.sheets.size());
+      const int32_t label = newLabel(id);
       Sheet sh;
       sh.id = id;
-      SheetStats st = flooder_.flood(cx, comps[ci][0], id, dual_.sheetOf[0].data(), &sh.slots);
-      flooder_.clear(sh.slots);
-      std::sort(sh.slots.begin(), sh.slots.end());
+      std::vector<Slot> slots;
+      SheetStats st = flooder_.flood(cx, comps[ci][0], label, dual_.sheetLabel[0].data(), &slots);
+      flooder_.clear(slots);
+      labelSlots_[size_t(label)] += int32_t(slots.size());
+      std::sort(slots.begin(), slots.end());
       st.classify(sh);
-      sheetSlotsTouched_ += sh.slots.size();
+      sheetSlotsTouched_ += slots.size();
+      sh.slots = std::move(slots);
       dual_.sheets.push_back(std::move(sh));
-      selfHexes_.push_back(0);
+      selfPairs_.push_back(0);
       change.sheetsCreated.push_back(id);
     } else {
-      id = joins[ci][0];
-      auto& slots = dual_.sheets[size_t(id)].slots;
-      for (Slot t : comps[ci]) {
-        dual_.sheetOf[size_t(t.hex)][size_t(t.axis)] = id;
-        slots.insert(std::lower_bound(slots.begin(), slots.end(), t), t);
-      }
+      const int32_t id = joins[ci][0];
+      const int32_t label = labels_[size_t(id)].front();
+      for (Slot t : comps[ci]) setLabel(t, label);
+      std::vector<Slot> run = comps[ci];
+      std::sort(run.begin(), run.end());
+      dual_.sheets[size_t(id)].slots.add(std::move(run));
       propagateSigns(cx, comps[ci]);
       sheetSlotsTouched_ += comps[ci].size();
       changed.push_back(id);
     }
   }
-  // Self-intersection counts for the new hexes.
-  for (const auto& comp : comps)
-    for (Slot t : comp) {
-      const auto& s = dual_.sheetOf[size_t(t.hex)];
-      int32_t id = s[size_t(t.axis)];
-      // Count each new hex once per sheet, at its first slot on that sheet.
-      bool first = true;
-      for (int a = 0; a < t.axis; ++a) first = first && s[size_t(a)] != id;
-      if (first && slotsOnSheet(s, id) >= 2) ++selfHexes_[size_t(id)];
-    }
+  // Self-intersection counts for the new hexes (all three of their slots are new).
+  std::sort(born.begin(), born.end());
+  born.erase(std::unique(born.begin(), born.end()), born.end());
+  countSelfHexes(born, +1);
   std::sort(changed.begin(), changed.end());
   changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
   for (int32_t id : changed) {
     Sheet& sh = dual_.sheets[size_t(id)];
-    sh.selfIntersecting = selfHexes_[size_t(id)] > 0;
+    sh.selfIntersecting = selfPairs_[size_t(id)] > 0;
+    pruneLabels(id);
     if (std::find(change.sheetsCreated.begin(), change.sheetsCreated.end(), id) != change.sheetsCreated.end()) continue;
     if (sh.slots.empty()) {
       sh.alive = false;
@@ -357,6 +487,7 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
       change.sheetsChanged.push_back(id);
     }
   }
+  for (int32_t id : change.sheetsCreated) dual_.sheets[size_t(id)].selfIntersecting = selfPairs_[size_t(id)] > 0;
   return true;
 }
 
@@ -366,9 +497,8 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
 // every old sheet meets at most one unfinished group: that group is the rest of those old sheets.
 // Returns false, changing nothing, when the edit is not one it can follow (boundary, twisted sheets).
 bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
-  auto& sheetOf = dual_.sheetOf;
-  auto label = [&](Slot t) { return sheetOf[size_t(t.hex)][size_t(t.axis)]; };
-  const std::vector<int32_t> old = idsThrough(sheetOf, touched);
+  auto label = [&](Slot t) { return dual_.sheetAt(t.hex, t.axis); };  // the slot's sheet id
+  const std::vector<int32_t> old = sheetIdsThrough(dual_, touched);
   for (int32_t id : old)
     if (!dual_.sheets[size_t(id)].orientable) return false;
   if (touchesBoundary(cx, touched)) return false;
@@ -485,7 +615,7 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
   for (size_t k = 0; k < old.size(); ++k) remainder[k] = int64_t(dual_.sheets[size_t(old[k])].slots.size());
   for (HexId h : touched)
     if (!cx.isHex(h))
-      for (int32_t id : sheetOf[size_t(h)])
+      for (int32_t id : dual_.sheetsAt(h))
         if (id >= 0) --remainder[oldIndex(id)];
   std::vector<int32_t> pieceOf(parent.size(), -1);
   std::vector<std::vector<Slot>> pieces;
@@ -531,7 +661,7 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
   auto var = [&](Slot t, int& sg) -> int32_t {
     const int32_t id = label(t);
     if (id >= 0) {
-      sg = signs[slotIndex(t)];
+      sg = signOf(t);
       return int32_t(oldIndex(id));
     }
     sg = 1;
@@ -617,16 +747,21 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
 
   // ---- commit ----
   dual_.sheets.resize(size_t(fresh));
-  selfHexes_.resize(size_t(fresh), 0);
+  selfPairs_.resize(size_t(fresh), 0);
+  if (labels_.size() < size_t(fresh)) labels_.resize(size_t(fresh));
   if (delta_.size() < size_t(fresh)) delta_.resize(size_t(fresh), 0);
   std::vector<int32_t> affected(old.begin(), old.end());
   for (size_t p = 0; p < pieces.size(); ++p) affected.push_back(pieceId[p]);
   std::sort(affected.begin(), affected.end());
   affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
-  // Hexes whose slots may change sheet: their self-intersection counts are redone.
-  std::vector<HexId> recount(touched.begin(), touched.end());
+  // Hexes whose slot labels change (dead, in a piece, or new): their pairs of slots are counted
+  // again. The other hexes keep their labels, and a merge moves their pairs itself.
+  std::vector<HexId> recount;
+  for (HexId h : touched)
+    if (!cx.isHex(h)) recount.push_back(h);
   for (const auto& piece : pieces)
     for (Slot t : piece) recount.push_back(t.hex);
+  for (Slot t : newInRest) recount.push_back(t.hex);
   std::vector<int32_t> merged;
   for (size_t k = 0; k < old.size(); ++k)
     if (owner[k] >= 0 && keepOf[size_t(owner[k])] != old[k]) merged.push_back(old[k]);
@@ -639,18 +774,27 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
     const int32_t id = label(c.slot);
     if (id >= 0) delta_[size_t(id)] += c.after - c.before;
   }
-  auto move = [&](Slot t, int32_t to) {
-    int32_t& id = sheetOf[size_t(t.hex)][size_t(t.axis)];
+  auto move = [&](Slot t, int32_t toLabel) {  // t gets a label of another sheet; its share follows
+    const int32_t from = label(t), to = dual_.labelSheet[size_t(toLabel)];
     const int c = share_[slotIndex(t)];
-    if (id >= 0) delta_[size_t(id)] -= c;
+    if (from >= 0) delta_[size_t(from)] -= c;
     delta_[size_t(to)] += c;
-    id = to;
+    setLabel(t, toLabel);
   };
+  // Slots leaving the old sheets' lists (dead, or in a piece), by old sheet: dropped when next read.
+  std::vector<std::vector<Slot>> leaving(old.size());
   for (HexId h : touched)
     if (!cx.isHex(h)) {
-      sheetOf[size_t(h)] = {-1, -1, -1};
-      for (int a = 0; a < 3; ++a) signs[3 * size_t(h) + size_t(a)] = 0;
+      for (int a = 0; a < 3; ++a) {
+        const int32_t id = label({h, a});
+        if (id >= 0) leaving[oldIndex(id)].push_back({h, a});
+        setLabel({h, a}, -1);
+        signs[3 * size_t(h) + size_t(a)] = 0;
+      }
     }
+  for (size_t p = 0; p < pieces.size(); ++p)
+    for (size_t i = 0; i < pieces[p].size(); ++i)
+      if (pieceLabels[p][i] >= 0) leaving[oldIndex(pieceLabels[p][i])].push_back(pieces[p][i]);
   // Pieces: labelled, oriented by a flood of their own slots, loops walked and charged to the old sheet they came from.
   for (size_t p = 0; p < pieces.size(); ++p) {
     const int32_t id = pieceId[p];
@@ -665,13 +809,14 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
       if (l && from >= 0) loopsTaken[oldIndex(from)] += l;
     }
     flooder_.clear(pieces[p]);
+    const int32_t pieceLabel = newLabel(id);
     for (Slot t : pieces[p]) {
-      move(t, id);
+      move(t, pieceLabel);
       signs[slotIndex(t)] = 0;
     }
     bool orientable = true;
     std::vector<Slot> stack{pieces[p][0]};
-    signs[slotIndex(pieces[p][0])] = 1;
+    signs[slotIndex(pieces[p][0])] = 1;  // the piece's own label is not flipped
     while (!stack.empty()) {
       const Slot t = stack.back();
       stack.pop_back();
@@ -696,56 +841,26 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
     sh.orientable = orientable;
     (reused ? change.sheetsChanged : change.sheetsCreated).push_back(id);
   }
-  // Remainders: merged old sheets and new slots join the kept id; loops are what the pieces did not take.
-  // Merged sheets are re-labelled hex by hex (their slot lists are sorted by hex), each hex's
-  // self-intersection count redone around it.
-  std::vector<std::vector<Slot>> joining(parent.size());
-  size_t relabelled = 0;
-  auto join = [&](size_t g, const std::vector<Slot>& run) {  // run sorted: merged in place from the back
-    auto& slots = dual_.sheets[size_t(keepOf[g])].slots;
-    size_t i = slots.size(), j = run.size(), k = i + j;
-    slots.resize(k);
-    while (j > 0) slots[--k] = i > 0 && run[j - 1] < slots[i - 1] ? slots[--i] : run[--j];
-  };
-  // The kept sheets lose only slots of dead hexes and of pieces: found by binary search, not by a scan.
-  std::vector<Slot> leaving;
-  for (HexId h : touched)
-    if (!cx.isHex(h))
-      for (int a = 0; a < 3; ++a) leaving.push_back({h, a});
-  for (const auto& piece : pieces) leaving.insert(leaving.end(), piece.begin(), piece.end());
-  std::sort(leaving.begin(), leaving.end());
-  for (size_t g = 0; g < parent.size(); ++g)
-    if (keepOf[g] >= 0) dropLeaving(dual_.sheets[size_t(keepOf[g])].slots, leaving, sheetOf, keepOf[g]);
+  // Remainders: the kept sheets drop the slots they lost; merged old sheets join them whole (labels
+  // re-pointed, lists handed over: no slot written), and new slots join with a kept label.
+  for (size_t k = 0; k < old.size(); ++k)
+    if (owner[k] >= 0) {
+      std::sort(leaving[k].begin(), leaving[k].end());
+      dual_.sheets[size_t(old[k])].slots.remove(std::move(leaving[k]));
+    }
   for (int32_t x : merged) {
     const size_t g = size_t(owner[oldIndex(x)]);
-    const int32_t keep = keepOf[g];
-    const int8_t turn = flipOf[oldIndex(x)] ? -1 : 1;
-    std::vector<Slot> run = std::move(dual_.sheets[size_t(x)].slots);
-    size_t kept = 0;  // the run keeps its slots still labelled x (not dead, not in a piece)
-    for (size_t i = 0; i < run.size();) {
-      const HexId h = run[i].hex;
-      const bool alone = !std::binary_search(recount.begin(), recount.end(), h);
-      if (alone) countSelfHex(h, -1);
-      for (; i < run.size() && run[i].hex == h; ++i) {
-        if (label(run[i]) != x) continue;
-        signs[slotIndex(run[i])] = int8_t(signs[slotIndex(run[i])] * turn);
-        move(run[i], keep);
-        run[kept++] = run[i];
-      }
-      if (alone) countSelfHex(h, +1);
-    }
-    run.resize(kept);
-    relabelled += run.size();
-    join(g, run);
+    mergeSheet(x, keepOf[g], flipOf[oldIndex(x)] != 0);
     dual_.sheets[size_t(x)].slots.clear();
     dual_.sheets[size_t(x)].alive = false;
     change.sheetsRemoved.push_back(x);
   }
+  std::vector<std::vector<Slot>> joining(parent.size());
   for (size_t i = 0; i < newInRest.size(); ++i) {
     const Slot t = newInRest[i];
-    signs[slotIndex(t)] = flipOf[old.size() + i] ? -1 : 1;
     const int32_t g = find(front_[slotIndex(t)] - 1);
-    move(t, keepOf[size_t(g)]);
+    move(t, labels_[size_t(keepOf[size_t(g)])].front());
+    setSign(t, flipOf[old.size() + i] ? -1 : 1);
     joining[size_t(g)].push_back(t);  // sorted: newInRest is
   }
   for (size_t g = 0; g < parent.size(); ++g) {
@@ -754,7 +869,7 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
     int64_t loops = 0;
     for (size_t k = 0; k < old.size(); ++k)
       if (owner[k] == int32_t(g)) loops += dual_.sheets[size_t(old[k])].boundaryLoops - loopsTaken[k];
-    join(g, joining[g]);
+    dual_.sheets[size_t(keep)].slots.add(std::move(joining[g]));
     dual_.sheets[size_t(keep)].boundaryLoops = int(loops);
     change.sheetsChanged.push_back(keep);
   }
@@ -769,19 +884,19 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
     Sheet& sh = dual_.sheets[size_t(id)];
     sh.euler += delta_[size_t(id)] / 2;
     delta_[size_t(id)] = 0;
+    pruneLabels(id);
     if (!sh.alive) continue;
-    sh.selfIntersecting = selfHexes_[size_t(id)] > 0;
+    sh.selfIntersecting = selfPairs_[size_t(id)] > 0;
     sh.topology = classifySurface(sh.euler, sh.boundaryLoops, sh.orientable);
   }
-  sheetSlotsTouched_ += reached.size() + relabelled;
-  mergedSlots_ = relabelled;
+  sheetSlotsTouched_ += reached.size();
   clearFronts();
   return true;
 }
 
 DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bool sheetsKeepTopology) {
-  const size_t cap = std::max(size_t(cx.hexCapacity()), dual_.sheetOf.size());
-  dual_.sheetOf.resize(cap, {-1, -1, -1});
+  const size_t cap = std::max(size_t(cx.hexCapacity()), dual_.sheetLabel.size());
+  dual_.sheetLabel.resize(cap, {-1, -1, -1});
   dual_.chordOf.resize(cap, {-1, -1, -1});
   flooder_.reserve(cap);
   edgeMarks_.resize(cap, 0);
@@ -790,7 +905,7 @@ DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bo
   front_.resize(3 * cap, 0);
   slotsTouched_ = 0;
   sheetSlotsTouched_ = 0;
-  mergedSlots_ = 0;
+  mergedLabels_ = 0;
   reflooded_ = false;
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
@@ -824,14 +939,14 @@ int chooseId(const std::vector<int32_t>& previous, std::vector<int>& taken, size
 }
 
 // Re-labels the sheets or chords (`list`, per-slot labels `of`) through the touched hexes: every
-// old one touched is cleared and its slots re-walked from seeds (with `walk`, labelling kTemp),
-// and each component found keeps the smallest old id it holds. Sheets and chords alike.
-template <class Entity, class Walk, class Unchanged>
+// old one touched (`old`, ascending) is cleared and its slots re-walked from seeds (with `walk`,
+// labelling kTemp), and each component found keeps the smallest old id it holds; `labelOf(id)`
+// gives the label its slots get. Sheets and chords alike.
+template <class Entity, class Walk, class Unchanged, class LabelOf>
 size_t relabel(const Complex& cx, const std::vector<HexId>& touched, std::vector<std::array<int32_t, 3>>& of,
-               std::vector<Entity>& list, Walk walk, std::vector<int>& created, std::vector<int>& changed,
-               std::vector<int>& removed, Unchanged unchanged) {
+               std::vector<Entity>& list, std::vector<int32_t> old, Walk walk, std::vector<int>& created,
+               std::vector<int>& changed, std::vector<int>& removed, Unchanged unchanged, LabelOf labelOf) {
   size_t visited = 0;
-  std::vector<int32_t> old = idsThrough(of, touched);
   size_t kept = 0;
   for (int32_t id : old)
     if (!unchanged(id)) old[kept++] = id;
@@ -865,7 +980,8 @@ size_t relabel(const Complex& cx, const std::vector<HexId>& touched, std::vector
     visited += e.slots.size();
     int id = chooseId(previous, taken, list.size());
     e.id = id;
-    for (Slot t : e.slots) of[size_t(t.hex)][size_t(t.axis)] = id;
+    const int32_t label = labelOf(id);
+    for (Slot t : e.slots) of[size_t(t.hex)][size_t(t.axis)] = label;
     if (id == int(list.size())) {
       list.push_back(std::move(e));
       created.push_back(id);
@@ -884,30 +1000,54 @@ constexpr int32_t kTemp = INT32_MAX - 1;
 }  // namespace
 
 void DualTracker::updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
-  int32_t* sheetOf = dual_.sheetOf[0].data();
+  int32_t* sheetOf = dual_.sheetLabel[0].data();
   auto walk = [&](Slot s, Sheet& sh, std::vector<int32_t>& previous) {
-    SheetStats st = flooder_.flood(cx, s, kTemp, sheetOf, &sh.slots, &previous);
-    flooder_.clear(sh.slots);
-    std::sort(sh.slots.begin(), sh.slots.end());
+    std::vector<Slot> slots;
+    SheetStats st = flooder_.flood(cx, s, kTemp, sheetOf, &slots, &previous);
+    flooder_.clear(slots);
+    std::sort(slots.begin(), slots.end());
     st.classify(sh);
+    sh.slots = std::move(slots);
   };
   refreshShares(cx, touched, nullptr);  // the floods measure each sheet whole
-  sheetSlotsTouched_ += relabel(cx, touched, dual_.sheetOf, dual_.sheets, walk, change.sheetsCreated, change.sheetsChanged,
-                                change.sheetsRemoved, [](int) { return false; });
+  // Every slot of the re-flooded sheets gets a new label: their hexes' pairs are counted again.
+  const std::vector<int32_t> old = sheetIdsThrough(dual_, touched);
+  std::vector<HexId> recount(touched.begin(), touched.end());
+  for (int32_t id : old)
+    for (Slot t : dual_.sheets[size_t(id)].slots) recount.push_back(t.hex);
+  std::sort(recount.begin(), recount.end());
+  recount.erase(std::unique(recount.begin(), recount.end()), recount.end());
+  countSelfHexes(recount, -1);
+  for (int32_t id : old) {
+    for (int32_t l : labels_[size_t(id)]) {
+      labelSlots_[size_t(l)] = 0;
+      freeLabels_.push_back(l);  // every slot carrying it is parked below, before any new label
+    }
+    labels_[size_t(id)].clear();
+  }
+  auto labelOf = [&](int id) {
+    if (dual_.sheets.size() <= size_t(id)) selfPairs_.resize(size_t(id) + 1, 0);
+    return newLabel(id);
+  };
+  sheetSlotsTouched_ += relabel(cx, touched, dual_.sheetLabel, dual_.sheets, old, walk, change.sheetsCreated,
+                                change.sheetsChanged, change.sheetsRemoved, [](int) { return false; }, labelOf);
   for (HexId h : touched)
     if (!cx.isHex(h))
       for (int a = 0; a < 3; ++a) flooder_.signs()[3 * size_t(h) + size_t(a)] = 0;
-  selfHexes_.resize(dual_.sheets.size(), 0);
-  auto recount = [&](int id) {
-    Sheet& sh = dual_.sheets[size_t(id)];
-    int32_t self = 0;
-    for (size_t i = 1; i < sh.slots.size(); ++i)
-      if (sh.slots[i].hex == sh.slots[i - 1].hex && (i < 2 || sh.slots[i - 2].hex != sh.slots[i].hex)) ++self;
-    selfHexes_[size_t(id)] = self;
-    sh.selfIntersecting = self > 0;
+  selfPairs_.resize(dual_.sheets.size(), 0);
+  auto counted = [&](int id) {
+    const int32_t l = labels_[size_t(id)].front();
+    labelSlots_[size_t(l)] = int32_t(dual_.sheets[size_t(id)].slots.size());
   };
-  for (int id : change.sheetsCreated) recount(id);
-  for (int id : change.sheetsChanged) recount(id);
+  for (int id : change.sheetsCreated) counted(id);
+  for (int id : change.sheetsChanged) counted(id);
+  std::vector<HexId> live;
+  for (HexId h : recount)
+    if (cx.isHex(h)) live.push_back(h);
+  countSelfHexes(live, +1);
+  auto flag = [&](int id) { dual_.sheets[size_t(id)].selfIntersecting = selfPairs_[size_t(id)] > 0; };
+  for (int id : change.sheetsCreated) flag(id);
+  for (int id : change.sheetsChanged) flag(id);
 }
 
 void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
@@ -949,8 +1089,9 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
       }
     return true;
   };
-  slotsTouched_ += relabel(cx, touched, dual_.chordOf, dual_.chords, walk, change.chordsCreated, change.chordsChanged,
-                           change.chordsRemoved, unchanged);
+  slotsTouched_ += relabel(cx, touched, dual_.chordOf, dual_.chords, idsThrough(dual_.chordOf, touched), walk,
+                           change.chordsCreated, change.chordsChanged, change.chordsRemoved, unchanged,
+                           [](int id) { return int32_t(id); });
   chordPos_.resize(3 * dual_.chordOf.size(), 0);
   auto place = [&](int id) {
     const auto& slots = dual_.chords[size_t(id)].slots;

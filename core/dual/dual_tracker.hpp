@@ -1,7 +1,8 @@
 // Keeps the dual current across operations. Sheets through the touched hexes are updated by a
 // lockstep flood from every touched slot that stops as soon as each old sheet is either wholly
 // explored or continues in one unexplored remainder, so a sheet cut or re-glued in one place costs
-// the explored region, and a real split its smaller pieces; Euler characteristics, loops and
+// the explored region, and a real split its smaller pieces (a merge re-points sheet labels and
+// writes no slot: see Dual::sheetLabel); Euler characteristics, loops and
 // orientations of the remainder follow from per-slot shares kept between updates. Edits that
 // touch the boundary or non-orientable sheets re-flood the sheets they touch. Chords through the
 // touched hexes are re-walked. Surviving sheets and chords keep their ids; new ones get fresh ids;
@@ -43,8 +44,8 @@ class DualTracker {
   // The same for sheets and chords apart; and whether the last update's sheets were re-flooded.
   size_t sheetSlotsTouched() const { return sheetSlotsTouched_; }
   size_t chordSlotsTouched() const { return slotsTouched_ - sheetSlotsTouched_; }
-  // Of the sheet slots: those re-labelled because two old sheets merged (the smaller ones' slots).
-  size_t mergedSlots() const { return mergedSlots_; }
+  // Sheet labels re-pointed because two old sheets merged (a merge writes no slot: see Dual::sheetLabel).
+  size_t mergedLabels() const { return mergedLabels_; }
   bool lastUpdateReflooded() const { return reflooded_; }
 
  private:
@@ -63,20 +64,46 @@ class DualTracker {
   void propagateSigns(const Complex& cx, const std::vector<Slot>& unsigned_);
   void countSelfHexes(const std::vector<HexId>& hexes, int sign);
   void countSelfHex(HexId h, int sign);
+  void countPair(int32_t la, int32_t lb, int32_t n);
+  // Sheet labels: a new one for sheet id; writing one on a slot (counted per label); the
+  // orientation of a slot's mid-quad (stored relative to its label, which may be flipped).
+  int32_t newLabel(int32_t id);
+  void setLabel(Slot t, int32_t label);
+  int signOf(Slot t) const;
+  void setSign(Slot t, int sign);
+  void pruneLabels(int32_t id);  // drops the sheet's labels no slot carries any more
+  void mergeSheet(int32_t x, int32_t keep, bool flip);
   Dual dual_;
-  std::vector<int32_t> selfHexes_;  // per sheet id: hexes with two or more slots on it
-  SheetFlooder flooder_;            // its signs() persist: one orientation per orientable sheet
+  std::vector<std::vector<int32_t>> labels_;  // per sheet id: the labels naming it
+  std::vector<int32_t> labelSlots_;           // per label: slots carrying it
+  std::vector<uint8_t> labelFlip_;            // per label: its slots' stored orientations are flipped
+  std::vector<int32_t> freeLabels_;           // labels no slot carries, handed out again
+  // Per sheet id: (hex, pair of its axes) with both slots on the sheet; a sheet self-intersects when
+  // it has one. The same pairs across two sheets are counted per pair of labels (a merge reads them).
+  std::vector<int32_t> selfPairs_;
+  class PairCounts {
+   public:
+    void add(int32_t a, int32_t b, int32_t n);
+    int32_t take(int32_t a, int32_t b);  // the count, zeroed
+   private:
+    size_t find(uint64_t key) const;
+    std::vector<uint64_t> keys_;
+    std::vector<int32_t> counts_;
+    size_t used_ = 0;
+    int shift_ = 58;
+  } pairs_;
+  SheetFlooder flooder_;  // its signs() persist: one orientation per orientable sheet
   // Per hex: bit e set when (h, e) is its edge's smallest incidence; kNearBoundary when any of its
   // 12 edges reaches the boundary.
   std::vector<uint16_t> edgeMarks_;
   // Per slot: twice its share of its sheet's Euler characteristic (2 - sides - boundary sides +
   // 2 x primal edges it holds the smallest incidence of); a sheet's Euler characteristic is half the sum.
   std::vector<int8_t> share_;
-  std::vector<int32_t> front_;    // per slot: lockstep front + 1 that reached it (0 outside an update)
-  std::vector<uint16_t> walked_;  // per hex: edges walked by the current refreshShares (0 outside it)
+  std::vector<int32_t> front_;     // per slot: lockstep front + 1 that reached it (0 outside an update)
+  std::vector<uint16_t> walked_;   // per hex: edges walked by the current refreshShares (0 outside it)
   std::vector<int32_t> chordPos_;  // per slot: its place in its chord's slot list
-  std::vector<int64_t> delta_;    // per sheet id: change of twice its Euler characteristic (0 outside an update)
-  size_t slotsTouched_ = 0, sheetSlotsTouched_ = 0, mergedSlots_ = 0;
+  std::vector<int64_t> delta_;     // per sheet id: change of twice its Euler characteristic (0 outside an update)
+  size_t slotsTouched_ = 0, sheetSlotsTouched_ = 0, mergedLabels_ = 0;
   bool reflooded_ = false;
 };
 

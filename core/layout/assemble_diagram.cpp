@@ -136,7 +136,7 @@ SheetDiagram assembleDiagram(const Dual& dual, int sheet, const MidSurface& s, c
       std::vector<SheetDiagram::ChordLine> pieces(1);
       Slot first = s.slots[size_t(i)];
       pieces[0].chord = dual.chordOf[size_t(first.hex)][size_t(b)];
-      pieces[0].otherSheet = dual.sheetOf[size_t(first.hex)][size_t(3 - first.axis - b)];
+      pieces[0].otherSheet = dual.sheetAt(first.hex, 3 - first.axis - b);
       pieces[0].closed = closed;
       int startI = i, startB = b;
       bool closingSeam = false;

@@ -27,7 +27,7 @@ std::vector<std::pair<Slot, int>> ringsAround(const Complex& cx, const Dual& dua
     for (int e : midCycle(slot.axis))
       for (EdgeRef x : cx.edgeCycle({slot.hex, e})) {
         Slot n{x.hex, axisOfEdge(x.edge)};
-        if (dual.sheetOf[size_t(n.hex)][size_t(n.axis)] != sheet) continue;
+        if (dual.sheetAt(n.hex, n.axis) != sheet) continue;
         if (seen.emplace(key(n), true).second) out.push_back({n, depth + 1});
       }
   }
@@ -96,7 +96,7 @@ SheetDiagram layoutLocal(const Complex& cx, const Dual& dual, int sheet, const s
   for (HexId h : hexes) {
     if (!cx.isHex(h)) throw Error("sheet diagram: hex " + std::to_string(h) + " does not exist");
     for (int a = 0; a < 3; ++a)
-      if (dual.sheetOf[size_t(h)][size_t(a)] == sheet) seeds.push_back({h, a});
+      if (dual.sheetAt(h, a) == sheet) seeds.push_back({h, a});
   }
   if (seeds.empty()) throw Error("sheet diagram: none of the given hexes lies on sheet " + std::to_string(sheet));
   return layoutAround(cx, dual, sheet, seeds, rings);
