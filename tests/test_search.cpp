@@ -179,7 +179,6 @@ TEST_CASE("search limits: the state cap and the memory guard stop with a message
   CHECK(capped.message == "stopped at the state cap (--max-states 20) during depth 3");
   CHECK(capped.statesExplored > 20);
   o.maxStates = 1000000;
-  o.maxSeconds = 3600;  // (under ASan on a loaded machine this takes minutes)
   o.maxMemoryMB = 0.01;
   SearchResult guarded = searchDecomposition(pb, o);
   CHECK(guarded.stoppedBy == "memory");
