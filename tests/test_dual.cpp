@@ -145,7 +145,7 @@ TEST_CASE("dual tracker: after an exact undo, releaseRetiredTail gives the redon
 
 namespace {
 struct CollapseCost {
-  size_t explored = 0, merged = 0, chordSlots = 0, undoExplored = 0;
+  size_t explored = 0, merged = 0, chordSlots = 0, undoExplored = 0, pushChordSlots = 0;
 };
 // Face collapse (or a hex push then ring collapse) at the centre of an n^3 grid, dual kept by the
 // tracker, checked against a fresh extraction, then undone; what each update touched.
@@ -154,10 +154,12 @@ CollapseCost collapseAtCentre(int n, bool ring) {
   DualTracker tracker(cx);
   auto id = [&](int i, int j, int k) { return std::to_string(i + n * (j + n * k)); };
   const int c = n / 2;
+  size_t pushChordSlots = 0;
   std::string step = "facecollapse h" + id(c, c, c) + "e11 h" + id(c, c, c) + "f1 h" + id(c, c + 1, c) + "f1";
   if (ring) {
     const HexId first = cx.hexCapacity();
     applyStepTracked(cx, tracker, parseOpStep("hexpush h" + id(c, c, c) + "f5"));
+    pushChordSlots = tracker.chordSlotsTouched();
     step = "ringcollapse h" + std::to_string(first + 2) + "e";
     const HexId ringHex = cx.hexCapacity() - 4;  // the ring chord's axis there names the edge
     for (int a = 0; a < 3; ++a)
@@ -166,7 +168,8 @@ CollapseCost collapseAtCentre(int n, bool ring) {
   StepReport r = applyStepTracked(cx, tracker, parseOpStep(step));
   CHECK_FALSE(tracker.lastUpdateReflooded());
   compareDuals(cx, tracker.dual(), extractDual(cx));
-  CollapseCost cost{tracker.sheetSlotsTouched(), tracker.mergedLabels(), tracker.chordSlotsTouched(), 0};
+  CollapseCost cost{tracker.sheetSlotsTouched(), tracker.mergedLabels(), tracker.chordSlotsTouched(), 0,
+                    pushChordSlots};
   cx.undo(r.result.edits);
   tracker.update(cx, r.result.edits, keepsSheetTopology(r.result));
   CHECK_FALSE(tracker.lastUpdateReflooded());
@@ -193,6 +196,16 @@ TEST_CASE("dual tracker: ring and face collapse updates explore O(region) sheet 
     // re-pointed, no slot is re-written.
     CHECK(small.merged == 1);
     CHECK(big.merged == 1);
+    // The hex push before the ring collapse cuts and re-joins the chords through the pushed hex
+    // next to it: spliced in place, the same slots at every size.
+    if (ring) {
+      CHECK(small.pushChordSlots == 92);
+      CHECK(big.pushChordSlots == small.pushChordSlots);
+    }
+    // Both collapses merge two chords (TK03 §4.4): the merged one is re-walked whole, so chord
+    // slots still grow with n (not spliced: a merge re-writes one piece's per-slot ids).
+    CHECK(small.chordSlots == (ring ? 321 : 162));
+    CHECK(big.chordSlots == (ring ? 561 : 282));
   }
 }
 

@@ -38,17 +38,6 @@ namespace {
 constexpr uint16_t kNearBoundary = kEdgeNearBoundary;
 constexpr uint16_t kWalkedFan = uint16_t(1u << 15);  // in walked_: one of the hex's edges walked is a fan
 
-// The sheet or chord ids on the slots of these hexes, ascending, once each.
-std::vector<int32_t> idsThrough(const std::vector<std::array<int32_t, 3>>& of, const std::vector<HexId>& hexes) {
-  std::vector<int32_t> ids;
-  for (HexId h : hexes)
-    for (int32_t id : of[size_t(h)])
-      if (id >= 0) ids.push_back(id);
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  return ids;
-}
-
 // The sheet ids on the slots of these hexes, ascending, once each.
 std::vector<int32_t> sheetIdsThrough(const Dual& d, const std::vector<HexId>& hexes) {
   std::vector<int32_t> ids;
@@ -1089,16 +1078,117 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
       }
     return true;
   };
-  slotsTouched_ += relabel(cx, touched, dual_.chordOf, dual_.chords, idsThrough(dual_.chordOf, touched), walk,
-                           change.chordsCreated, change.chordsChanged, change.chordsRemoved, unchanged,
-                           [](int id) { return int32_t(id); });
   chordPos_.resize(3 * dual_.chordOf.size(), 0);
+  // The touched slots grouped by chord, so each chord reads only its own.
+  std::vector<std::pair<int32_t, Slot>> through;
+  for (HexId h : touched)
+    for (int a = 0; a < 3; ++a)
+      if (dual_.chordOf[size_t(h)][size_t(a)] >= 0) through.push_back({dual_.chordOf[size_t(h)][size_t(a)], Slot{h, a}});
+  std::sort(through.begin(), through.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<int32_t> rest;
+  std::vector<Slot> own;
+  for (size_t i = 0, j = 0; i < through.size(); i = j) {
+    const int32_t id = through[i].first;
+    own.clear();
+    for (j = i; j < through.size() && through[j].first == id; ++j) own.push_back(through[j].second);
+    if (unchanged(id)) continue;
+    if (spliceChord(cx, touched, id, own)) change.chordsChanged.push_back(id);
+    else rest.push_back(id);
+  }
+  const size_t spliced = change.chordsChanged.size();  // their positions are already written
+  slotsTouched_ += relabel(cx, touched, dual_.chordOf, dual_.chords, rest, walk, change.chordsCreated,
+                           change.chordsChanged, change.chordsRemoved, [](int) { return false; },
+                           [](int id) { return int32_t(id); });
   auto place = [&](int id) {
     const auto& slots = dual_.chords[size_t(id)].slots;
     for (size_t i = 0; i < slots.size(); ++i) chordPos_[3 * size_t(slots[i].hex) + size_t(slots[i].axis)] = int32_t(i);
   };
   for (int id : change.chordsCreated) place(id);
-  for (int id : change.chordsChanged) place(id);
+  for (size_t i = spliced; i < change.chordsChanged.size(); ++i) place(change.chordsChanged[i]);
+}
+
+// An open chord cut and re-joined in one place (TK03 §3.2: an edit changes chords only through the
+// edited hexes) gets the run of its list between the untouched slots either side of its touched
+// slots replaced by a walk between those two: the result, id and order, is the one a re-walk from
+// its smallest touched slot gives (relabel), at the cost of the run. False (nothing written) when
+// that is not sure: closed or self-intersecting chords, touched slots at an end, a run that leaves
+// the touched hexes, meets another chord or leaves slots behind, or a re-walk that would list it
+// the other way round.
+bool DualTracker::spliceChord(const Complex& cx, const std::vector<HexId>& touched, int32_t id,
+                              const std::vector<Slot>& own) {
+  Chord& ch = dual_.chords[size_t(id)];
+  if (ch.closed || ch.selfIntersecting) return false;
+  const size_t len = ch.slots.size();
+  auto isTouched = [&](HexId h) { return std::binary_search(touched.begin(), touched.end(), h); };
+  auto label = [&](Slot s) { return dual_.chordOf[size_t(s.hex)][size_t(s.axis)]; };
+  size_t lo = len, hi = 0, liveOld = 0;
+  for (Slot s : own) {
+    const size_t p = size_t(chordPos_[3 * size_t(s.hex) + size_t(s.axis)]);
+    if (p >= len || !(ch.slots[p] == s)) return false;
+    lo = std::min(lo, p);
+    hi = std::max(hi, p);
+    liveOld += cx.isHex(s.hex);
+  }
+  if (lo == len || lo == 0 || hi + 1 >= len) return false;
+  const Slot from = ch.slots[lo - 1], to = ch.slots[hi + 1];
+  if (isTouched(from.hex) || isTouched(to.hex) || !cx.isHex(from.hex) || !cx.isHex(to.hex)) return false;
+  for (size_t p = lo; p <= hi; ++p)
+    if (!isTouched(ch.slots[p].hex)) return false;
+  // The face of an end slot of the run that leads away from it: the other one leads to `beyond`
+  // (or to the boundary at the chord's end). -1 when both or neither do.
+  auto inward = [&](Slot s, bool atEnd, Slot beyond) {
+    int found = -1, count = 0;
+    for (int f = 2 * s.axis; f < 2 * s.axis + 2; ++f) {
+      Gluing g = cx.gluing(s.hex, f);
+      const bool back = atEnd ? g.boundary() : (!g.boundary() && Slot{g.hex, tables::axisOfFace(g.face)} == beyond);
+      if (!back) found = f;
+      count += back;
+    }
+    return count == 1 ? found : -1;
+  };
+  const int exitFace = inward(from, lo == 1, lo >= 2 ? ch.slots[lo - 2] : from);
+  const int entryFace = inward(to, hi + 2 == len, hi + 2 < len ? ch.slots[hi + 2] : to);
+  if (exitFace < 0 || entryFace < 0) return false;
+  std::vector<Slot> run;
+  size_t liveKept = 0;
+  Slot cur = from;
+  int exit = exitFace;
+  for (;;) {
+    Gluing g = cx.gluing(cur.hex, exit);
+    if (g.boundary()) return false;
+    cur = {g.hex, tables::axisOfFace(g.face)};
+    if (cur == to) {
+      if (g.face != entryFace) return false;
+      break;
+    }
+    if (!isTouched(cur.hex) || run.size() >= 3 * touched.size() || std::find(run.begin(), run.end(), cur) != run.end())
+      return false;
+    const int32_t was = label(cur);
+    if (was != id && was != -1) return false;
+    liveKept += was == id;
+    run.push_back(cur);
+    exit = tables::oppositeFace(g.face);
+  }
+  slotsTouched_ += run.size() + (hi - lo + 1);
+  if (liveKept != liveOld) return false;
+  // relabel re-walks from the smallest touched slot back through its low face: that end must stay first.
+  const auto smallest = std::min_element(run.begin(), run.end());
+  if (smallest == run.end()) return false;
+  Gluing low = cx.gluing(smallest->hex, 2 * smallest->axis);
+  const Slot before = smallest == run.begin() ? from : *(smallest - 1);
+  if (low.boundary() || !(Slot{low.hex, tables::axisOfFace(low.face)} == before)) return false;
+  for (size_t p = lo; p <= hi; ++p)
+    if (!cx.isHex(ch.slots[p].hex)) dual_.chordOf[size_t(ch.slots[p].hex)][size_t(ch.slots[p].axis)] = -1;
+  for (Slot t : run) dual_.chordOf[size_t(t.hex)][size_t(t.axis)] = id;
+  for (Slot t : run)
+    for (int a = 1; a < 3; ++a) ch.selfIntersecting = ch.selfIntersecting || label({t.hex, (t.axis + a) % 3}) == id;
+  std::vector<Slot>& slots = ch.slots;
+  slots.erase(slots.begin() + std::ptrdiff_t(lo), slots.begin() + std::ptrdiff_t(hi + 1));
+  slots.insert(slots.begin() + std::ptrdiff_t(lo), run.begin(), run.end());
+  // Positions after the run shift when its length changes: array writes, no walk.
+  const size_t end = run.size() + 1 == hi - lo + 2 ? lo + run.size() : slots.size();
+  for (size_t p = lo; p < end; ++p) chordPos_[3 * size_t(slots[p].hex) + size_t(slots[p].axis)] = int32_t(p);
+  return true;
 }
 
 }  // namespace hexdual

@@ -5,10 +5,11 @@
 // writes no slot: see Dual::sheetLabel); Euler characteristics, loops and
 // orientations of the remainder follow from per-slot shares kept between updates. Edits that
 // touch the boundary or non-orientable sheets re-flood the sheets they touch. Chords through the
-// touched hexes are re-walked. Surviving sheets and chords keep their ids; new ones get fresh ids;
-// when sheets merge or split, the unexplored remainder keeps the id of its largest old sheet and
-// explored pieces keep an old id only when they are all that is left of it; chords follow the
-// smallest old id.
+// touched hexes are re-walked, except an open one cut and re-joined in one place: its run
+// through the touched hexes is spliced in place (same id and order as a re-walk). Surviving
+// sheets and chords keep their ids; new ones get fresh ids; when sheets merge or split, the
+// unexplored remainder keeps the id of its largest old sheet and explored pieces keep an old id
+// only when they are all that is left of it; chords follow the smallest old id.
 #pragma once
 #include <vector>
 
@@ -53,6 +54,8 @@ class DualTracker {
   bool updateSheetsLockstep(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
+  // `own`: the slots of chord `id` in the touched hexes.
+  bool spliceChord(const Complex& cx, const std::vector<HexId>& touched, int32_t id, const std::vector<Slot>& own);
   // Recomputes the smallest-incidence marks of the edges through the live touched hexes and the
   // mid-surface share of every slot whose share the edit changed, listing the changes when asked.
   struct ShareChange {
