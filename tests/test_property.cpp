@@ -158,3 +158,49 @@ TEST_CASE("property: lockstep sheet updates on 7x7x7 and 8x6x6 grids") {
   CHECK(stats.perOp["facecollapse"] > 0);
   CHECK(stats.perOp["ringcollapse"] > 0);
 }
+
+// Longer sequences where steps are undone at random right after they are applied (as the explorer's
+// back button does), with the whole dual checked after every step and every undo.
+TEST_CASE("property: sequences with interleaved undos keep every sheet and chord list exact") {
+  int sequences = 200;
+  if (const char* env = std::getenv("HEXDUAL_PROPERTY_SEQUENCES")) sequences = std::min(sequences, std::atoi(env));
+  const uint32_t firstSeed = 20261202;
+  std::vector<Complex> meshes{makeGrid(6, 6, 6), makeRing(10, 3, 3), makeGrid(7, 5, 5)};
+  int64_t applied = 0, undone = 0;
+  for (int k = 0; k < sequences; ++k) {
+    const uint32_t seed = firstSeed + uint32_t(k);
+    CAPTURE(seed);
+    std::mt19937 rng(seed);
+    Complex cx = meshes[size_t(k) % meshes.size()];
+    DualTracker tracker(cx);
+    std::vector<HexId> recent;
+    for (int step = 0; step < 40; ++step) {
+      const std::string text = randomStep(cx, rng, recent, k % 2 == 0);
+      CAPTURE(step);
+      CAPTURE(text);
+      OpResult r;
+      try {
+        r = applyStep(cx, text);
+      } catch (const Error&) {
+        continue;
+      }
+      ++applied;
+      tracker.update(cx, r.edits, keepsSheetTopology(r));
+      validateDual(cx, tracker.dual());
+      recent = r.createdHexes;
+      if (rng() % 4 == 0) {
+        cx.undo(r.edits);
+        tracker.update(cx, r.edits, keepsSheetTopology(r));
+        tracker.releaseRetiredTail();
+        validateDual(cx, tracker.dual());
+        ++undone;
+        recent.clear();
+      }
+    }
+    compareDuals(cx, tracker.dual(), extractDual(cx));
+  }
+  MESSAGE("property (interleaved undos): " << sequences << " sequences, seeds " << firstSeed << ".."
+                                           << firstSeed + uint32_t(sequences) - 1 << ": " << applied << " steps applied, "
+                                           << undone << " undone at once");
+  CHECK(undone > sequences);
+}

@@ -781,9 +781,10 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
         signs[3 * size_t(h) + size_t(a)] = 0;
       }
     }
-  for (size_t p = 0; p < pieces.size(); ++p)
-    for (size_t i = 0; i < pieces[p].size(); ++i)
-      if (pieceLabels[p][i] >= 0) leaving[oldIndex(pieceLabels[p][i])].push_back(pieces[p][i]);
+  // (By each slot's own label: pieces are sorted by now, their pieceLabels are not.)
+  for (const auto& piece : pieces)
+    for (Slot t : piece)
+      if (label(t) >= 0) leaving[oldIndex(label(t))].push_back(t);
   // Pieces: labelled, oriented by a flood of their own slots, loops walked and charged to the old sheet they came from.
   for (size_t p = 0; p < pieces.size(); ++p) {
     const int32_t id = pieceId[p];
