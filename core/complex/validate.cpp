@@ -200,20 +200,38 @@ void Complex::validateLinks(const std::vector<int32_t>& edgeClass) const {
 
 namespace hexdual {
 
+namespace {
+// Open-addressing tables sized for n keys: a power of two, at least twice n.
+size_t tableSize(size_t n) {
+  size_t cap = 16;
+  while (cap < 2 * n) cap *= 2;
+  return cap;
+}
+size_t slotOf(uint64_t key, size_t cap) { return size_t((key * 0x9E3779B97F4A7C15ull) >> 40) & (cap - 1); }
+}  // namespace
+
 void Complex::validateAround(const std::vector<HexId>& hexList) const {
-  // vertex << 32 | place in hexList << 3 | corner: sorted, the first entry of each vertex is its first corner met
-  std::vector<uint64_t> firstCorner;
-  firstCorner.reserve(8 * hexList.size());
-  for (size_t order = 0; order < hexList.size(); ++order) {
-    const HexId h = hexList[order];
-    if (!isHex(h)) continue;
-    for (int c = 0; c < 8; ++c) {
+  // Each live listed hex once, in list order: a repeat would only repeat the checks (and their message).
+  std::vector<HexId> once;
+  once.reserve(hexList.size());
+  {
+    std::vector<HexId> seen(tableSize(hexList.size()), -1);
+    for (HexId h : hexList) {
+      if (!isHex(h)) continue;
+      size_t i = slotOf(uint64_t(uint32_t(h)), seen.size());
+      while (seen[i] >= 0 && seen[i] != h) i = (i + 1) & (seen.size() - 1);
+      if (seen[i] == h) continue;
+      seen[i] = h;
+      once.push_back(h);
+    }
+  }
+  for (HexId h : once) {
+    for (int c = 1; c < 8; ++c) {
       VertexId v = verts_[h][c];
       for (int d = 0; d < c; ++d)
         if (verts_[h][d] == v)
           fail("hex " + std::to_string(h) + " uses vertex " + std::to_string(v) + " at corners " + std::to_string(d) +
                " and " + std::to_string(c));
-      firstCorner.push_back(uint64_t(uint32_t(v)) << 32 | uint64_t(order) << 3 | uint64_t(c));
     }
     for (int f = 0; f < 6; ++f) {
       Gluing g = gluing(h, f);
@@ -229,16 +247,40 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
       }
     }
   }
-  // Vertex links, found by walking from the first corner met: connected, and a sphere or a disk.
-  // Inside a transaction only the links its edits changed (the complex was valid at its start).
-  std::sort(firstCorner.begin(), firstCorner.end());
-  const std::vector<VertexId> changed = journaling_ ? verticesWithEditedStars() : std::vector<VertexId>{};
+  // One corner of each vertex of the listed hexes: entry (v + 1) << 32 | walked << 31 | hex << 3 | corner.
+  std::vector<uint64_t> cornerOf(tableSize(8 * once.size()), 0);
+  const size_t mask = cornerOf.size() - 1;
+  auto entryOf = [&](VertexId v) -> uint64_t& {
+    size_t i = slotOf(uint64_t(uint32_t(v)), cornerOf.size());
+    while (cornerOf[i] && (cornerOf[i] >> 32) != uint64_t(uint32_t(v)) + 1) i = (i + 1) & mask;
+    return cornerOf[i];
+  };
+  for (HexId h : once)
+    for (int c = 0; c < 8; ++c) {
+      uint64_t& e = entryOf(verts_[h][c]);
+      if (!e) e = (uint64_t(uint32_t(verts_[h][c])) + 1) << 32 | uint64_t(uint32_t(h)) << 3 | uint64_t(c);
+    }
+  // Vertex links, walked from that corner: connected, and a sphere or a disk. Inside a transaction
+  // only the links its edits changed (the complex was valid at its start). In ascending vertex
+  // order, so the first broken link named is the smallest vertex's.
+  std::vector<uint64_t> walks;  // v << 32 | hex << 3 | corner
+  constexpr uint64_t kWalked = uint64_t(1) << 31;
+  auto take = [&](uint64_t& e) {
+    if (!e || (e & kWalked)) return;
+    e |= kWalked;
+    walks.push_back(((e >> 32) - 1) << 32 | (e & (kWalked - 1)));
+  };
+  if (journaling_) {
+    for (VertexId v : verticesWithEditedStars()) take(entryOf(v));
+  } else {
+    for (uint64_t& e : cornerOf) take(e);
+  }
+  std::sort(walks.begin(), walks.end());
   VertexStar star;
-  for (size_t i = 0; i < firstCorner.size(); ++i) {
-    const VertexId v = VertexId(firstCorner[i] >> 32);
-    if ((i > 0 && (firstCorner[i - 1] >> 32) == uint64_t(uint32_t(v))) || tolerated(nonManifold_, v)) continue;
-    if (journaling_ && !std::binary_search(changed.begin(), changed.end(), v)) continue;
-    walkStar(hexList[size_t((firstCorner[i] & 0xFFFFFFFFu) >> 3)], int(firstCorner[i] & 7u), star);
+  for (uint64_t w : walks) {
+    const VertexId v = VertexId(w >> 32);
+    if (tolerated(nonManifold_, v)) continue;
+    walkStar(HexId((w & 0xFFFFFFFFu) >> 3), int(w & 7u), star);
     if ((int32_t)star.corners.size() != refs_[v]) fail("vertex " + std::to_string(v) + " is non-manifold: its link is not connected");
     std::string why = linkEulerProblem(star.edges, int64_t(star.corners.size()), star.boundarySides);
     if (!why.empty()) fail("vertex " + std::to_string(v) + " " + why);
@@ -246,9 +288,10 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
 }
 
 // A vertex's link changes only when a corner at it is added, removed or re-pointed, or a face at it
-// is glued or unglued: the vertices of the open transaction's edits, ascending (a superset).
+// is glued or unglued: the vertices of the open transaction's edits (a superset, with repeats).
 std::vector<VertexId> Complex::verticesWithEditedStars() const {
   std::vector<VertexId> out;
+  out.reserve(8 * journal_.size());
   auto addFace = [&](HexId h, int f) {
     for (int c : kFaceCorners[size_t(f)]) out.push_back(verts_[size_t(h)][size_t(c)]);
   };
@@ -263,8 +306,6 @@ std::vector<VertexId> Complex::verticesWithEditedStars() const {
       addFace(HexId(e.value >> 6), int((e.value >> 3) & 7));
     }
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 
@@ -313,11 +354,16 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
         } else {
           insert(k2, j);
         }
-        for (int a = 0; a < 3; ++a) st.link.push_back(int(3 * j) + a);
-        classes += 3;
-      } else if (j < i) {
-        continue;  // this quad was crossed from corner j's side already: the same edges were joined
+        // A new corner's two edges in the crossed face are the two of corner i (fresh incidences
+        // joined at once: no union-find steps); its third edge starts a class of its own.
+        st.link.resize(st.link.size() + 3);
+        st.link[3 * j + size_t(step.axis[0])] = root(int(3 * i) + (k + 1) % 3);
+        st.link[3 * j + size_t(step.axis[1])] = root(int(3 * i) + (k + 2) % 3);
+        st.link[3 * j + size_t(3 - step.axis[0] - step.axis[1])] = int(3 * j) + 3 - step.axis[0] - step.axis[1];
+        classes += 1;
+        continue;
       }
+      if (j < i) continue;  // this quad was crossed from corner j's side already: the same edges were joined
       // The two edges of c in the face (along the axes other than its normal) and their images.
       for (int e = 0; e < 2; ++e) {
         const int x = root(int(3 * i) + (k + 1 + e) % 3), y = root(int(3 * j) + step.axis[size_t(e)]);
