@@ -313,68 +313,86 @@ std::vector<VertexId> Complex::verticesWithEditedStars() const {
 // edges as classes of (corner, edge) incidences joined across glued faces (each edge's cycle or fan
 // round the vertex), without walking whole edge cycles or allocating once warm.
 void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
-  st.corners.assign(1, {h0, c0});
-  st.link.assign({0, 1, 2});
-  st.boundarySides = 0;
-  // A valid star has refs_[v] corners; the index holds at least twice that (grown if ever exceeded).
-  size_t cap = 16;
-  while (cap < 2 * size_t(refs_[size_t(verts_[size_t(h0)][size_t(c0)])])) cap *= 2;
-  st.index.assign(cap, 0);
+  // A valid star has refs_[v] corners: the arrays are sized for that once (grown if ever exceeded)
+  // and written through local pointers, counted by n; the index holds at least twice as many.
+  size_t room = std::max<size_t>(1, size_t(refs_[size_t(verts_[size_t(h0)][size_t(c0)])]));
+  if (st.corners.size() < room) st.corners.resize(room);
+  if (st.link.size() < 3 * room) st.link.resize(3 * room);
+  room = st.corners.size();
+  std::pair<HexId, int>* corners = st.corners.data();
+  int* link = st.link.data();
+  st.index.assign(tableSize(room), 0);
+  uint64_t* index = st.index.data();
+  size_t mask = st.index.size() - 1;
   auto key = [](HexId h, int c) { return uint64_t(uint32_t(h)) << 3 | uint64_t(c); };
   auto probe = [&](uint64_t k) {  // the index entry of k, or the empty entry where it belongs
-    size_t i = size_t((k * 0x9E3779B97F4A7C15ull) >> 40) & (st.index.size() - 1);
-    while (st.index[i] && (st.index[i] >> 32) != k) i = (i + 1) & (st.index.size() - 1);
+    size_t i = slotOf(k, mask + 1);
+    while (index[i] && (index[i] >> 32) != k) i = (i + 1) & mask;
     return i;
   };
-  auto insert = [&](uint64_t k, size_t place) { st.index[probe(k)] = k << 32 | uint64_t(place + 1); };
-  insert(key(h0, c0), 0);
   auto root = [&](int x) {
-    while (st.link[size_t(x)] != x) x = st.link[size_t(x)] = st.link[size_t(st.link[size_t(x)])];
+    while (link[x] != x) x = link[x] = link[link[x]];
     return x;
   };
+  size_t n = 1;
+  corners[0] = {h0, c0};
+  link[0] = 0, link[1] = 1, link[2] = 2;
+  index[probe(key(h0, c0))] = key(h0, c0) << 32 | 1u;
   int classes = 3;
-  for (size_t i = 0; i < st.corners.size(); ++i) {
-    const auto [h, c] = st.corners[i];
+  int64_t boundarySides = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const auto [h, c] = corners[i];
     for (int k = 0; k < 3; ++k) {
       const uint32_t g = glue_[size_t(h)][size_t(2 * k + cornerBit(c, k))];
       if (g == kBoundary) {
-        ++st.boundarySides;
+        ++boundarySides;
         continue;
       }
-      const HexId n = HexId(g >> 6);
       const CornerStep& step = kCornerSteps[size_t(cornerStepIndex(c, k, int((g >> 3) & 7), int(g & 7)))];
-      const uint64_t k2 = key(n, step.corner);
-      const uint64_t at = st.index[probe(k2)];
-      size_t j = at ? size_t(at & 0xFFFFFFFFu) - 1 : st.corners.size();
-      if (j == st.corners.size()) {
-        st.corners.push_back({n, step.corner});
-        if (2 * st.corners.size() > st.index.size()) {
-          st.index.assign(2 * st.index.size(), 0);
-          for (size_t q = 0; q < st.corners.size(); ++q) insert(key(st.corners[q].first, st.corners[q].second), q);
-        } else {
-          insert(k2, j);
+      const uint64_t k2 = key(HexId(g >> 6), step.corner);
+      const size_t at = probe(k2);
+      if (!index[at]) {  // a new corner j
+        const size_t j = n++;
+        if (n > room) {  // more corners than the vertex has: an inconsistent gluing elsewhere
+          room *= 2;
+          st.corners.resize(room);
+          st.link.resize(3 * room);
+          corners = st.corners.data();
+          link = st.link.data();
         }
-        // A new corner's two edges in the crossed face are the two of corner i (fresh incidences
-        // joined at once: no union-find steps); its third edge starts a class of its own.
-        st.link.resize(st.link.size() + 3);
-        st.link[3 * j + size_t(step.axis[0])] = root(int(3 * i) + (k + 1) % 3);
-        st.link[3 * j + size_t(step.axis[1])] = root(int(3 * i) + (k + 2) % 3);
-        st.link[3 * j + size_t(3 - step.axis[0] - step.axis[1])] = int(3 * j) + 3 - step.axis[0] - step.axis[1];
+        corners[j] = {HexId(g >> 6), step.corner};
+        if (2 * n > mask + 1) {
+          st.index.assign(2 * (mask + 1), 0);
+          index = st.index.data();
+          mask = st.index.size() - 1;
+          for (size_t q = 0; q < n; ++q) index[probe(key(corners[q].first, corners[q].second))] = key(corners[q].first, corners[q].second) << 32 | (q + 1);
+        } else {
+          index[at] = k2 << 32 | (j + 1);
+        }
+        // Its two edges in the crossed face are the two of corner i (fresh incidences joined at
+        // once: no union-find steps); its third edge starts a class of its own.
+        const int a0 = step.axis[0], a1 = step.axis[1], a2 = 3 - a0 - a1;
+        link[3 * j + size_t(a0)] = root(int(3 * i) + (k + 1) % 3);
+        link[3 * j + size_t(a1)] = root(int(3 * i) + (k + 2) % 3);
+        link[3 * j + size_t(a2)] = int(3 * j) + a2;
         classes += 1;
         continue;
       }
+      const size_t j = size_t(index[at] & 0xFFFFFFFFu) - 1;
       if (j < i) continue;  // this quad was crossed from corner j's side already: the same edges were joined
       // The two edges of c in the face (along the axes other than its normal) and their images.
       for (int e = 0; e < 2; ++e) {
         const int x = root(int(3 * i) + (k + 1 + e) % 3), y = root(int(3 * j) + step.axis[size_t(e)]);
         if (x != y) {
-          st.link[size_t(std::max(x, y))] = std::min(x, y);
+          link[std::max(x, y)] = std::min(x, y);
           --classes;
         }
       }
     }
   }
+  st.corners.resize(n);
   st.edges = classes;
+  st.boundarySides = boundarySides;
 }
 
 }  // namespace hexdual
