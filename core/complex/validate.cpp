@@ -211,11 +211,14 @@ size_t slotOf(uint64_t key, size_t cap) { return size_t((key * 0x9E3779B97F4A7C1
 }  // namespace
 
 void Complex::validateAround(const std::vector<HexId>& hexList) const {
+  // Scratch kept between calls (every operation runs this check): no allocation once warm.
+  thread_local std::vector<HexId> once, seen;
+  thread_local std::vector<uint64_t> cornerOf, walks;
+  thread_local VertexStar star;
   // Each live listed hex once, in list order: a repeat would only repeat the checks (and their message).
-  std::vector<HexId> once;
-  once.reserve(hexList.size());
+  once.clear();
   {
-    std::vector<HexId> seen(tableSize(hexList.size()), -1);
+    seen.assign(tableSize(hexList.size()), -1);
     for (HexId h : hexList) {
       if (!isHex(h)) continue;
       size_t i = slotOf(uint64_t(uint32_t(h)), seen.size());
@@ -248,7 +251,7 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
     }
   }
   // One corner of each vertex of the listed hexes: entry (v + 1) << 32 | walked << 31 | hex << 3 | corner.
-  std::vector<uint64_t> cornerOf(tableSize(8 * once.size()), 0);
+  cornerOf.assign(tableSize(8 * once.size()), 0);
   const size_t mask = cornerOf.size() - 1;
   auto entryOf = [&](VertexId v) -> uint64_t& {
     size_t i = slotOf(uint64_t(uint32_t(v)), cornerOf.size());
@@ -263,7 +266,7 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
   // Vertex links, walked from that corner: connected, and a sphere or a disk. Inside a transaction
   // only the links its edits changed (the complex was valid at its start). In ascending vertex
   // order, so the first broken link named is the smallest vertex's.
-  std::vector<uint64_t> walks;  // v << 32 | hex << 3 | corner
+  walks.clear();  // v << 32 | hex << 3 | corner
   constexpr uint64_t kWalked = uint64_t(1) << 31;
   auto take = [&](uint64_t& e) {
     if (!e || (e & kWalked)) return;
@@ -276,7 +279,6 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
     for (uint64_t& e : cornerOf) take(e);
   }
   std::sort(walks.begin(), walks.end());
-  VertexStar star;
   for (uint64_t w : walks) {
     const VertexId v = VertexId(w >> 32);
     if (tolerated(nonManifold_, v)) continue;
