@@ -342,9 +342,13 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
   index[probe(key(h0, c0))] = key(h0, c0) << 32 | 1u;
   int classes = 3;
   int64_t boundarySides = 0;
+  // A corner's second member holds, above its 3 bits, the axes of its faces already crossed from
+  // an earlier corner: crossing back would only find that corner (gluings are symmetric), so skip.
   for (size_t i = 0; i < n; ++i) {
-    const auto [h, c] = corners[i];
+    const HexId h = corners[i].first;
+    const int c = corners[i].second & 7, crossed = corners[i].second >> 3;
     for (int k = 0; k < 3; ++k) {
+      if (crossed >> k & 1) continue;
       const uint32_t g = glue_[size_t(h)][size_t(2 * k + cornerBit(c, k))];
       if (g == kBoundary) {
         ++boundarySides;
@@ -353,6 +357,7 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
       const CornerStep& step = kCornerSteps[size_t(cornerStepIndex(c, k, int((g >> 3) & 7), int(g & 7)))];
       const uint64_t k2 = key(HexId(g >> 6), step.corner);
       const size_t at = probe(k2);
+      const int arrivedBy = 8 << (((g >> 3) & 7) >> 1);  // the axis of the face the step enters by
       if (!index[at]) {  // a new corner j
         const size_t j = n++;
         if (n > room) {  // more corners than the vertex has: an inconsistent gluing elsewhere
@@ -362,12 +367,15 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
           corners = st.corners.data();
           link = st.link.data();
         }
-        corners[j] = {HexId(g >> 6), step.corner};
+        corners[j] = {HexId(g >> 6), step.corner | arrivedBy};
         if (2 * n > mask + 1) {
           st.index.assign(2 * (mask + 1), 0);
           index = st.index.data();
           mask = st.index.size() - 1;
-          for (size_t q = 0; q < n; ++q) index[probe(key(corners[q].first, corners[q].second))] = key(corners[q].first, corners[q].second) << 32 | (q + 1);
+          for (size_t q = 0; q < n; ++q) {
+            const uint64_t kq = key(corners[q].first, corners[q].second & 7);
+            index[probe(kq)] = kq << 32 | (q + 1);
+          }
         } else {
           index[at] = k2 << 32 | (j + 1);
         }
@@ -382,6 +390,7 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
       }
       const size_t j = size_t(index[at] & 0xFFFFFFFFu) - 1;
       if (j < i) continue;  // this quad was crossed from corner j's side already: the same edges were joined
+      if (j > i) corners[j].second |= arrivedBy;
       // The two edges of c in the face (along the axes other than its normal) and their images.
       for (int e = 0; e < 2; ++e) {
         const int x = root(int(3 * i) + (k + 1 + e) % 3), y = root(int(3 * j) + step.axis[size_t(e)]);
