@@ -68,7 +68,8 @@ template <auto F, auto Precheck = nullptr>
 OpInfo row(OpKind kind, const char* name, char urlCode, bool keepsSheetTopology, CandidateSet candidates, CountChange counts) {
   using S = Signature<decltype(F)>;
   std::string (*precheck)(const Complex&, const OpStep&) = nullptr;
-  if constexpr (Precheck != nullptr) precheck = &Signature<decltype(Precheck)>::template check<Precheck>;
+  if constexpr (!std::is_same_v<decltype(Precheck), std::nullptr_t>)  // by type: sanitizer builds do not fold function addresses
+    precheck = &Signature<decltype(Precheck)>::template check<Precheck>;
   return {kind, name, urlCode, S::kinds(), keepsSheetTopology, candidates, counts, &S::template apply<F>, precheck};
 }
 
