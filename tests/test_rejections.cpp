@@ -1,6 +1,9 @@
 // Every rejection rule of every operation: the exact message, and the complex unchanged.
 #include <doctest/doctest.h>
 
+#include <optional>
+#include <random>
+
 #include "complex/builders.hpp"
 #include "flips/flip.hpp"
 #include "helpers.hpp"
@@ -58,7 +61,46 @@ TEST_CASE("every rejection rule names the rule and leaves the complex exactly as
     std::string before = stateDump(cx);
     CHECK(errorOf([&] { applyStep(cx, c.step); }) == c.message);
     CHECK(stateDump(cx) == before);
+    // The non-throwing form rejects with the same message (by the precheck or the operation).
+    std::string why;
+    CHECK_FALSE(tryApplyStep(cx, c.step, &why).has_value());
+    CHECK(why == c.message);
+    CHECK(stateDump(cx) == before);
   }
+}
+
+TEST_CASE("tryApplyStep applies and rejects exactly the steps applyStep does, with the same messages and ids") {
+  // Random pillow, hex push and chord push steps on two copies of a 4^3 grid, one through each form.
+  const uint32_t seed = 20261202;
+  MESSAGE("seed " << seed);
+  std::mt19937 rng(seed);
+  Complex a = makeGrid(4, 4, 4), b = makeGrid(4, 4, 4);
+  int applied = 0, rejected = 0;
+  const char* ops[] = {"pillow", "hexpush", "chordpush"};
+  for (int s = 0; s < 600; ++s) {
+    const std::string h = "h" + std::to_string(rng() % uint32_t(a.hexCapacity()));
+    const std::string op = ops[rng() % 3];
+    const std::string step = op == "chordpush" ? op + " " + h + "e" + std::to_string(rng() % 12) + " " + h + "f" +
+                                                     std::to_string(rng() % 6) + " " + h + "f" + std::to_string(rng() % 6)
+                                               : op + " " + h + "f" + std::to_string(rng() % 6);
+    CAPTURE(step);
+    const std::string thrown = errorOf([&] { applyStep(a, step); });
+    std::string why;
+    const std::string before = stateDump(b);
+    std::optional<OpResult> r = tryApplyStep(b, step, &why);
+    CHECK(r.has_value() == thrown.empty());
+    if (r) {
+      ++applied;
+    } else {
+      ++rejected;
+      CHECK(why == thrown);
+      CHECK(stateDump(b) == before);
+    }
+    REQUIRE(stateDump(a) == stateDump(b));
+  }
+  MESSAGE(applied << " applied, " << rejected << " rejected");
+  CHECK(applied > 100);
+  CHECK(rejected > 100);
 }
 
 TEST_CASE("composite and flip rejections leave the complex unchanged") {

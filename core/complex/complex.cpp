@@ -99,6 +99,7 @@ void Complex::setCorner(HexId h, int c, VertexId v) {
 void Complex::beginTransaction() {
   if (journaling_) throw Error("beginTransaction: a transaction is already open");
   journal_.clear();
+  journal_.reserve(64);  // the committed journal was moved out; an operation logs a few dozen edits
   journaling_ = true;
   revisionAtBegin_ = revision_;
 }

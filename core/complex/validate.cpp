@@ -200,20 +200,41 @@ void Complex::validateLinks(const std::vector<int32_t>& edgeClass) const {
 
 namespace hexdual {
 
+namespace {
+// Open-addressing tables sized for n keys: a power of two, at least twice n.
+size_t tableSize(size_t n) {
+  size_t cap = 16;
+  while (cap < 2 * n) cap *= 2;
+  return cap;
+}
+size_t slotOf(uint64_t key, size_t cap) { return size_t((key * 0x9E3779B97F4A7C15ull) >> 40) & (cap - 1); }
+}  // namespace
+
 void Complex::validateAround(const std::vector<HexId>& hexList) const {
-  // vertex << 32 | place in hexList << 3 | corner: sorted, the first entry of each vertex is its first corner met
-  std::vector<uint64_t> firstCorner;
-  firstCorner.reserve(8 * hexList.size());
-  for (size_t order = 0; order < hexList.size(); ++order) {
-    const HexId h = hexList[order];
-    if (!isHex(h)) continue;
-    for (int c = 0; c < 8; ++c) {
+  // Scratch kept between calls (every operation runs this check): no allocation once warm.
+  thread_local std::vector<HexId> once, seen;
+  thread_local std::vector<uint64_t> cornerOf, walks;
+  thread_local VertexStar star;
+  // Each live listed hex once, in list order: a repeat would only repeat the checks (and their message).
+  once.clear();
+  {
+    seen.assign(tableSize(hexList.size()), -1);
+    for (HexId h : hexList) {
+      if (!isHex(h)) continue;
+      size_t i = slotOf(uint64_t(uint32_t(h)), seen.size());
+      while (seen[i] >= 0 && seen[i] != h) i = (i + 1) & (seen.size() - 1);
+      if (seen[i] == h) continue;
+      seen[i] = h;
+      once.push_back(h);
+    }
+  }
+  for (HexId h : once) {
+    for (int c = 1; c < 8; ++c) {
       VertexId v = verts_[h][c];
       for (int d = 0; d < c; ++d)
         if (verts_[h][d] == v)
           fail("hex " + std::to_string(h) + " uses vertex " + std::to_string(v) + " at corners " + std::to_string(d) +
                " and " + std::to_string(c));
-      firstCorner.push_back(uint64_t(uint32_t(v)) << 32 | uint64_t(order) << 3 | uint64_t(c));
     }
     for (int f = 0; f < 6; ++f) {
       Gluing g = gluing(h, f);
@@ -229,16 +250,39 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
       }
     }
   }
-  // Vertex links, found by walking from the first corner met: connected, and a sphere or a disk.
-  // Inside a transaction only the links its edits changed (the complex was valid at its start).
-  std::sort(firstCorner.begin(), firstCorner.end());
-  const std::vector<VertexId> changed = journaling_ ? verticesWithEditedStars() : std::vector<VertexId>{};
-  VertexStar star;
-  for (size_t i = 0; i < firstCorner.size(); ++i) {
-    const VertexId v = VertexId(firstCorner[i] >> 32);
-    if ((i > 0 && (firstCorner[i - 1] >> 32) == uint64_t(uint32_t(v))) || tolerated(nonManifold_, v)) continue;
-    if (journaling_ && !std::binary_search(changed.begin(), changed.end(), v)) continue;
-    walkStar(hexList[size_t((firstCorner[i] & 0xFFFFFFFFu) >> 3)], int(firstCorner[i] & 7u), star);
+  // One corner of each vertex of the listed hexes: entry (v + 1) << 32 | walked << 31 | hex << 3 | corner.
+  cornerOf.assign(tableSize(8 * once.size()), 0);
+  const size_t mask = cornerOf.size() - 1;
+  auto entryOf = [&](VertexId v) -> uint64_t& {
+    size_t i = slotOf(uint64_t(uint32_t(v)), cornerOf.size());
+    while (cornerOf[i] && (cornerOf[i] >> 32) != uint64_t(uint32_t(v)) + 1) i = (i + 1) & mask;
+    return cornerOf[i];
+  };
+  for (HexId h : once)
+    for (int c = 0; c < 8; ++c) {
+      uint64_t& e = entryOf(verts_[h][c]);
+      if (!e) e = (uint64_t(uint32_t(verts_[h][c])) + 1) << 32 | uint64_t(uint32_t(h)) << 3 | uint64_t(c);
+    }
+  // Vertex links, walked from that corner: connected, and a sphere or a disk. Inside a transaction
+  // only the links its edits changed (the complex was valid at its start). In ascending vertex
+  // order, so the first broken link named is the smallest vertex's.
+  walks.clear();  // v << 32 | hex << 3 | corner
+  constexpr uint64_t kWalked = uint64_t(1) << 31;
+  auto take = [&](uint64_t& e) {
+    if (!e || (e & kWalked)) return;
+    e |= kWalked;
+    walks.push_back(((e >> 32) - 1) << 32 | (e & (kWalked - 1)));
+  };
+  if (journaling_) {
+    for (VertexId v : verticesWithEditedStars()) take(entryOf(v));
+  } else {
+    for (uint64_t& e : cornerOf) take(e);
+  }
+  std::sort(walks.begin(), walks.end());
+  for (uint64_t w : walks) {
+    const VertexId v = VertexId(w >> 32);
+    if (tolerated(nonManifold_, v)) continue;
+    walkStar(HexId((w & 0xFFFFFFFFu) >> 3), int(w & 7u), star);
     if ((int32_t)star.corners.size() != refs_[v]) fail("vertex " + std::to_string(v) + " is non-manifold: its link is not connected");
     std::string why = linkEulerProblem(star.edges, int64_t(star.corners.size()), star.boundarySides);
     if (!why.empty()) fail("vertex " + std::to_string(v) + " " + why);
@@ -246,9 +290,10 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
 }
 
 // A vertex's link changes only when a corner at it is added, removed or re-pointed, or a face at it
-// is glued or unglued: the vertices of the open transaction's edits, ascending (a superset).
+// is glued or unglued: the vertices of the open transaction's edits (a superset, with repeats).
 std::vector<VertexId> Complex::verticesWithEditedStars() const {
   std::vector<VertexId> out;
+  out.reserve(8 * journal_.size());
   auto addFace = [&](HexId h, int f) {
     for (int c : kFaceCorners[size_t(f)]) out.push_back(verts_[size_t(h)][size_t(c)]);
   };
@@ -263,8 +308,6 @@ std::vector<VertexId> Complex::verticesWithEditedStars() const {
       addFace(HexId(e.value >> 6), int((e.value >> 3) & 7));
     }
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 
@@ -272,63 +315,95 @@ std::vector<VertexId> Complex::verticesWithEditedStars() const {
 // edges as classes of (corner, edge) incidences joined across glued faces (each edge's cycle or fan
 // round the vertex), without walking whole edge cycles or allocating once warm.
 void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
-  st.corners.assign(1, {h0, c0});
-  st.link.assign({0, 1, 2});
-  st.boundarySides = 0;
-  // A valid star has refs_[v] corners; the index holds at least twice that (grown if ever exceeded).
-  size_t cap = 16;
-  while (cap < 2 * size_t(refs_[size_t(verts_[size_t(h0)][size_t(c0)])])) cap *= 2;
-  st.index.assign(cap, 0);
+  // A valid star has refs_[v] corners: the arrays are sized for that once (grown if ever exceeded)
+  // and written through local pointers, counted by n; the index holds at least twice as many.
+  size_t room = std::max<size_t>(1, size_t(refs_[size_t(verts_[size_t(h0)][size_t(c0)])]));
+  if (st.corners.size() < room) st.corners.resize(room);
+  if (st.link.size() < 3 * room) st.link.resize(3 * room);
+  room = st.corners.size();
+  std::pair<HexId, int>* corners = st.corners.data();
+  int* link = st.link.data();
+  st.index.assign(tableSize(room), 0);
+  uint64_t* index = st.index.data();
+  size_t mask = st.index.size() - 1;
   auto key = [](HexId h, int c) { return uint64_t(uint32_t(h)) << 3 | uint64_t(c); };
   auto probe = [&](uint64_t k) {  // the index entry of k, or the empty entry where it belongs
-    size_t i = size_t((k * 0x9E3779B97F4A7C15ull) >> 40) & (st.index.size() - 1);
-    while (st.index[i] && (st.index[i] >> 32) != k) i = (i + 1) & (st.index.size() - 1);
+    size_t i = slotOf(k, mask + 1);
+    while (index[i] && (index[i] >> 32) != k) i = (i + 1) & mask;
     return i;
   };
-  auto insert = [&](uint64_t k, size_t place) { st.index[probe(k)] = k << 32 | uint64_t(place + 1); };
-  insert(key(h0, c0), 0);
   auto root = [&](int x) {
-    while (st.link[size_t(x)] != x) x = st.link[size_t(x)] = st.link[size_t(st.link[size_t(x)])];
+    while (link[x] != x) x = link[x] = link[link[x]];
     return x;
   };
+  size_t n = 1;
+  corners[0] = {h0, c0};
+  link[0] = 0, link[1] = 1, link[2] = 2;
+  index[probe(key(h0, c0))] = key(h0, c0) << 32 | 1u;
   int classes = 3;
-  for (size_t i = 0; i < st.corners.size(); ++i) {
-    const auto [h, c] = st.corners[i];
+  int64_t boundarySides = 0;
+  // A corner's second member holds, above its 3 bits, the axes of its faces already crossed from
+  // an earlier corner: crossing back would only find that corner (gluings are symmetric), so skip.
+  for (size_t i = 0; i < n; ++i) {
+    const HexId h = corners[i].first;
+    const int c = corners[i].second & 7, crossed = corners[i].second >> 3;
     for (int k = 0; k < 3; ++k) {
+      if (crossed >> k & 1) continue;
       const uint32_t g = glue_[size_t(h)][size_t(2 * k + cornerBit(c, k))];
       if (g == kBoundary) {
-        ++st.boundarySides;
+        ++boundarySides;
         continue;
       }
-      const HexId n = HexId(g >> 6);
       const CornerStep& step = kCornerSteps[size_t(cornerStepIndex(c, k, int((g >> 3) & 7), int(g & 7)))];
-      const uint64_t k2 = key(n, step.corner);
-      const uint64_t at = st.index[probe(k2)];
-      size_t j = at ? size_t(at & 0xFFFFFFFFu) - 1 : st.corners.size();
-      if (j == st.corners.size()) {
-        st.corners.push_back({n, step.corner});
-        if (2 * st.corners.size() > st.index.size()) {
-          st.index.assign(2 * st.index.size(), 0);
-          for (size_t q = 0; q < st.corners.size(); ++q) insert(key(st.corners[q].first, st.corners[q].second), q);
-        } else {
-          insert(k2, j);
+      const uint64_t k2 = key(HexId(g >> 6), step.corner);
+      const size_t at = probe(k2);
+      const int arrivedBy = 8 << (((g >> 3) & 7) >> 1);  // the axis of the face the step enters by
+      if (!index[at]) {  // a new corner j
+        const size_t j = n++;
+        if (n > room) {  // more corners than the vertex has: an inconsistent gluing elsewhere
+          room *= 2;
+          st.corners.resize(room);
+          st.link.resize(3 * room);
+          corners = st.corners.data();
+          link = st.link.data();
         }
-        for (int a = 0; a < 3; ++a) st.link.push_back(int(3 * j) + a);
-        classes += 3;
-      } else if (j < i) {
-        continue;  // this quad was crossed from corner j's side already: the same edges were joined
+        corners[j] = {HexId(g >> 6), step.corner | arrivedBy};
+        if (2 * n > mask + 1) {
+          st.index.assign(2 * (mask + 1), 0);
+          index = st.index.data();
+          mask = st.index.size() - 1;
+          for (size_t q = 0; q < n; ++q) {
+            const uint64_t kq = key(corners[q].first, corners[q].second & 7);
+            index[probe(kq)] = kq << 32 | (q + 1);
+          }
+        } else {
+          index[at] = k2 << 32 | (j + 1);
+        }
+        // Its two edges in the crossed face are the two of corner i (fresh incidences joined at
+        // once: no union-find steps); its third edge starts a class of its own.
+        const int a0 = step.axis[0], a1 = step.axis[1], a2 = 3 - a0 - a1;
+        link[3 * j + size_t(a0)] = root(int(3 * i) + (k + 1) % 3);
+        link[3 * j + size_t(a1)] = root(int(3 * i) + (k + 2) % 3);
+        link[3 * j + size_t(a2)] = int(3 * j) + a2;
+        classes += 1;
+        continue;
       }
+      const size_t j = size_t(index[at] & 0xFFFFFFFFu) - 1;
+      if (j < i) continue;  // this quad was crossed from corner j's side already: the same edges were joined
+      if (j > i) corners[j].second |= arrivedBy;
       // The two edges of c in the face (along the axes other than its normal) and their images.
       for (int e = 0; e < 2; ++e) {
         const int x = root(int(3 * i) + (k + 1 + e) % 3), y = root(int(3 * j) + step.axis[size_t(e)]);
         if (x != y) {
-          st.link[size_t(std::max(x, y))] = std::min(x, y);
+          link[std::max(x, y)] = std::min(x, y);
           --classes;
         }
       }
     }
   }
+  st.corners.resize(n);
   st.edges = classes;
+  st.boundarySides = boundarySides;
 }
 
 }  // namespace hexdual

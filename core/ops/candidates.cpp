@@ -65,14 +65,11 @@ std::vector<OpStep> candidates(const Complex& cx, OpKind op) {
     throw Error(std::string("candidates: ") + info.name + " steps are not enumerated; ringcollapse prints its inverse");
   Complex work = cx;
   std::vector<OpStep> ok;
-  for (const OpStep& t : tries(cx, op, info.candidates)) {
-    try {
-      OpResult r = applyStep(work, t);
-      work.undo(r.edits);
+  for (const OpStep& t : tries(cx, op, info.candidates))
+    if (std::optional<OpResult> r = tryApplyStep(work, t)) {
+      work.undo(r->edits);
       ok.push_back(t);
-    } catch (const Error&) {
     }
-  }
   return ok;
 }
 

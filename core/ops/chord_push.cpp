@@ -5,6 +5,13 @@ namespace hexdual {
 using namespace tables;
 using namespace ops;
 
+namespace ops {
+std::string chordPushPrecheck(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
+  thread_local ArcSplit scratch;  // its star's storage is reused: rejected steps allocate nothing
+  return arcSplitInto(cx, e, f, g, opName(OpKind::ChordPush), "chord push", scratch);
+}
+}  // namespace ops
+
 OpResult chordPush(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
   const OpKind kind = OpKind::ChordPush;
   const std::string op = opName(kind);

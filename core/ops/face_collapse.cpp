@@ -13,6 +13,13 @@ int cornerWithVertex(const Complex& cx, HexId h, VertexId v) {
 }
 }  // namespace
 
+namespace ops {
+std::string faceCollapsePrecheck(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
+  thread_local ArcSplit scratch;  // its star's storage is reused: rejected steps allocate nothing
+  return arcSplitInto(cx, e, f, g, opName(OpKind::FaceCollapse), "face collapse", scratch);
+}
+}  // namespace ops
+
 OpResult faceCollapse(Complex& cx, EdgeRef e, QuadSide f, QuadSide g) {
   const OpKind kind = OpKind::FaceCollapse;
   const std::string op = opName(kind);

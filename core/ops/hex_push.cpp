@@ -13,23 +13,33 @@ int sharedQuads(const Complex& cx, HexId a, HexId b) {
 }
 }  // namespace
 
-OpResult hexPush(Complex& cx, QuadSide q) {
-  const OpKind kind = OpKind::HexPush;
-  const std::string op = opName(kind);
-  Gluing gB = requireInteriorQuad(cx, q, op, "hex push needs an interior quad");
-  const HexId A = q.hex, B = gB.hex;
-  const int fA = q.face, fB = gB.face;
-  if (A == B) reject(op, "quad " + entityName(q) + " joins " + hexName(A) + " to itself");
+namespace ops {
+std::string hexPushPrecheck(const Complex& cx, QuadSide q) {
+  const std::string op = opName(OpKind::HexPush);
+  if (std::string why = interiorQuadProblem(cx, q, op, "hex push needs an interior quad"); !why.empty()) return why;
+  const HexId A = q.hex, B = cx.gluing(q).hex;
+  if (A == B) return op + ": quad " + entityName(q) + " joins " + hexName(A) + " to itself";
   int shared = sharedQuads(cx, A, B);
   if (shared != 1)
-    reject(op, "hexes " + std::to_string(A) + " and " + std::to_string(B) + " share " + std::to_string(shared) +
-                   " quads; hex push needs exactly one");
+    return op + ": hexes " + std::to_string(A) + " and " + std::to_string(B) + " share " + std::to_string(shared) +
+           " quads; hex push needs exactly one";
   int common = 0;
   for (VertexId v : cx.hexVertices(A))
     for (VertexId w : cx.hexVertices(B)) common += v == w;
   if (common != 4)
-    reject(op, "hexes " + std::to_string(A) + " and " + std::to_string(B) + " share " + std::to_string(common) +
-                   " vertices; hex push needs exactly the 4 of the quad");
+    return op + ": hexes " + std::to_string(A) + " and " + std::to_string(B) + " share " + std::to_string(common) +
+           " vertices; hex push needs exactly the 4 of the quad";
+  return {};
+}
+}  // namespace ops
+
+OpResult hexPush(Complex& cx, QuadSide q) {
+  const OpKind kind = OpKind::HexPush;
+  const std::string op = opName(kind);
+  if (std::string why = hexPushPrecheck(cx, q); !why.empty()) throw Error(why);
+  const Gluing gB = cx.gluing(q);
+  const HexId A = q.hex, B = gB.hex;
+  const int fA = q.face, fB = gB.face;
 
   // Q: q's vertices (A's face positions); P: across A; R: across B; N: new, halfway to q's centre.
   const int na = axisOfFace(fA), nb = axisOfFace(fB);

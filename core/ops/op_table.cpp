@@ -1,5 +1,7 @@
 #include "ops/op_table.hpp"
 
+#include "ops/support.hpp"
+
 #include <type_traits>
 #include <utility>
 
@@ -39,6 +41,17 @@ struct ArgOf<std::vector<std::pair<QuadSide, QuadSide>>> {  // all the step's ar
 template <class F>
 struct Signature;
 template <class... A>
+struct Signature<std::string (*)(const Complex&, A...)> {  // a precheck: the operation's arguments, no edits
+  template <auto F, size_t... I>
+  static std::string call(const Complex& cx, const OpStep& s, std::index_sequence<I...>) {
+    return F(cx, ArgOf<std::decay_t<A>>::get(s, I)...);
+  }
+  template <auto F>
+  static std::string check(const Complex& cx, const OpStep& s) {
+    return call<F>(cx, s, std::index_sequence_for<A...>{});
+  }
+};
+template <class... A>
 struct Signature<OpResult (*)(Complex&, A...)> {
   static std::vector<OpArg::Kind> kinds() { return {ArgOf<std::decay_t<A>>::kind...}; }
   template <auto F, size_t... I>
@@ -51,10 +64,13 @@ struct Signature<OpResult (*)(Complex&, A...)> {
   }
 };
 
-template <auto F>
+template <auto F, auto Precheck = nullptr>
 OpInfo row(OpKind kind, const char* name, char urlCode, bool keepsSheetTopology, CandidateSet candidates, CountChange counts) {
   using S = Signature<decltype(F)>;
-  return {kind, name, urlCode, S::kinds(), keepsSheetTopology, candidates, counts, &S::template apply<F>};
+  std::string (*precheck)(const Complex&, const OpStep&) = nullptr;
+  if constexpr (!std::is_same_v<decltype(Precheck), std::nullptr_t>)  // by type: sanitizer builds do not fold function addresses
+    precheck = &Signature<decltype(Precheck)>::template check<Precheck>;
+  return {kind, name, urlCode, S::kinds(), keepsSheetTopology, candidates, counts, &S::template apply<F>, precheck};
 }
 
 constexpr bool kKeepsSheets = true, kReshapesSheets = false;
@@ -65,15 +81,15 @@ std::vector<OpInfo> makeTable() {
   using K = OpKind;
   using C = CandidateSet;
   std::vector<OpInfo> t = {
-      row<&pillow>(K::Pillow, "pillow", 'P', kKeepsSheets, C::InteriorQuads, counts(4, 2)),
+      row<&pillow, &ops::pillowPrecheck>(K::Pillow, "pillow", 'P', kKeepsSheets, C::InteriorQuads, counts(4, 2)),
       row<&unpillow>(K::Unpillow, "unpillow", 'Q', kKeepsSheets, C::Hexes, counts(-4, -2)),
-      row<&chordPush>(K::ChordPush, "chordpush", 'C', kKeepsSheets, C::EdgeStarQuadPairs, counts(2, 2)),
+      row<&chordPush, &ops::chordPushPrecheck>(K::ChordPush, "chordpush", 'C', kKeepsSheets, C::EdgeStarQuadPairs, counts(2, 2)),
       row<&chordPull>(K::ChordPull, "chordpull", 'D', kKeepsSheets, C::Hexes, counts(-2, -2)),
-      row<&hexPush>(K::HexPush, "hexpush", 'H', kKeepsSheets, C::InteriorQuads, counts(4, 4)),
+      row<&hexPush, &ops::hexPushPrecheck>(K::HexPush, "hexpush", 'H', kKeepsSheets, C::InteriorQuads, counts(4, 4)),
       row<&hexPull>(K::HexPull, "hexpull", 'I', kKeepsSheets, C::InteriorQuadSides, counts(-4, -4)),
       row<&ringCollapse>(K::RingCollapse, "ringcollapse", 'R', kReshapesSheets, C::ClosedChordEdges, kByRingLength),
       row<&ringSplit>(K::RingSplit, "ringsplit", 'S', kReshapesSheets, C::None, kByRingLength),
-      row<&faceCollapse>(K::FaceCollapse, "facecollapse", 'F', kReshapesSheets, C::EdgeStarQuadPairs, counts(-2, 0)),
+      row<&faceCollapse, &ops::faceCollapsePrecheck>(K::FaceCollapse, "facecollapse", 'F', kReshapesSheets, C::EdgeStarQuadPairs, counts(-2, 0)),
       row<&faceSplit>(K::FaceSplit, "facesplit", 'G', kReshapesSheets, C::SameVertexQuadPairs, counts(2, 0)),
   };
   for (size_t k = 0; k < t.size(); ++k)

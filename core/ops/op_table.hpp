@@ -2,6 +2,7 @@
 // candidates list, the dual tracker and applyStep need to know. Adding an operation is one enum
 // value (op_step.hpp), one row here (op_table.cpp) and one file in core/ops.
 #pragma once
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -37,6 +38,9 @@ struct OpInfo {
   CandidateSet candidates;
   CountChange counts;
   OpResult (*apply)(Complex&, const OpStep&);  // called with arguments already checked
+  // The operation's first checks without throwing (arguments checked): the message `apply` would
+  // throw for them, or empty when they pass (apply may still reject later). Null: none.
+  std::string (*precheck)(const Complex&, const OpStep&);
 };
 
 // Every operation, in OpKind order.

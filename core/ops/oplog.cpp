@@ -168,6 +168,35 @@ OpResult applyStep(Complex& cx, const OpStep& st) {
 
 OpResult applyStep(Complex& cx, std::string_view stepText) { return applyStep(cx, parseOpStep(stepText)); }
 
+std::optional<OpResult> tryApplyStep(Complex& cx, const OpStep& st, std::string* why) {
+  try {
+    checkArgs(st);
+    const OpInfo& info = opInfo(st.op);
+    if (info.precheck) {
+      std::string problem = info.precheck(cx, st);
+      if (!problem.empty()) {
+        if (why) *why = std::move(problem);
+        return std::nullopt;
+      }
+    }
+    return info.apply(cx, st);
+  } catch (const Error& e) {
+    if (why) *why = e.what();
+    return std::nullopt;
+  }
+}
+
+std::optional<OpResult> tryApplyStep(Complex& cx, std::string_view stepText, std::string* why) {
+  OpStep st;
+  try {
+    st = parseOpStep(stepText);
+  } catch (const Error& e) {
+    if (why) *why = e.what();
+    return std::nullopt;
+  }
+  return tryApplyStep(cx, st, why);
+}
+
 ApplyReport applyLog(Complex& cx, const OpLog& log) {
   ApplyReport rep;
   for (size_t k = 0; k < log.steps.size(); ++k) {

@@ -2,6 +2,7 @@
 //   v1;pillow h12f3;chordpush h4e7 h4f2 h9f0;hexpush h5f1
 // and a compact URL-safe form of the same log. Grammar and id assignment: docs/oplog.md.
 #pragma once
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,6 +32,11 @@ OpLog decodeOpLogUrl(std::string_view text);
 // A parsed step with the wrong number or kinds of arguments is rejected before anything runs.
 OpResult applyStep(Complex& cx, const OpStep& step);
 OpResult applyStep(Complex& cx, std::string_view stepText);
+// The same without throwing: the result, or nullopt with `why` set to the message applyStep would
+// throw (the complex unchanged). Rejections by an operation's first checks (the table's
+// precheck) cost no exception: for callers that try many steps, most of them rejected.
+std::optional<OpResult> tryApplyStep(Complex& cx, const OpStep& step, std::string* why = nullptr);
+std::optional<OpResult> tryApplyStep(Complex& cx, std::string_view stepText, std::string* why = nullptr);
 
 struct ApplyReport {
   std::vector<OpResult> results;  // one per applied step

@@ -5,10 +5,16 @@ namespace hexdual {
 using namespace tables;
 using namespace ops;
 
+namespace ops {
+std::string pillowPrecheck(const Complex& cx, QuadSide q) {
+  return interiorQuadProblem(cx, q, opName(OpKind::Pillow), "a pillow needs an interior quad");
+}
+}  // namespace ops
+
 OpResult pillow(Complex& cx, QuadSide q) {
   const OpKind kind = OpKind::Pillow;
-  const std::string op = opName(kind);
-  Gluing gB = requireInteriorQuad(cx, q, op, "a pillow needs an interior quad");
+  if (std::string why = pillowPrecheck(cx, q); !why.empty()) throw Error(why);
+  Gluing gB = cx.gluing(q);
   const HexId A = q.hex, B = gB.hex;
   const int fA = q.face, fB = gB.face;
 

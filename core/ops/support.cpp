@@ -11,7 +11,10 @@ using namespace tables;
 std::array<VertexId, 4> faceVertexSet(const Complex& cx, HexId h, int f) {
   std::array<VertexId, 4> s;
   for (int p = 0; p < 4; ++p) s[size_t(p)] = cx.vertex(h, kFaceCorners[size_t(f)][size_t(p)]);
-  std::sort(s.begin(), s.end());
+  auto order = [&](size_t i, size_t j) {  // a 4-element sorting network: replaceHexes keys every new face
+    if (s[j] < s[i]) std::swap(s[i], s[j]);
+  };
+  order(0, 1), order(2, 3), order(0, 2), order(1, 3), order(1, 2);
   return s;
 }
 
@@ -31,12 +34,16 @@ int orientByVertices(const Complex& cx, HexId a, int fa, HexId b, int fb) {
   return o;
 }
 
+std::string interiorQuadProblem(const Complex& cx, QuadSide q, const std::string& op, const std::string& needs) {
+  if (!cx.isHex(q.hex)) return op + ": " + hexName(q.hex) + " does not exist";
+  if (q.face < 0 || q.face > 5) return op + ": local face " + std::to_string(q.face) + " is not 0..5";
+  if (cx.isBoundary(q)) return op + ": quad " + entityName(q) + " is on the boundary; " + needs;
+  return {};
+}
+
 Gluing requireInteriorQuad(const Complex& cx, QuadSide q, const std::string& op, const std::string& needs) {
-  if (!cx.isHex(q.hex)) reject(op, hexName(q.hex) + " does not exist");
-  if (q.face < 0 || q.face > 5) reject(op, "local face " + std::to_string(q.face) + " is not 0..5");
-  Gluing g = cx.gluing(q);
-  if (g.boundary()) reject(op, "quad " + entityName(q) + " is on the boundary; " + needs);
-  return g;
+  if (std::string why = interiorQuadProblem(cx, q, op, needs); !why.empty()) throw Error(why);
+  return cx.gluing(q);
 }
 
 void glueByVertices(Complex& cx, HexId a, int fa, HexId b, int fb) {
@@ -47,10 +54,12 @@ void glueByVertices(Complex& cx, HexId a, int fa, HexId b, int fb) {
   cx.glue(a, fa, b, fb, o);
 }
 
-EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op) {
-  if (!cx.isHex(e.hex)) reject(op, hexName(e.hex) + " does not exist");
-  if (e.edge < 0 || e.edge > 11) reject(op, "local edge " + std::to_string(e.edge) + " is not 0..11");
-  EdgeStar st;
+std::string closedEdgeStarInto(const Complex& cx, EdgeRef e, const std::string& op, EdgeStar& st) {
+  if (!cx.isHex(e.hex)) return op + ": " + hexName(e.hex) + " does not exist";
+  if (e.edge < 0 || e.edge > 11) return op + ": local edge " + std::to_string(e.edge) + " is not 0..11";
+  st.inc.clear();
+  st.exitFace.clear();
+  st.entryFace.clear();
   EdgeRef cur = e;
   int exitFace = facesOfEdge(e.edge)[0];
   int entry = facesOfEdge(e.edge)[1];
@@ -59,7 +68,7 @@ EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op) {
     st.entryFace.push_back(entry);
     st.exitFace.push_back(exitFace);
     Gluing g = cx.gluing(cur.hex, exitFace);
-    if (g.boundary()) reject(op, "edge " + entityName(e) + " is on the boundary; it needs a closed cycle of hexes");
+    if (g.boundary()) return op + ": edge " + entityName(e) + " is on the boundary; it needs a closed cycle of hexes";
     int c0 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[size_t(cur.edge)][0]);
     int c1 = cx.mappedCorner(cur.hex, exitFace, kEdgeCorners[size_t(cur.edge)][1]);
     cur = {g.hex, edgeBetween(c0, c1)};
@@ -68,10 +77,16 @@ EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op) {
     exitFace = fs[0] == g.face ? fs[1] : fs[0];
     if (cur == e) {
       st.entryFace[0] = entry;
-      return st;
+      return {};
     }
   }
-  reject(op, "the cycle around edge " + entityName(e) + " does not close");
+  return op + ": the cycle around edge " + entityName(e) + " does not close";
+}
+
+EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op) {
+  EdgeStar st;
+  if (std::string why = closedEdgeStarInto(cx, e, op, st); !why.empty()) throw Error(why);
+  return st;
 }
 
 int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side) {
@@ -117,14 +132,14 @@ VertexId neighbourInFace(const Complex& cx, HexId h, int f, int c, int away) {
 }
 }  // namespace
 
-ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const std::string& op, const char* what) {
-  ArcSplit s;
-  s.star = closedEdgeStar(cx, e, op);
+std::string arcSplitInto(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const std::string& op, const char* what,
+                         ArcSplit& s) {
+  if (std::string why = closedEdgeStarInto(cx, e, op, s.star); !why.empty()) return why;
   const int n = int(s.star.inc.size());
   int i = quadIndexInStar(cx, s.star, f), j = quadIndexInStar(cx, s.star, g);
-  if (i < 0) reject(op, "quad " + entityName(f) + " is not in the cycle around edge " + entityName(e));
-  if (j < 0) reject(op, "quad " + entityName(g) + " is not in the cycle around edge " + entityName(e));
-  if (i == j) reject(op, std::string("f and g are the same quad; ") + what + " needs two distinct quads");
+  if (i < 0) return op + ": quad " + entityName(f) + " is not in the cycle around edge " + entityName(e);
+  if (j < 0) return op + ": quad " + entityName(g) + " is not in the cycle around edge " + entityName(e);
+  if (i == j) return op + ": f and g are the same quad; " + what + " needs two distinct quads";
   // Quad k lies between incidence k (exit face) and k+1 (entry face).
   const auto& st = s.star;
   s.li = st.inc[size_t((i + 1) % n)];
@@ -144,7 +159,13 @@ ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const st
   s.ga = neighbourInFace(cx, s.lj.hex, s.gL.face, da, db);
   s.gb = neighbourInFace(cx, s.lj.hex, s.gL.face, db, da);
   if (s.fa == s.ga || s.fa == s.gb || s.fb == s.ga || s.fb == s.gb)
-    reject(op, "quads " + entityName(f) + " and " + entityName(g) + " share more than edge " + entityName(e));
+    return op + ": quads " + entityName(f) + " and " + entityName(g) + " share more than edge " + entityName(e);
+  return {};
+}
+
+ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const std::string& op, const char* what) {
+  ArcSplit s;
+  if (std::string why = arcSplitInto(cx, e, f, g, op, what, s); !why.empty()) throw Error(why);
   return s;
 }
 
@@ -260,21 +281,23 @@ std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::v
   std::vector<HexId> created;
   for (const auto& v : added) created.push_back(cx.addHex(v));
   std::vector<std::pair<Key, QuadSide>> open;
+  open.reserve(6 * created.size());
   for (HexId h : created)
     for (int f = 0; f < 6; ++f) open.push_back({faceVertexSet(cx, h, f), {h, f}});
+  // Faces are taken in list order and marked, not erased: the same hits in the same order.
+  std::vector<uint8_t> taken(open.size(), 0);
+  std::vector<QuadSide> hits;
+  auto sameKey = [](const Key& a, const Key& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2] && a[3] == b[3]; };
   auto take = [&](const Key& k) {
-    std::vector<QuadSide> hits;
-    for (auto it = open.begin(); it != open.end();)
-      if (it->first == k) {
-        hits.push_back(it->second);
-        it = open.erase(it);
-      } else {
-        ++it;
+    hits.clear();
+    for (size_t i = 0; i < open.size(); ++i)
+      if (!taken[i] && sameKey(open[i].first, k)) {
+        taken[i] = 1;
+        hits.push_back(open[i].second);
       }
-    return hits;
   };
   for (const auto& [key, side] : outside) {
-    auto hits = take(key);
+    take(key);
     if (hits.size() != 1)
       reject(op, "the new hexes do not fit the neighbour " + entityName(side) + " (" + std::to_string(hits.size()) +
                      " faces carry its vertices)");
@@ -282,9 +305,10 @@ std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::v
     if (o < 0) reject(op, "the new hexes meet " + entityName(side) + " in a different cyclic order");
     cx.glue(hits[0].hex, hits[0].face, side.hex, side.face, o);
   }
-  while (!open.empty()) {
-    Key key = open.front().first;
-    auto hits = take(key);
+  for (size_t first = 0; first < open.size(); ++first) {
+    if (taken[first]) continue;
+    const Key key = open[first].first;
+    take(key);
     if (hits.size() == 2) {
       int o = orientByVertices(cx, hits[0].hex, hits[0].face, hits[1].hex, hits[1].face);
       if (o < 0) reject(op, "two new faces carry the same vertices in different cyclic orders");

@@ -19,6 +19,8 @@ inline std::string edgeName(EdgeRef e) { return "h" + std::to_string(e.hex) + "e
 // The quad's other side, after checking that the hex exists, the face is 0..5 and the quad is
 // interior; `needs` completes the boundary message ("a pillow needs an interior quad").
 Gluing requireInteriorQuad(const Complex& cx, QuadSide q, const std::string& op, const std::string& needs);
+// The same check without throwing: the message requireInteriorQuad would throw, or empty.
+std::string interiorQuadProblem(const Complex& cx, QuadSide q, const std::string& op, const std::string& needs);
 
 // The orientation code that maps face fa of hex a onto face fb of hex b vertex for vertex, or -1.
 int orientByVertices(const Complex& cx, HexId a, int fa, HexId b, int fb);
@@ -35,6 +37,8 @@ struct EdgeStar {
 };
 // Throws (as op) when e is not an edge of a live hex or its cycle does not close.
 EdgeStar closedEdgeStar(const Complex& cx, EdgeRef e, const std::string& op);
+// The same into `st` (its storage reused) without throwing: the message, or empty.
+std::string closedEdgeStarInto(const Complex& cx, EdgeRef e, const std::string& op, EdgeStar& st);
 // Index k of quad k of the star that has `side` as one of its sides, or -1.
 int quadIndexInStar(const Complex& cx, const EdgeStar& st, QuadSide side);
 
@@ -59,6 +63,16 @@ struct ArcSplit {
   VertexId a, b, fa, fb, ga, gb;
 };
 ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const std::string& op, const char* what);
+// The same into `s` (its storage reused) without throwing: the message arcSplit would throw, or empty.
+std::string arcSplitInto(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const std::string& op, const char* what,
+                         ArcSplit& s);
+
+// The first checks of an operation, as the operation table's `precheck` (op_table.hpp): the
+// message the operation would throw for them, or empty. The operations run the same functions.
+std::string pillowPrecheck(const Complex& cx, QuadSide q);
+std::string hexPushPrecheck(const Complex& cx, QuadSide q);
+std::string chordPushPrecheck(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g);
+std::string faceCollapsePrecheck(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g);
 
 // The hexes an edit touched: `hexes` and every hex glued to one of them.
 std::vector<HexId> withNeighbours(const Complex& cx, const std::vector<HexId>& hexes);
