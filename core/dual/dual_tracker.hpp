@@ -57,6 +57,8 @@ class DualTracker {
   bool lastUpdateReflooded() const { return reflooded_; }
   // Test knob: false re-walks every changed chord (the reference the local chord update must equal).
   void setLocalChords(bool on) { localChords_ = on; }
+  // How many pieces of labelled runs chord id is listed as (one after extraction or a re-walk).
+  size_t chordPieces(int32_t id) const { return pieces_[size_t(id)].size(); }
   // Whether the last update re-walked its changed chords whole (the local rejoin was not sure).
   bool lastChordsRewalked() const { return chordsRewalked_; }
 
