@@ -1,4 +1,5 @@
 #include "complex/complex.hpp"
+#include "complex/huge_pages.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -12,11 +13,11 @@ void Complex::throwNoHex(HexId h, const char* what) {
 }
 
 void Complex::reserve(size_t hexes, size_t vertices) {
-  verts_.reserve(hexes);
-  glue_.reserve(hexes);
-  alive_.reserve(hexes);
-  pos_.reserve(vertices);
-  refs_.reserve(vertices);
+  reserveHuge(verts_, hexes);
+  reserveHuge(glue_, hexes);
+  reserveHuge(alive_, hexes);
+  reserveHuge(pos_, vertices);
+  reserveHuge(refs_, vertices);
 }
 
 VertexId Complex::addVertex(Vec3 p) {
