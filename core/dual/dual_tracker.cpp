@@ -1174,7 +1174,8 @@ void DualTracker::setChordPieces(int32_t id, std::vector<Piece> pieces) {
   if (joined.size() > kMaxPieces) {
     std::vector<Slot> run;
     for (const Piece& p : joined)
-      for (int32_t k = 0; k < p.hi - p.lo; ++k) run.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
+      for (int32_t k = 0; k < p.hi - p.lo; ++k)
+        run.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
     for (const Piece& p : joined) dropped_.push_back(p.label);  // they lose these places
     slotsTouched_ += run.size();
     const int32_t n = int32_t(run.size());
@@ -1206,7 +1207,8 @@ void DualTracker::settleChords() const {
     if (!ch.alive) continue;
     ch.slots.reserve(size_t(chordLength(id)));
     for (const Piece& p : pieces_[size_t(id)])
-      for (int32_t k = 0; k < p.hi - p.lo; ++k) ch.slots.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
+      for (int32_t k = 0; k < p.hi - p.lo; ++k)
+        ch.slots.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
     if (chordSelf_[size_t(id)] == 2) chordSelf_[size_t(id)] = chordSelfIntersects(id);
     ch.selfIntersecting = chordSelf_[size_t(id)] != 0;
   }
@@ -1285,8 +1287,9 @@ void DualTracker::rewalkChords(const Complex& cx, const std::vector<HexId>& touc
     made.push_back({int32_t(id), l});
     return l;
   };
-  slotsTouched_ += relabel(cx, touched, dual_.chordOf, dual_.chords, ids, walk, change.chordsCreated,
-                           change.chordsChanged, change.chordsRemoved, [](int) { return false; }, labelOf);
+  slotsTouched_ += relabel(
+      cx, touched, dual_.chordOf, dual_.chords, ids, walk, change.chordsCreated, change.chordsChanged,
+      change.chordsRemoved, [](int) { return false; }, labelOf);
   const size_t n = dual_.chords.size();
   pieces_.resize(n);
   chordSelf_.resize(n, 0);
@@ -1328,7 +1331,8 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
     for (int a = 0; a < 3; ++a) ts.push_back({{h, a}, dual_.chordAt(h, a), cx.isHex(h)});
   auto indexOf = [&](Slot s) -> int32_t {
     if (!std::binary_search(touched.begin(), touched.end(), s.hex)) return -1;
-    return int32_t(3 * size_t(std::lower_bound(touched.begin(), touched.end(), s.hex) - touched.begin()) + size_t(s.axis));
+    return int32_t(3 * size_t(std::lower_bound(touched.begin(), touched.end(), s.hex) - touched.begin()) +
+                   size_t(s.axis));
   };
   auto faceTo = [&](Slot s, Slot t) {  // the one face of s's hex along its axis glued to slot t, else -1
     int found = -1, count = 0;
@@ -1345,7 +1349,7 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
   struct Stretch {
     int32_t chord, a, b;  // places a..b (b >= length wraps round a closed chord)
     Slot end[2];
-    int face[2] = {-1, -1};  // the face each end leaves through, -1 at the chord's boundary end
+    int face[2] = {-1, -1};      // the face each end leaves through, -1 at the chord's boundary end
     int32_t link[2] = {-1, -1};  // the walk from or to each end
   };
   std::vector<Stretch> stretches;
@@ -1365,7 +1369,8 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
       }
     if (at.empty()) return false;
     std::sort(at.begin(), at.end());
-    contiguous[k] = !closed && at.front() > 0 && at.back() + 1 < len && at.back() - at.front() + 1 == int32_t(at.size());
+    contiguous[k] =
+        !closed && at.front() > 0 && at.back() + 1 < len && at.back() - at.front() + 1 == int32_t(at.size());
     auto add = [&](int32_t a, int32_t b) {
       Stretch st{id, a, b, {chordSlotAt(id, a % len), chordSlotAt(id, b % len)}};
       for (int side = 0; side < 2; ++side) {
@@ -1423,7 +1428,8 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
           break;
         }
         Touched& t = ts[size_t(k)];
-        if (!t.live || t.run >= 0 || (t.old >= 0 && !inIds(t.old)) || walks[size_t(w)].slots.size() >= ts.size()) return false;
+        if (!t.live || t.run >= 0 || (t.old >= 0 && !inIds(t.old)) || walks[size_t(w)].slots.size() >= ts.size())
+          return false;
         t.run = w;
         t.entry = g.face;
         walks[size_t(w)].slots.push_back(k);
@@ -1573,7 +1579,9 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
   std::vector<size_t> order(comps.size());
   std::iota(order.begin(), order.end(), size_t(0));
   std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return comps[x].first < comps[y].first; });
-  auto oldOf = [&](const Item& it) { return it.stretch >= 0 ? stretches[size_t(it.stretch)].chord : ts[size_t(it.slot)].old; };
+  auto oldOf = [&](const Item& it) {
+    return it.stretch >= 0 ? stretches[size_t(it.stretch)].chord : ts[size_t(it.slot)].old;
+  };
   std::vector<int32_t> compId(comps.size(), -1), taken;
   int32_t fresh = int32_t(dual_.chords.size());
   for (size_t ci : order) {
@@ -1681,9 +1689,12 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
     chordSelf_[size_t(id)] = self[ci];
     if (self[ci] != 2) ch.selfIntersecting = self[ci] != 0;
     setChordPieces(id, std::move(pieces));
-    if (!std::binary_search(ids.begin(), ids.end(), id)) change.chordsCreated.push_back(id);
-    else if (spliced[ci]) splicedIds.push_back(id);
-    else change.chordsChanged.push_back(id);
+    if (!std::binary_search(ids.begin(), ids.end(), id))
+      change.chordsCreated.push_back(id);
+    else if (spliced[ci])
+      splicedIds.push_back(id);
+    else
+      change.chordsChanged.push_back(id);
   }
   std::sort(splicedIds.begin(), splicedIds.end());
   change.chordsChanged.insert(change.chordsChanged.begin(), splicedIds.begin(), splicedIds.end());
