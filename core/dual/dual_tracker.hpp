@@ -30,6 +30,7 @@ class DualTracker {
   explicit DualTracker(const Complex& cx);
   // The dual; chords changed since the last read get their slot lists (and self-intersection, when
   // the update left it open) from their pieces here, so a reader pays for them, not the update.
+  // Not for concurrent first reads (like SlotList, the first read after an update writes).
   const Dual& dual() const {
     if (!unsettled_.empty()) settleChords();
     return dual_;
