@@ -122,7 +122,7 @@ static int benchOps(int n, int reps) {
       // The ring chord's axis in the first ring hex.
       HexId rh = cx.hexCapacity() - 4;
       for (int a = 0; a < 3; ++a)
-        if (tracker.dual().chords[size_t(tracker.dual().chordOf[size_t(rh)][size_t(a)])].closed) step += std::to_string(4 * a);
+        if (tracker.dual().chords[size_t(tracker.dual().chordAt(rh, a))].closed) step += std::to_string(4 * a);
     }
     std::vector<double> opOnly, withDual;
     for (int r = 0; r < reps; ++r) {  // the operation alone (then undone)

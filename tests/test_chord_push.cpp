@@ -39,7 +39,7 @@ TEST_CASE("chord push at the centre of a 3x3x3 grid: counts, a new blind chord, 
     CHECK(d1.sheets.size() == d0.sheets.size());  // no new sheet
     CHECK(d1.chords.size() == d0.chords.size() + 1);
     CHECK(closedChords(d1) == 1);
-    const Chord& blind = d1.chords[size_t(d1.chordOf[r.createdHexes[0]][0])];
+    const Chord& blind = d1.chords[size_t(d1.chordAt(r.createdHexes[0], 0))];
     CHECK(blind.closed);
     CHECK(blind.slots.size() == 2);
     OpResult u = chordPull(cx, r.createdHexes[1]);

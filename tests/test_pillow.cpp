@@ -43,7 +43,7 @@ TEST_CASE("pillow at the centre of a 3x3x3 grid: counts, dual, inverse") {
   CHECK(d1.chords.size() == d0.chords.size() + 2);
   CHECK(closedChordsOfLength(d1, 2) == 2);
   // The z chord through the centre gains X and Y.
-  CHECK(d1.chords[size_t(d1.chordOf[13][2])].slots.size() == 5);
+  CHECK(d1.chords[size_t(d1.chordAt(13, 2))].slots.size() == 5);
   CHECK(formatOpStep(r.inverse.value()) == "unpillow h27");
   OpResult u = unpillow(cx, 27);
   cx.validate();

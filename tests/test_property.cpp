@@ -159,24 +159,27 @@ TEST_CASE("property: lockstep sheet updates on 7x7x7 and 8x6x6 grids") {
   CHECK(stats.perOp["ringcollapse"] > 0);
 }
 
-// Longer sequences where steps are undone at random right after they are applied (as the explorer's
-// back button does), with the whole dual checked after every step and every undo.
-TEST_CASE("property: sequences with interleaved undos keep every sheet and chord list exact") {
+// The local chord update (stretches kept, walks through the touched hexes) against the re-walk of
+// every changed chord: the same ids, slot lists in the same order, flags and per-slot chord ids
+// after every step of longer sequences (pieces pile up and are joined again). Steps are undone at
+// random right after they are applied (as the explorer's back button does), and the whole dual,
+// sheets included, is validated after every step and every undo.
+TEST_CASE("property: local chord updates equal a re-walk of the changed chords") {
   int sequences = 200;
   if (const char* env = std::getenv("HEXDUAL_PROPERTY_SEQUENCES")) sequences = std::min(sequences, std::atoi(env));
   const uint32_t firstSeed = 20261202;
   std::vector<Complex> meshes{makeGrid(6, 6, 6), makeRing(10, 3, 3), makeGrid(7, 5, 5)};
-  int64_t applied = 0, undone = 0;
+  int64_t steps = 0, rewalked = 0;
   for (int k = 0; k < sequences; ++k) {
     const uint32_t seed = firstSeed + uint32_t(k);
     CAPTURE(seed);
     std::mt19937 rng(seed);
     Complex cx = meshes[size_t(k) % meshes.size()];
-    DualTracker tracker(cx);
+    DualTracker local(cx), walked(cx);
+    walked.setLocalChords(false);
     std::vector<HexId> recent;
     for (int step = 0; step < 40; ++step) {
-      const std::string text = randomStep(cx, rng, recent, k % 2 == 0);
-      CAPTURE(step);
+      std::string text = randomStep(cx, rng, recent, k % 2 == 0);
       CAPTURE(text);
       OpResult r;
       try {
@@ -184,23 +187,69 @@ TEST_CASE("property: sequences with interleaved undos keep every sheet and chord
       } catch (const Error&) {
         continue;
       }
-      ++applied;
-      tracker.update(cx, r.edits, keepsSheetTopology(r));
-      validateDual(cx, tracker.dual());
+      ++steps;
+      const DualChange a = local.update(cx, r.edits, keepsSheetTopology(r));
+      const DualChange b = walked.update(cx, r.edits, keepsSheetTopology(r));
+      rewalked += local.lastChordsRewalked();
+      validateDual(cx, local.dual());
+      auto sorted = [](std::vector<int> v) {
+        std::sort(v.begin(), v.end());
+        return v;
+      };
+      REQUIRE(a.chordsCreated == b.chordsCreated);
+      REQUIRE(a.chordsRemoved == b.chordsRemoved);
+      REQUIRE(sorted(a.chordsChanged) == sorted(b.chordsChanged));
+      const Dual &da = local.dual(), &db = walked.dual();
+      REQUIRE(da.chords.size() == db.chords.size());
+      for (size_t c = 0; c < da.chords.size(); ++c) {
+        CAPTURE(c);
+        REQUIRE(da.chords[c].alive == db.chords[c].alive);
+        REQUIRE(da.chords[c].closed == db.chords[c].closed);
+        REQUIRE(da.chords[c].selfIntersecting == db.chords[c].selfIntersecting);
+        if (da.chords[c].slots != db.chords[c].slots) {
+          auto list = [](const std::vector<Slot>& v) {
+            std::string t;
+            for (Slot x : v) t += " " + std::to_string(x.hex) + ":" + std::to_string(x.axis);
+            return t;
+          };
+          FAIL_CHECK("chord " << c << " local" << list(da.chords[c].slots) << " / walked" << list(db.chords[c].slots));
+        }
+        REQUIRE(da.chords[c].slots == db.chords[c].slots);
+      }
+      for (HexId h : cx.hexes()) REQUIRE(da.chordsAt(h) == db.chordsAt(h));
       recent = r.createdHexes;
-      if (rng() % 4 == 0) {
+      if (rng() % 4 == 0) {  // undo, as the explorer does
         cx.undo(r.edits);
-        tracker.update(cx, r.edits, keepsSheetTopology(r));
-        tracker.releaseRetiredTail();
-        validateDual(cx, tracker.dual());
-        ++undone;
+        local.update(cx, r.edits, keepsSheetTopology(r));
+        walked.update(cx, r.edits, keepsSheetTopology(r));
+        local.releaseRetiredTail();
+        walked.releaseRetiredTail();
+        validateDual(cx, local.dual());
         recent.clear();
       }
     }
-    compareDuals(cx, tracker.dual(), extractDual(cx));
+    compareDuals(cx, local.dual(), extractDual(cx));
+    // The chords equal a fresh extraction's up to renaming (flags and lengths too).
+    const Dual fresh = extractDual(cx);
+    std::map<int32_t, int32_t> toFresh, fromFresh;
+    for (HexId h : cx.hexes())
+      for (int a = 0; a < 3; ++a) {
+        const int32_t x = local.dual().chordAt(h, a), y = fresh.chordAt(h, a);
+        REQUIRE(toFresh.try_emplace(x, y).first->second == y);
+        REQUIRE(fromFresh.try_emplace(y, x).first->second == x);
+      }
+    size_t alive = 0;
+    for (const Chord& ch : local.dual().chords) alive += ch.alive;
+    CHECK(alive == toFresh.size());
+    for (auto [x, y] : toFresh) {
+      const Chord &p = local.dual().chords[size_t(x)], &q = fresh.chords[size_t(y)];
+      CHECK(p.slots.size() == q.slots.size());
+      CHECK(p.closed == q.closed);
+      CHECK(p.selfIntersecting == q.selfIntersecting);
+    }
   }
-  MESSAGE("property (interleaved undos): " << sequences << " sequences, seeds " << firstSeed << ".."
-                                           << firstSeed + uint32_t(sequences) - 1 << ": " << applied << " steps applied, "
-                                           << undone << " undone at once");
-  CHECK(undone > sequences);
+  MESSAGE("property (local chords): " << sequences << " sequences, seeds " << firstSeed << ".." << firstSeed + uint32_t(sequences) - 1
+                                      << ": " << steps << " steps compared, " << rewalked << " re-walked whole");
+  CHECK(steps > sequences);
+  CHECK(rewalked * 20 < steps);  // the local update follows nearly every step
 }

@@ -76,7 +76,7 @@ TEST_CASE("hex push then ring collapse of its 4-ring: one diagonal undoes it, th
     HexId rh = p.createdHexes[2];
     int axis = -1;
     for (int a = 0; a < 3; ++a)
-      if (dp.chords[size_t(dp.chordOf[rh][a])].closed) axis = a;
+      if (dp.chords[size_t(dp.chordAt(rh, a))].closed) axis = a;
     REQUIRE(axis >= 0);
     OpResult c = ringCollapse(cx, {rh, 4 * axis + (diag ? 1 : 0)});
     cx.validate();

@@ -441,10 +441,11 @@ class WasmMesh {
  private:
   std::optional<io::ReadReport> file_;  // what the reader found, for info() of a loaded file
   // The dual, kept current by a tracker so that sheet and chord ids survive operations.
-  const Dual& dual() {
+  DualTracker& tracker() {
     if (!tracker_) tracker_ = std::make_unique<DualTracker>(cx_);
-    return tracker_->dual();
+    return *tracker_;
   }
+  const Dual& dual() { return tracker().dual(); }  // settles the chord lists changed since the last read
   int liveSheet(int id) {
     const Dual& d = dual();
     if (id >= 0 && size_t(id) < d.sheets.size() && !d.sheets[size_t(id)].alive)
@@ -458,13 +459,13 @@ class WasmMesh {
   }
   // Applies one step (throws; the complex is then unchanged) and records it.
   std::string apply(const OpStep& step) {
-    dual();  // the tracker must see the state before the step
+    tracker();  // the tracker must see the state before the step
     StepRecord s;
     s.report = applyStepTracked(cx_, *tracker_, step);
     return record(std::move(s));
   }
   std::string applyFlip(const std::string& name, const std::vector<int>& hexes, bool viaAtomic) {
-    dual();
+    tracker();
     flipClass(name);  // throws for an unknown name
     if (!viaAtomic) {
       StepRecord s;

@@ -118,7 +118,8 @@ val viewHexDual(double dualAddress) {
     chords.reserve(d.chordOf.size() * 3);
     for (size_t h = 0; h < d.sheetLabel.size(); ++h)
       for (int a = 0; a < 3; ++a) sheets.push_back(d.sheetAt(HexId(h), a));
-    for (const auto& c : d.chordOf) chords.insert(chords.end(), c.begin(), c.end());
+    for (size_t h = 0; h < d.chordOf.size(); ++h)
+      for (int a = 0; a < 3; ++a) chords.push_back(d.chordAt(HexId(h), a));
     val out = val::object();
     out.set("sheetOf", copyOut("Int32Array", sheets));
     out.set("chordOf", copyOut("Int32Array", chords));

@@ -1,6 +1,7 @@
 #include "dual/dual.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 
 namespace hexdual {
@@ -460,6 +461,12 @@ std::vector<int32_t> extractChords(const Complex& cx, Dual& d) {
   return newId;
 }
 
+// Every chord one label, equal to its id (DualTracker cuts and joins them later).
+void labelChordsById(Dual& d) {
+  d.labelChord.resize(d.chords.size());
+  std::iota(d.labelChord.begin(), d.labelChord.end(), 0);
+}
+
 }  // namespace
 
 Dual extractDual(const Complex& cx, DualExtras* extras) {
@@ -473,6 +480,7 @@ Dual extractDual(const Complex& cx, DualExtras* extras) {
   }
   extractSheets(cx, d, extras);
   const std::vector<int32_t> newChordId = extractChords(cx, d);
+  labelChordsById(d);
   if (extras) {  // the tracker's per-slot state, here where whole-mesh passes are compiled for speed
     extras->slotShares.assign(3 * n, 0);
     for (HexId h : cx.hexes())
@@ -520,7 +528,7 @@ void validateDual(const Complex& cx, const Dual& d) {
     for (size_t k = 0; k < ch.slots.size(); ++k) {
       Slot s = ch.slots[k];
       mark(seenChord, s, "chord", ch.id);
-      if (d.chordOf[s.hex][s.axis] != ch.id) fail(slotName(s) + " is in chord " + std::to_string(ch.id) + " but chordOf says otherwise");
+      if (d.chordAt(s.hex, s.axis) != ch.id) fail(slotName(s) + " is in chord " + std::to_string(ch.id) + " but chordOf says otherwise");
       bool last = k + 1 == ch.slots.size();
       if (last && !ch.closed) continue;
       Slot next = ch.slots[last ? 0 : k + 1];
@@ -540,7 +548,7 @@ void validateDual(const Complex& cx, const Dual& d) {
         if (g.boundary()) continue;
         int a2 = mapAxisAcross(cx, h, f, a);
         if (axisOfFace(f) == a) {
-          if (d.chordOf[h][a] != d.chordOf[g.hex][a2]) fail(slotName(s) + " and its neighbour across face " + std::to_string(f) + " are in different chords");
+          if (d.chordAt(h, a) != d.chordAt(g.hex, a2)) fail(slotName(s) + " and its neighbour across face " + std::to_string(f) + " are in different chords");
         } else if (d.sheetAt(h, a) != d.sheetAt(g.hex, a2)) {
           fail(slotName(s) + " and its neighbour across face " + std::to_string(f) + " are in different sheets");
         }
@@ -567,7 +575,7 @@ void compareDuals(const Complex& cx, const Dual& a, const Dual& b) {
   for (HexId h : cx.hexes())
     for (int ax = 0; ax < 3; ++ax) {
       link(sheetMap, sheetBack, a.sheetAt(h, ax), b.sheetAt(h, ax), "sheet", {h, ax});
-      link(chordMap, chordBack, a.chordOf[h][ax], b.chordOf[h][ax], "chord", {h, ax});
+      link(chordMap, chordBack, a.chordAt(h, ax), b.chordAt(h, ax), "chord", {h, ax});
     }
   size_t liveA = 0, liveB = 0;
   for (const Sheet& s : a.sheets) liveA += s.alive;

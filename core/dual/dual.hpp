@@ -89,7 +89,19 @@ struct Dual {
   // re-pointing the labels of one instead of re-writing its slots. Read sheet ids with sheetAt().
   std::vector<std::array<int32_t, 3>> sheetLabel;
   std::vector<int32_t> labelSheet;
-  std::vector<std::array<int32_t, 3>> chordOf;  // per hex id (capacity), per axis; -1 for tombstones
+  // Per hex id (capacity), per axis: a chord LABEL, -1 for tombstones (the name is extraction's).
+  // Extraction gives every chord one label equal to its id. DualTracker lists a chord as pieces of
+  // labels' runs (the slots a label was made with, by place: chordPlace), so joining or cutting
+  // chords writes no slot outside the edit; a label's slots can then lie in several chords:
+  // labelChord names the chord of a label lying in one, else (-1) labelCuts lists its ranges of
+  // places per chord. Read chord ids with chordAt().
+  std::vector<std::array<int32_t, 3>> chordOf;
+  std::vector<int32_t> labelChord;
+  struct ChordCut {
+    int32_t lo, hi, chord;  // places [lo, hi) of a label's run lie in this chord
+  };
+  std::vector<std::vector<ChordCut>> labelCuts;  // per label (DualTracker only)
+  std::vector<int32_t> chordPlace;               // per slot: its place in its label's run (DualTracker only)
 
   // The sheet id of slot (h, a), -1 for a tombstone.
   int32_t sheetAt(HexId h, int a) const {
@@ -97,6 +109,18 @@ struct Dual {
     return l < 0 ? -1 : labelSheet[size_t(l)];
   }
   std::array<int32_t, 3> sheetsAt(HexId h) const { return {sheetAt(h, 0), sheetAt(h, 1), sheetAt(h, 2)}; }
+  // The chord id of slot (h, a), -1 for a tombstone.
+  int32_t chordAt(HexId h, int a) const {
+    const int32_t l = chordOf[size_t(h)][size_t(a)];
+    if (l < 0) return -1;
+    const int32_t c = labelChord[size_t(l)];
+    if (c >= 0) return c;
+    const int32_t i = chordPlace[3 * size_t(h) + size_t(a)];
+    for (const ChordCut& k : labelCuts[size_t(l)])
+      if (i >= k.lo && i < k.hi) return k.chord;
+    return -1;
+  }
+  std::array<int32_t, 3> chordsAt(HexId h) const { return {chordAt(h, 0), chordAt(h, 1), chordAt(h, 2)}; }
 };
 
 // Axis of the neighbour's hex that continues axis `a` of hex h across face f (f must be interior).
@@ -194,7 +218,7 @@ void compareDuals(const Complex& cx, const Dual& a, const Dual& b);
 
 namespace hexdual {
 // Checks that a Dual describes the complex: every live slot is listed exactly once in the sheet
-// and chord named by sheetAt/chordOf, slots glued across parallel (sheet) or normal (chord) quads
+// and chord named by sheetAt/chordAt, slots glued across parallel (sheet) or normal (chord) quads
 // share a sheet or chord, and chords list consecutive glued slots. Throws Error naming the first
 // inconsistency. Used after incremental updates in debug builds and tests.
 void validateDual(const Complex& cx, const Dual& dual);

@@ -112,7 +112,22 @@ DualTracker::DualTracker(const Complex& cx) {
     countPair(l[size_t((t.axis + 1) % 3)], l[size_t((t.axis + 2) % 3)], int32_t(ch.slots.size()));
   }
   share_ = std::move(extras.slotShares);
-  chordPos_ = std::move(extras.chordPlaces);
+  // Every chord is one piece: its label's run (extraction numbers labels as chords).
+  dual_.chordPlace = std::move(extras.chordPlaces);
+  const size_t chords = dual_.chords.size();
+  runs_.resize(chords);
+  pieces_.resize(chords);
+  chordSelf_.resize(chords);
+  unsettledMark_.assign(chords, 0);
+  dual_.labelCuts.resize(chords);
+  for (size_t c = 0; c < chords; ++c) {
+    const Chord& ch = dual_.chords[c];
+    const int32_t len = int32_t(ch.slots.size());
+    runs_[c] = ch.slots;
+    pieces_[c].assign(1, Piece{int32_t(c), 0, len, false});
+    dual_.labelCuts[c].assign(1, Dual::ChordCut{0, len, int32_t(c)});
+    chordSelf_[c] = ch.selfIntersecting;
+  }
   delta_.assign(dual_.sheets.size(), 0);  // the scratch arrays are sized by the first update
 }
 
@@ -354,6 +369,11 @@ void DualTracker::releaseRetiredTail() {
     }
   }
   while (!dual_.chords.empty() && !dual_.chords.back().alive) dual_.chords.pop_back();
+  pieces_.resize(dual_.chords.size());
+  chordSelf_.resize(dual_.chords.size());
+  unsettledMark_.resize(dual_.chords.size());
+  unsettled_.erase(std::remove_if(unsettled_.begin(), unsettled_.end(), [&](int32_t id) { return size_t(id) >= dual_.chords.size(); }),
+                   unsettled_.end());
 }
 
 DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology) {
@@ -888,6 +908,7 @@ DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bo
   const size_t cap = std::max(size_t(cx.hexCapacity()), dual_.sheetLabel.size());
   dual_.sheetLabel.resize(cap, {-1, -1, -1});
   dual_.chordOf.resize(cap, {-1, -1, -1});
+  dual_.chordPlace.resize(3 * cap, 0);
   flooder_.reserve(cap);
   edgeMarks_.resize(cap, 0);
   walked_.resize(cap, 0);
@@ -1040,7 +1061,213 @@ void DualTracker::updateSheetsByFlood(const Complex& cx, const std::vector<HexId
   for (int id : change.sheetsChanged) flag(id);
 }
 
+// ---- chords ----
+
+int32_t DualTracker::chordLength(int32_t id) const {
+  int32_t n = 0;
+  for (const Piece& p : pieces_[size_t(id)]) n += p.hi - p.lo;
+  return n;
+}
+
+int32_t DualTracker::placeInChord(int32_t id, Slot s) const {
+  const int32_t l = dual_.chordOf[size_t(s.hex)][size_t(s.axis)];
+  if (l < 0) return -1;
+  const int32_t i = dual_.chordPlace[slotIndex(s)];
+  int32_t before = 0;
+  for (const Piece& p : pieces_[size_t(id)]) {
+    if (p.label == l && i >= p.lo && i < p.hi) return before + (p.reversed ? p.hi - 1 - i : i - p.lo);
+    before += p.hi - p.lo;
+  }
+  return -1;
+}
+
+Slot DualTracker::chordSlotAt(int32_t id, int32_t q) const {
+  for (const Piece& p : pieces_[size_t(id)]) {
+    const int32_t n = p.hi - p.lo;
+    if (q < n) return runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - q : p.lo + q)];
+    q -= n;
+  }
+  return {};
+}
+
+void DualTracker::sliceChord(int32_t id, int32_t a, int32_t b, std::vector<Piece>& out) const {
+  int32_t before = 0;
+  for (const Piece& p : pieces_[size_t(id)]) {
+    const int32_t n = p.hi - p.lo, from = std::max(a, before), to = std::min(b + 1, before + n);
+    if (from < to) {
+      const int32_t x = from - before, y = to - before;  // listed offsets [x, y) in the piece
+      out.push_back(p.reversed ? Piece{p.label, p.hi - y, p.hi - x, true} : Piece{p.label, p.lo + x, p.lo + y, false});
+    }
+    before += n;
+  }
+}
+
+// A label for a run of slots, written on them with their places.
+int32_t DualTracker::newChordLabel(std::vector<Slot> run) {
+  int32_t l;
+  if (!freeChordLabels_.empty()) {
+    l = freeChordLabels_.back();
+    freeChordLabels_.pop_back();
+  } else {
+    l = int32_t(runs_.size());
+    runs_.emplace_back();
+    dual_.labelCuts.emplace_back();
+    dual_.labelChord.push_back(-1);
+  }
+  for (size_t i = 0; i < run.size(); ++i) {
+    dual_.chordOf[size_t(run[i].hex)][size_t(run[i].axis)] = l;
+    dual_.chordPlace[slotIndex(run[i])] = int32_t(i);
+  }
+  runs_[size_t(l)] = std::move(run);
+  dual_.labelCuts[size_t(l)].clear();
+  dual_.labelChord[size_t(l)] = -1;
+  return l;
+}
+
+// Adds or removes a range of a label's places listed in a chord; the label's chord (or -1 when its
+// places lie in several) follows. Labels left with no range are released by releaseLabels().
+void DualTracker::cutLabel(int32_t label, int32_t lo, int32_t hi, int32_t chord, bool add) {
+  auto& cuts = dual_.labelCuts[size_t(label)];
+  if (add) {
+    cuts.push_back({lo, hi, chord});
+  } else {
+    for (size_t i = 0; i < cuts.size(); ++i)
+      if (cuts[i].lo == lo && cuts[i].hi == hi && cuts[i].chord == chord) {
+        cuts.erase(cuts.begin() + std::ptrdiff_t(i));
+        break;
+      }
+    dropped_.push_back(label);
+  }
+  int32_t c = cuts.empty() ? -1 : cuts[0].chord;
+  for (const Dual::ChordCut& k : cuts) c = k.chord == c ? c : -1;
+  dual_.labelChord[size_t(label)] = c;
+}
+
+// Labels that lost places in this update and lie in no chord any more: no slot carries them.
+void DualTracker::releaseLabels() {
+  std::sort(dropped_.begin(), dropped_.end());
+  dropped_.erase(std::unique(dropped_.begin(), dropped_.end()), dropped_.end());
+  for (int32_t l : dropped_)
+    if (dual_.labelCuts[size_t(l)].empty()) {
+      runs_[size_t(l)] = std::vector<Slot>();
+      dual_.labelChord[size_t(l)] = -1;
+      freeChordLabels_.push_back(l);
+    }
+  dropped_.clear();
+}
+
+// Lists chord id as these pieces (joined where they continue one another). A chord cut and joined
+// so often that it has many pieces is given one run again (its slots re-labelled: a rare, whole pass).
+void DualTracker::setChordPieces(int32_t id, std::vector<Piece> pieces) {
+  std::vector<Piece> joined;
+  for (const Piece& p : pieces) {
+    if (!joined.empty()) {
+      Piece& q = joined.back();
+      if (q.label == p.label && q.reversed == p.reversed && (p.reversed ? p.hi == q.lo : q.hi == p.lo)) {
+        q.lo = std::min(q.lo, p.lo);
+        q.hi = std::max(q.hi, p.hi);
+        continue;
+      }
+    }
+    joined.push_back(p);
+  }
+  constexpr size_t kMaxPieces = 16;
+  if (joined.size() > kMaxPieces) {
+    std::vector<Slot> run;
+    for (const Piece& p : joined)
+      for (int32_t k = 0; k < p.hi - p.lo; ++k)
+        run.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
+    for (const Piece& p : joined) dropped_.push_back(p.label);  // they lose these places
+    slotsTouched_ += run.size();
+    const int32_t n = int32_t(run.size());
+    joined.assign(1, Piece{newChordLabel(std::move(run)), 0, n, false});
+  }
+  for (const Piece& p : joined) cutLabel(p.label, p.lo, p.hi, id, true);
+  pieces_[size_t(id)] = std::move(joined);
+  if (!unsettledMark_[size_t(id)]) {
+    unsettledMark_[size_t(id)] = 1;
+    unsettled_.push_back(id);
+  }
+}
+
+bool DualTracker::chordSelfIntersects(int32_t id) const {
+  for (const Piece& p : pieces_[size_t(id)])
+    for (int32_t i = p.lo; i < p.hi; ++i) {
+      const Slot t = runs_[size_t(p.label)][size_t(i)];
+      if (dual_.chordAt(t.hex, (t.axis + 1) % 3) == id || dual_.chordAt(t.hex, (t.axis + 2) % 3) == id) return true;
+    }
+  return false;
+}
+
+// Chord lists (and self-intersection where the update left it open) from their pieces, for readers.
+void DualTracker::settleChords() const {
+  for (int32_t id : unsettled_) {
+    unsettledMark_[size_t(id)] = 0;
+    Chord& ch = dual_.chords[size_t(id)];
+    ch.slots.clear();
+    if (!ch.alive) continue;
+    ch.slots.reserve(size_t(chordLength(id)));
+    for (const Piece& p : pieces_[size_t(id)])
+      for (int32_t k = 0; k < p.hi - p.lo; ++k)
+        ch.slots.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
+    if (chordSelf_[size_t(id)] == 2) chordSelf_[size_t(id)] = chordSelfIntersects(id);
+    ch.selfIntersecting = chordSelf_[size_t(id)] != 0;
+  }
+  unsettled_.clear();
+}
+
 void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
+  // A chord whose touched slots still have the same neighbours along it is unchanged.
+  auto unchanged = [&](int32_t id, const std::vector<Slot>& own) {
+    const int32_t len = chordLength(id);
+    const bool closed = dual_.chords[size_t(id)].closed;
+    for (Slot s : own) {
+      const int32_t p = placeInChord(id, s);
+      if (!cx.isHex(s.hex) || p < 0) return false;
+      auto along = [&](int face, Slot& n) {
+        Gluing g = cx.gluing(s.hex, face);
+        if (g.boundary()) return false;
+        n = {g.hex, tables::axisOfFace(g.face)};
+        return true;
+      };
+      Slot lo, hi, prev, next;
+      const bool hasLo = along(2 * s.axis, lo), hasHi = along(2 * s.axis + 1, hi);
+      const bool hasPrev = p > 0 || closed, hasNext = p + 1 < len || closed;
+      if (hasPrev) prev = chordSlotAt(id, p > 0 ? p - 1 : len - 1);
+      if (hasNext) next = chordSlotAt(id, p + 1 < len ? p + 1 : 0);
+      auto same = [](bool x, Slot a, bool y, Slot b) { return x == y && (!x || a == b); };
+      if (!(same(hasLo, lo, hasPrev, prev) && same(hasHi, hi, hasNext, next)) &&
+          !(same(hasLo, lo, hasNext, next) && same(hasHi, hi, hasPrev, prev)))
+        return false;
+    }
+    return true;
+  };
+  // The touched slots grouped by chord, so each chord reads only its own.
+  std::vector<std::pair<int32_t, Slot>> through;
+  for (HexId h : touched)
+    for (int a = 0; a < 3; ++a) {
+      const int32_t c = dual_.chordAt(h, a);
+      if (c >= 0) through.push_back({c, Slot{h, a}});
+    }
+  std::sort(through.begin(), through.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<int32_t> ids;
+  std::vector<Slot> own;
+  for (size_t i = 0, j = 0; i < through.size(); i = j) {
+    const int32_t id = through[i].first;
+    own.clear();
+    for (j = i; j < through.size() && through[j].first == id; ++j) own.push_back(through[j].second);
+    slotsTouched_ += own.size();
+    if (!unchanged(id, own)) ids.push_back(id);
+  }
+  chordsRewalked_ = !localChords_ || !rejoinChords(cx, touched, ids, change);
+  if (chordsRewalked_) rewalkChords(cx, touched, ids, change);
+}
+
+// Re-walks the changed chords whole from the touched slots (relabel): the reference, and the way
+// out when the local rejoin is not sure.
+void DualTracker::rewalkChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
+                               DualChange& change) {
+  settleChords();
   int32_t* chordOf = dual_.chordOf[0].data();
   auto walk = [&](Slot s, Chord& ch, std::vector<int32_t>& previous) {
     ch.id = kTemp;
@@ -1051,144 +1278,436 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
       ch.selfIntersecting = ch.selfIntersecting || of[(t.axis + 1) % 3] == kTemp || of[(t.axis + 2) % 3] == kTemp;
     }
   };
-  // A chord whose touched slots still have the same neighbours along it (read from the slot's
-  // place in its list) is unchanged: it is not re-walked.
-  auto unchanged = [&](int id) {
-    const Chord& ch = dual_.chords[size_t(id)];
-    const size_t len = ch.slots.size();
-    for (HexId h : touched)
-      for (int a = 0; a < 3; ++a) {
-        if (dual_.chordOf[size_t(h)][size_t(a)] != id) continue;
-        const size_t p = size_t(chordPos_[3 * size_t(h) + size_t(a)]);
-        if (!cx.isHex(h) || p >= len || !(ch.slots[p] == Slot{h, a})) return false;
-        auto along = [&](int face, Slot& n) {
-          Gluing g = cx.gluing(h, face);
-          if (g.boundary()) return false;
-          n = {g.hex, tables::axisOfFace(g.face)};
-          return true;
-        };
-        Slot lo, hi, prev, next;
-        const bool hasLo = along(2 * a, lo), hasHi = along(2 * a + 1, hi);
-        const bool hasPrev = p > 0 || ch.closed, hasNext = p + 1 < len || ch.closed;
-        if (hasPrev) prev = ch.slots[p > 0 ? p - 1 : len - 1];
-        if (hasNext) next = ch.slots[p + 1 < len ? p + 1 : 0];
-        auto same = [](bool x, Slot s, bool y, Slot t) { return x == y && (!x || s == t); };
-        if (!(same(hasLo, lo, hasPrev, prev) && same(hasHi, hi, hasNext, next)) &&
-            !(same(hasLo, lo, hasNext, next) && same(hasHi, hi, hasPrev, prev)))
-          return false;
-      }
-    return true;
-  };
-  chordPos_.resize(3 * dual_.chordOf.size(), 0);
-  // The touched slots grouped by chord, so each chord reads only its own.
-  std::vector<std::pair<int32_t, Slot>> through;
-  for (HexId h : touched)
-    for (int a = 0; a < 3; ++a)
-      if (dual_.chordOf[size_t(h)][size_t(a)] >= 0) through.push_back({dual_.chordOf[size_t(h)][size_t(a)], Slot{h, a}});
-  std::sort(through.begin(), through.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  std::vector<int32_t> rest;
-  std::vector<Slot> own;
-  for (size_t i = 0, j = 0; i < through.size(); i = j) {
-    const int32_t id = through[i].first;
-    own.clear();
-    for (j = i; j < through.size() && through[j].first == id; ++j) own.push_back(through[j].second);
-    if (unchanged(id)) continue;
-    if (spliceChord(cx, touched, id, own)) change.chordsChanged.push_back(id);
-    else rest.push_back(id);
+  for (int32_t id : ids) {
+    for (const Piece& p : pieces_[size_t(id)]) cutLabel(p.label, p.lo, p.hi, id, false);
+    pieces_[size_t(id)].clear();
   }
-  const size_t spliced = change.chordsChanged.size();  // their positions are already written
-  slotsTouched_ += relabel(cx, touched, dual_.chordOf, dual_.chords, rest, walk, change.chordsCreated,
-                           change.chordsChanged, change.chordsRemoved, [](int) { return false; },
-                           [](int id) { return int32_t(id); });
-  auto place = [&](int id) {
-    const auto& slots = dual_.chords[size_t(id)].slots;
-    for (size_t i = 0; i < slots.size(); ++i) chordPos_[3 * size_t(slots[i].hex) + size_t(slots[i].axis)] = int32_t(i);
+  std::vector<std::pair<int32_t, int32_t>> made;  // (chord id, label): the runs are set after the walks
+  auto labelOf = [&](int id) {
+    const int32_t l = newChordLabel({});
+    made.push_back({int32_t(id), l});
+    return l;
   };
-  for (int id : change.chordsCreated) place(id);
-  for (size_t i = spliced; i < change.chordsChanged.size(); ++i) place(change.chordsChanged[i]);
+  slotsTouched_ += relabel(
+      cx, touched, dual_.chordOf, dual_.chords, ids, walk, change.chordsCreated, change.chordsChanged,
+      change.chordsRemoved, [](int) { return false; }, labelOf);
+  const size_t n = dual_.chords.size();
+  pieces_.resize(n);
+  chordSelf_.resize(n, 0);
+  unsettledMark_.resize(n, 0);
+  for (auto [id, l] : made) {
+    const Chord& ch = dual_.chords[size_t(id)];
+    runs_[size_t(l)] = ch.slots;
+    for (size_t i = 0; i < ch.slots.size(); ++i) dual_.chordPlace[slotIndex(ch.slots[i])] = int32_t(i);
+    const int32_t len = int32_t(ch.slots.size());
+    dual_.labelCuts[size_t(l)].assign(1, Dual::ChordCut{0, len, id});
+    dual_.labelChord[size_t(l)] = id;
+    pieces_[size_t(id)].assign(1, Piece{l, 0, len, false});
+    chordSelf_[size_t(id)] = ch.selfIntersecting;
+  }
+  // Labels of the old pieces are released after the walks, which parked every slot that carried them.
+  releaseLabels();
 }
 
-// An open chord cut and re-joined in one place (TK03 §3.2: an edit changes chords only through the
-// edited hexes) gets the run of its list between the untouched slots either side of its touched
-// slots replaced by a walk between those two: the result, id and order, is the one a re-walk from
-// its smallest touched slot gives (relabel), at the cost of the run. False (nothing written) when
-// that is not sure: closed or self-intersecting chords, touched slots at an end, a run that leaves
-// the touched hexes, meets another chord or leaves slots behind, or a re-walk that would list it
-// the other way round.
-bool DualTracker::spliceChord(const Complex& cx, const std::vector<HexId>& touched, int32_t id,
-                              const std::vector<Slot>& own) {
-  Chord& ch = dual_.chords[size_t(id)];
-  if (ch.closed || ch.selfIntersecting) return false;
-  const size_t len = ch.slots.size();
-  auto isTouched = [&](HexId h) { return std::binary_search(touched.begin(), touched.end(), h); };
-  auto label = [&](Slot s) { return dual_.chordOf[size_t(s.hex)][size_t(s.axis)]; };
-  size_t lo = len, hi = 0, liveOld = 0;
-  for (Slot s : own) {
-    const size_t p = size_t(chordPos_[3 * size_t(s.hex) + size_t(s.axis)]);
-    if (p >= len || !(ch.slots[p] == s)) return false;
-    lo = std::min(lo, p);
-    hi = std::max(hi, p);
-    liveOld += cx.isHex(s.hex);
-  }
-  if (lo == len || lo == 0 || hi + 1 >= len) return false;
-  const Slot from = ch.slots[lo - 1], to = ch.slots[hi + 1];
-  if (isTouched(from.hex) || isTouched(to.hex) || !cx.isHex(from.hex) || !cx.isHex(to.hex)) return false;
-  for (size_t p = lo; p <= hi; ++p)
-    if (!isTouched(ch.slots[p].hex)) return false;
-  // The face of an end slot of the run that leads away from it: the other one leads to `beyond`
-  // (or to the boundary at the chord's end). -1 when both or neither do.
-  auto inward = [&](Slot s, bool atEnd, Slot beyond) {
+// The changed chords rebuilt from what the edit left of them (TK03 §3.2: an edit changes chords
+// only through the edited hexes): their untouched stretches keep their labels and places, walks
+// through the touched hexes join the stretches' ends (a collapse joins two chords crosswise, TK03
+// §4.4), and touched slots no walk meets form chords of their own. Each new chord gets the id and
+// the slot order a re-walk from its smallest touched slot gives (relabel); only the touched slots
+// are written. False, writing nothing, when the state is not one it can follow.
+bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
+                               DualChange& change) {
+  auto inIds = [&](int32_t c) { return c >= 0 && std::binary_search(ids.begin(), ids.end(), c); };
+  // The touched slots, by slot (touched is sorted); a slot's old chord, run or own chord.
+  struct Touched {
+    Slot slot;
+    int32_t old;
+    bool live;
+    int32_t run = -1, entry = -1;  // the walk that met it, and the face it entered through
+    int32_t comp = -1;             // the new chord it lies in
+  };
+  std::vector<Touched> ts;
+  ts.reserve(3 * touched.size());
+  for (HexId h : touched)
+    for (int a = 0; a < 3; ++a) ts.push_back({{h, a}, dual_.chordAt(h, a), cx.isHex(h)});
+  auto indexOf = [&](Slot s) -> int32_t {
+    if (!std::binary_search(touched.begin(), touched.end(), s.hex)) return -1;
+    return int32_t(3 * size_t(std::lower_bound(touched.begin(), touched.end(), s.hex) - touched.begin()) +
+                   size_t(s.axis));
+  };
+  auto faceTo = [&](Slot s, Slot t) {  // the one face of s's hex along its axis glued to slot t, else -1
     int found = -1, count = 0;
     for (int f = 2 * s.axis; f < 2 * s.axis + 2; ++f) {
       Gluing g = cx.gluing(s.hex, f);
-      const bool back = atEnd ? g.boundary() : (!g.boundary() && Slot{g.hex, tables::axisOfFace(g.face)} == beyond);
-      if (!back) found = f;
-      count += back;
+      if (!g.boundary() && Slot{g.hex, tables::axisOfFace(g.face)} == t) {
+        found = f;
+        ++count;
+      }
     }
     return count == 1 ? found : -1;
   };
-  const int exitFace = inward(from, lo == 1, lo >= 2 ? ch.slots[lo - 2] : from);
-  const int entryFace = inward(to, hi + 2 == len, hi + 2 < len ? ch.slots[hi + 2] : to);
-  if (exitFace < 0 || entryFace < 0) return false;
-  std::vector<Slot> run;
-  size_t liveKept = 0;
-  Slot cur = from;
-  int exit = exitFace;
-  for (;;) {
-    Gluing g = cx.gluing(cur.hex, exit);
-    if (g.boundary()) return false;
-    cur = {g.hex, tables::axisOfFace(g.face)};
-    if (cur == to) {
-      if (g.face != entryFace) return false;
-      break;
+  // ---- stretches: the untouched places of each old chord between touched ones ----
+  struct Stretch {
+    int32_t chord, a, b;  // places a..b (b >= length wraps round a closed chord)
+    Slot end[2];
+    int face[2] = {-1, -1};      // the face each end leaves through, -1 at the chord's boundary end
+    int32_t link[2] = {-1, -1};  // the walk from or to each end
+  };
+  std::vector<Stretch> stretches;
+  std::vector<int32_t> lengths(ids.size()), liveOld(ids.size(), 0);
+  std::vector<uint8_t> contiguous(ids.size(), 0);
+  for (size_t k = 0; k < ids.size(); ++k) {
+    const int32_t id = ids[k], len = chordLength(id);
+    const bool closed = dual_.chords[size_t(id)].closed;
+    lengths[k] = len;
+    std::vector<int32_t> at;
+    for (const Touched& t : ts)
+      if (t.old == id) {
+        const int32_t p = placeInChord(id, t.slot);
+        if (p < 0) return false;
+        at.push_back(p);
+        liveOld[k] += t.live;
+      }
+    if (at.empty()) return false;
+    std::sort(at.begin(), at.end());
+    contiguous[k] =
+        !closed && at.front() > 0 && at.back() + 1 < len && at.back() - at.front() + 1 == int32_t(at.size());
+    auto add = [&](int32_t a, int32_t b) {
+      Stretch st{id, a, b, {chordSlotAt(id, a % len), chordSlotAt(id, b % len)}};
+      for (int side = 0; side < 2; ++side) {
+        if (!closed && (side == 0 ? a == 0 : b == len - 1)) continue;  // the chord's boundary end
+        const Slot n = chordSlotAt(id, side == 0 ? (a - 1 + len) % len : (b + 1) % len);
+        st.face[side] = faceTo(st.end[side], n);
+        if (st.face[side] < 0) return false;
+      }
+      stretches.push_back(st);
+      return true;
+    };
+    bool ok = true;
+    if (!closed) {
+      if (at.front() > 0) ok = ok && add(0, at.front() - 1);
+      if (at.back() + 1 < len) ok = ok && add(at.back() + 1, len - 1);
     }
-    if (!isTouched(cur.hex) || run.size() >= 3 * touched.size() || std::find(run.begin(), run.end(), cur) != run.end())
-      return false;
-    const int32_t was = label(cur);
-    if (was != id && was != -1) return false;
-    liveKept += was == id;
-    run.push_back(cur);
-    exit = tables::oppositeFace(g.face);
+    for (size_t j = 0; ok && j < at.size(); ++j) {
+      if (j + 1 == at.size() && !closed) break;
+      const int32_t next = j + 1 < at.size() ? at[j + 1] : at[0] + len;
+      if (next > at[j] + 1) ok = add(at[j] + 1, next - 1);
+    }
+    if (!ok) return false;
   }
-  slotsTouched_ += run.size() + (hi - lo + 1);
-  if (liveKept != liveOld) return false;
-  // relabel re-walks from the smallest touched slot back through its low face: that end must stay first.
-  const auto smallest = std::min_element(run.begin(), run.end());
-  if (smallest == run.end()) return false;
-  Gluing low = cx.gluing(smallest->hex, 2 * smallest->axis);
-  const Slot before = smallest == run.begin() ? from : *(smallest - 1);
-  if (low.boundary() || !(Slot{low.hex, tables::axisOfFace(low.face)} == before)) return false;
-  for (size_t p = lo; p <= hi; ++p)
-    if (!cx.isHex(ch.slots[p].hex)) dual_.chordOf[size_t(ch.slots[p].hex)][size_t(ch.slots[p].axis)] = -1;
-  for (Slot t : run) dual_.chordOf[size_t(t.hex)][size_t(t.axis)] = id;
-  for (Slot t : run)
-    for (int a = 1; a < 3; ++a) ch.selfIntersecting = ch.selfIntersecting || label({t.hex, (t.axis + a) % 3}) == id;
-  std::vector<Slot>& slots = ch.slots;
-  slots.erase(slots.begin() + std::ptrdiff_t(lo), slots.begin() + std::ptrdiff_t(hi + 1));
-  slots.insert(slots.begin() + std::ptrdiff_t(lo), run.begin(), run.end());
-  // Positions after the run shift when its length changes: array writes, no walk.
-  const size_t end = run.size() + 1 == hi - lo + 2 ? lo + run.size() : slots.size();
-  for (size_t p = lo; p < end; ++p) chordPos_[3 * size_t(slots[p].hex) + size_t(slots[p].axis)] = int32_t(p);
+  slotsTouched_ += 2 * stretches.size();
+  // ---- walks through the touched slots from every stretch end ----
+  struct Walk {
+    std::vector<int32_t> slots;  // indices into ts, in walk order
+    int32_t from, to;            // stretch ends (2 * stretch + side), -1 for the boundary
+  };
+  std::vector<Walk> walks;
+  auto endAt = [&](Slot s, int face) -> int32_t {
+    for (size_t r = 0; r < stretches.size(); ++r)
+      for (int side = 0; side < 2; ++side)
+        if (stretches[r].face[side] == face && stretches[r].end[side] == s) return int32_t(2 * r + size_t(side));
+    return -1;
+  };
+  for (size_t r = 0; r < stretches.size(); ++r)
+    for (int side = 0; side < 2; ++side) {
+      if (stretches[r].face[side] < 0 || stretches[r].link[side] >= 0) continue;
+      const int32_t w = int32_t(walks.size());
+      walks.push_back({{}, int32_t(2 * r + size_t(side)), -1});
+      stretches[r].link[side] = w;
+      Slot cur = stretches[r].end[side];
+      int exit = stretches[r].face[side];
+      for (;;) {
+        Gluing g = cx.gluing(cur.hex, exit);
+        if (g.boundary()) break;
+        const Slot n{g.hex, tables::axisOfFace(g.face)};
+        const int32_t k = indexOf(n);
+        if (k < 0) {
+          const int32_t e = endAt(n, g.face);
+          if (e < 0 || stretches[size_t(e / 2)].link[e % 2] >= 0) return false;
+          stretches[size_t(e / 2)].link[e % 2] = w;
+          walks[size_t(w)].to = e;
+          break;
+        }
+        Touched& t = ts[size_t(k)];
+        if (!t.live || t.run >= 0 || (t.old >= 0 && !inIds(t.old)) || walks[size_t(w)].slots.size() >= ts.size())
+          return false;
+        t.run = w;
+        t.entry = g.face;
+        walks[size_t(w)].slots.push_back(k);
+        cur = n;
+        exit = tables::oppositeFace(g.face);
+      }
+      slotsTouched_ += walks[size_t(w)].slots.size();
+    }
+  // ---- new chords: chains of stretches and walks, and chords of touched slots alone ----
+  struct Item {
+    int32_t stretch = -1, slot = -1;  // a stretch (listed a..b when forward), or one touched slot (ts index)
+    bool forward = true;
+  };
+  struct Comp {
+    std::vector<Item> items;
+    bool closed = false;
+    int32_t first = -1;  // its smallest touched slot (ts index)
+  };
+  std::vector<Comp> comps;
+  std::vector<uint8_t> inChain(stretches.size(), 0);
+  auto walkItems = [&](int32_t w, bool forward, std::vector<Item>& out) {
+    const auto& sl = walks[size_t(w)].slots;
+    if (forward)
+      for (int32_t k : sl) out.push_back({-1, k, true});
+    else
+      for (size_t i = sl.size(); i-- > 0;) out.push_back({-1, sl[i], false});
+  };
+  for (size_t r0 = 0; r0 < stretches.size(); ++r0) {
+    if (inChain[r0]) continue;
+    inChain[r0] = 1;
+    Comp c;
+    // Rightwards from side 1, then leftwards from side 0 (listed reversed).
+    std::vector<Item> right, left;
+    int32_t end = int32_t(2 * r0 + 1);
+    for (;;) {
+      const int32_t w = stretches[size_t(end / 2)].link[end % 2];
+      if (w < 0) break;
+      const bool fwd = walks[size_t(w)].from == end;
+      walkItems(w, fwd, right);
+      const int32_t other = fwd ? walks[size_t(w)].to : walks[size_t(w)].from;
+      if (other < 0) break;
+      if (size_t(other / 2) == r0) {
+        if (other % 2 != 0) return false;
+        c.closed = true;
+        break;
+      }
+      if (inChain[size_t(other / 2)]) return false;
+      inChain[size_t(other / 2)] = 1;
+      right.push_back({other / 2, -1, other % 2 == 0});
+      end = other ^ 1;
+    }
+    end = int32_t(2 * r0);
+    while (!c.closed) {
+      const int32_t w = stretches[size_t(end / 2)].link[end % 2];
+      if (w < 0) break;
+      const bool fwd = walks[size_t(w)].from == end;
+      std::vector<Item> part;
+      walkItems(w, fwd, part);
+      for (const Item& it : part) left.push_back({-1, it.slot, !it.forward});  // listed right to left
+      const int32_t other = fwd ? walks[size_t(w)].to : walks[size_t(w)].from;
+      if (other < 0) break;
+      if (inChain[size_t(other / 2)]) return false;
+      inChain[size_t(other / 2)] = 1;
+      left.push_back({other / 2, -1, other % 2 == 1});
+      end = other ^ 1;
+    }
+    c.items.assign(left.rbegin(), left.rend());
+    c.items.push_back({int32_t(r0), -1, true});
+    c.items.insert(c.items.end(), right.begin(), right.end());
+    comps.push_back(std::move(c));
+  }
+  // Touched slots no walk met (old chords rebuilt here, or new slots) form chords of their own,
+  // walked as walkChord would from the smallest: back through its low face, then forward.
+  for (size_t k = 0; k < ts.size(); ++k) {
+    Touched& t0 = ts[k];
+    if (!t0.live || t0.run >= 0 || t0.comp >= 0 || (t0.old >= 0 && !inIds(t0.old))) continue;
+    const Slot start = t0.slot;
+    Slot cur = start;
+    int back = 2 * start.axis;
+    bool closed = false;
+    for (size_t steps = 0;; ++steps) {
+      Gluing g = cx.gluing(cur.hex, back);
+      if (g.boundary()) break;
+      cur = {g.hex, tables::axisOfFace(g.face)};
+      back = tables::oppositeFace(g.face);
+      if (indexOf(cur) < 0 || steps > ts.size()) return false;
+      if (cur == start) {
+        if (back != 2 * start.axis) return false;  // a twisted return: the re-walk is the reference
+        closed = true;
+        break;
+      }
+    }
+    if (closed) cur = start;
+    Comp c;
+    c.closed = closed;
+    int exit = closed ? 2 * start.axis + 1 : tables::oppositeFace(back);
+    const int32_t ci = int32_t(comps.size());
+    bool returned = false;
+    for (;;) {
+      const int32_t i = indexOf(cur);
+      Touched& t = ts[size_t(i)];
+      if (!t.live || t.run >= 0 || t.comp >= 0 || (t.old >= 0 && !inIds(t.old))) return false;
+      t.comp = ci;
+      c.items.push_back({-1, i, true});
+      Gluing g = cx.gluing(cur.hex, exit);
+      if (g.boundary()) break;
+      cur = {g.hex, tables::axisOfFace(g.face)};
+      exit = tables::oppositeFace(g.face);
+      const int32_t next = indexOf(cur);
+      if (next < 0) return false;
+      if (ts[size_t(next)].comp == ci) {
+        if (!(cur == start)) return false;
+        returned = true;
+        break;
+      }
+    }
+    if (returned != closed) return false;
+    c.first = int32_t(k);
+    slotsTouched_ += c.items.size();
+    comps.push_back(std::move(c));
+  }
+  // Each chain is listed as a re-walk from its smallest touched slot lists it: from the end its low
+  // face leads to, or (closed) starting there and leaving through its high face.
+  for (size_t ci = 0; ci < comps.size(); ++ci) {
+    Comp& c = comps[ci];
+    if (c.first >= 0) continue;  // a chord of touched slots alone: walked in order
+    size_t at = c.items.size();
+    for (size_t i = 0; i < c.items.size(); ++i)
+      if (c.items[i].slot >= 0 && (at == c.items.size() || c.items[i].slot < c.items[at].slot)) at = i;
+    if (at == c.items.size()) return false;
+    for (const Item& it : c.items)
+      if (it.slot >= 0) ts[size_t(it.slot)].comp = int32_t(ci);
+    // The slot before it in this listing is across its low face when the listing runs along the
+    // walk that met it and it entered through its low face, or against it and through the high one.
+    const Touched& t = ts[size_t(c.items[at].slot)];
+    const bool lowBefore = ((t.entry & 1) == 0) == c.items[at].forward;
+    if (!lowBefore) {
+      std::reverse(c.items.begin(), c.items.end());
+      for (Item& it : c.items) it.forward = !it.forward;
+      at = c.items.size() - 1 - at;
+    }
+    if (c.closed) std::rotate(c.items.begin(), c.items.begin() + std::ptrdiff_t(at), c.items.end());
+    c.first = c.items[c.closed ? 0 : at].slot;
+  }
+  // ---- ids: in the order of each new chord's smallest touched slot, the smallest old id it holds
+  // that no earlier one took, else a fresh one (relabel's rule) ----
+  std::vector<size_t> order(comps.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return comps[x].first < comps[y].first; });
+  auto oldOf = [&](const Item& it) {
+    return it.stretch >= 0 ? stretches[size_t(it.stretch)].chord : ts[size_t(it.slot)].old;
+  };
+  std::vector<int32_t> compId(comps.size(), -1), taken;
+  int32_t fresh = int32_t(dual_.chords.size());
+  for (size_t ci : order) {
+    int32_t best = -1;
+    for (const Item& it : comps[ci].items) {
+      const int32_t o = oldOf(it);
+      if (o >= 0 && (best < 0 || o < best) && std::find(taken.begin(), taken.end(), o) == taken.end()) best = o;
+    }
+    if (best >= 0) taken.push_back(best);
+    compId[ci] = best >= 0 ? best : fresh++;
+  }
+  // ---- self-intersection: a touched hex with two slots in one new chord; untouched hexes only
+  // matter when a chord joins stretches of several old chords (or of one that self-intersected):
+  // then it is left for the reader (settleChords) ----
+  std::vector<uint8_t> self(comps.size(), 0);
+  for (size_t i = 0; i + 2 < ts.size(); i += 3)
+    for (size_t a = 0; a < 3; ++a)
+      for (size_t b = a + 1; b < 3; ++b)
+        if (ts[i + a].comp >= 0 && ts[i + a].comp == ts[i + b].comp) self[size_t(ts[i + a].comp)] = 1;
+  for (size_t ci = 0; ci < comps.size(); ++ci) {
+    int32_t one = -1;
+    bool several = false;
+    for (const Item& it : comps[ci].items)
+      if (it.stretch >= 0) {
+        const int32_t o = stretches[size_t(it.stretch)].chord;
+        several = several || (one >= 0 && o != one);
+        one = o;
+      }
+    if (!self[ci] && (several || (one >= 0 && chordSelf_[size_t(one)] != 0))) self[ci] = 2;
+  }
+  // ---- which of them an in-place splice of one old chord would have given (listed first among the
+  // changed, as before) ----
+  auto splice = [&](size_t ci) {
+    const Comp& c = comps[ci];
+    const int32_t id = compId[ci];
+    const size_t k = size_t(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
+    if (c.closed || k == ids.size() || ids[k] != id || !contiguous[k] || c.items.size() < 3) return false;
+    const Item &head = c.items.front(), &tail = c.items.back();
+    if (head.stretch < 0 || tail.stretch < 0 || !head.forward || !tail.forward ||
+        stretches[size_t(head.stretch)].chord != id || stretches[size_t(head.stretch)].a != 0 ||
+        stretches[size_t(tail.stretch)].chord != id || stretches[size_t(tail.stretch)].b != lengths[k] - 1)
+      return false;
+    int32_t kept = 0;
+    for (size_t i = 1; i + 1 < c.items.size(); ++i) {
+      const Item& it = c.items[i];
+      if (it.slot < 0 || (ts[size_t(it.slot)].old != id && ts[size_t(it.slot)].old != -1)) return false;
+      kept += ts[size_t(it.slot)].old == id;
+    }
+    if (kept != liveOld[k] || c.items.size() - 2 >= 3 * touched.size()) return false;
+    return chordSelf_[size_t(id)] == 0 || (chordSelf_[size_t(id)] == 2 && !chordSelfIntersects(id));
+  };
+  std::vector<uint8_t> spliced(comps.size(), 0);
+  for (size_t ci = 0; ci < comps.size(); ++ci) spliced[ci] = splice(ci);
+
+  // ---- commit: stretches keep their pieces, consecutive touched slots get new labels ----
+  std::vector<std::vector<Piece>> stretchPieces(stretches.size());
+  for (size_t r = 0; r < stretches.size(); ++r) {
+    const Stretch& st = stretches[r];
+    const int32_t len = lengths[size_t(std::lower_bound(ids.begin(), ids.end(), st.chord) - ids.begin())];
+    sliceChord(st.chord, st.a, std::min(st.b, len - 1), stretchPieces[r]);
+    if (st.b >= len) sliceChord(st.chord, 0, st.b - len, stretchPieces[r]);
+  }
+  for (int32_t id : ids) {
+    for (const Piece& p : pieces_[size_t(id)]) cutLabel(p.label, p.lo, p.hi, id, false);
+    pieces_[size_t(id)].clear();
+  }
+  for (const Touched& t : ts)
+    if (!t.live) dual_.chordOf[size_t(t.slot.hex)][size_t(t.slot.axis)] = -1;
+  const size_t n = size_t(fresh);
+  if (dual_.chords.size() < n) dual_.chords.resize(n);
+  pieces_.resize(std::max(pieces_.size(), n));
+  chordSelf_.resize(std::max(chordSelf_.size(), n), 0);
+  unsettledMark_.resize(std::max(unsettledMark_.size(), n), 0);
+  std::vector<int32_t> splicedIds;
+  for (size_t ci : order) {
+    const Comp& c = comps[ci];
+    std::vector<Piece> pieces;
+    std::vector<Slot> run;
+    auto flush = [&] {
+      if (run.empty()) return;
+      const int32_t len = int32_t(run.size());
+      slotsTouched_ += run.size();
+      pieces.push_back({newChordLabel(std::move(run)), 0, len, false});
+      run.clear();
+    };
+    for (const Item& it : c.items) {
+      if (it.slot >= 0) {
+        run.push_back(ts[size_t(it.slot)].slot);
+        continue;
+      }
+      flush();
+      const std::vector<Piece>& ps = stretchPieces[size_t(it.stretch)];
+      if (it.forward) {
+        pieces.insert(pieces.end(), ps.begin(), ps.end());
+      } else {
+        for (size_t i = ps.size(); i-- > 0;) pieces.push_back({ps[i].label, ps[i].lo, ps[i].hi, !ps[i].reversed});
+      }
+    }
+    flush();
+    const int32_t id = compId[ci];
+    Chord& ch = dual_.chords[size_t(id)];
+    ch.id = id;
+    ch.alive = true;
+    ch.closed = c.closed;
+    chordSelf_[size_t(id)] = self[ci];
+    if (self[ci] != 2) ch.selfIntersecting = self[ci] != 0;
+    setChordPieces(id, std::move(pieces));
+    if (!std::binary_search(ids.begin(), ids.end(), id))
+      change.chordsCreated.push_back(id);
+    else if (spliced[ci])
+      splicedIds.push_back(id);
+    else
+      change.chordsChanged.push_back(id);
+  }
+  std::sort(splicedIds.begin(), splicedIds.end());
+  change.chordsChanged.insert(change.chordsChanged.begin(), splicedIds.begin(), splicedIds.end());
+  for (int32_t id : ids)
+    if (std::find(taken.begin(), taken.end(), id) == taken.end()) {
+      Chord& ch = dual_.chords[size_t(id)];
+      ch.alive = false;
+      ch.slots.clear();
+      chordSelf_[size_t(id)] = 0;
+      change.chordsRemoved.push_back(id);
+    }
+  releaseLabels();
   return true;
 }
 

@@ -5,8 +5,10 @@
 // writes no slot: see Dual::sheetLabel); Euler characteristics, loops and
 // orientations of the remainder follow from per-slot shares kept between updates. Edits that
 // touch the boundary or non-orientable sheets re-flood the sheets they touch. Chords through the
-// touched hexes are re-walked, except an open one cut and re-joined in one place: its run
-// through the touched hexes is spliced in place (same id and order as a re-walk). Surviving
+// touched hexes are rebuilt from their untouched stretches and walks through the touched hexes
+// that join them (TK03 §4.4: a collapse cuts two chords and re-joins them crosswise): a chord is
+// listed as pieces of labelled runs (see Dual::chordOf), so a merge or a cut writes only the
+// touched slots (same ids and order as a re-walk). Surviving
 // sheets and chords keep their ids; new ones get fresh ids; when sheets merge or split, the
 // unexplored remainder keeps the id of its largest old sheet and explored pieces keep an old id
 // only when they are all that is left of it; chords follow the smallest old id.
@@ -26,7 +28,13 @@ struct DualChange {
 class DualTracker {
  public:
   explicit DualTracker(const Complex& cx);
-  const Dual& dual() const { return dual_; }
+  // The dual; chords changed since the last read get their slot lists (and self-intersection, when
+  // the update left it open) from their pieces here, so a reader pays for them, not the update.
+  // Not for concurrent first reads (like SlotList, the first read after an update writes).
+  const Dual& dual() const {
+    if (!unsettled_.empty()) settleChords();
+    return dual_;
+  }
   // Brings the dual up to date after an edit of cx: an operation's OpResult::edits, or the undo
   // of one. sheetsKeepTopology: the operation never cuts, merges or re-shapes a sheet (the
   // operation table's flag, keepsSheetTopology(result) in ops/op_table.hpp).
@@ -48,14 +56,37 @@ class DualTracker {
   // Sheet labels re-pointed because two old sheets merged (a merge writes no slot: see Dual::sheetLabel).
   size_t mergedLabels() const { return mergedLabels_; }
   bool lastUpdateReflooded() const { return reflooded_; }
+  // Test knob: false re-walks every changed chord (the reference the local chord update must equal).
+  void setLocalChords(bool on) { localChords_ = on; }
+  // How many pieces of labelled runs chord id is listed as (one after extraction or a re-walk).
+  size_t chordPieces(int32_t id) const { return pieces_[size_t(id)].size(); }
+  // Whether the last update re-walked its changed chords whole (the local rejoin was not sure).
+  bool lastChordsRewalked() const { return chordsRewalked_; }
 
  private:
   bool updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   bool updateSheetsLockstep(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
-  // `own`: the slots of chord `id` in the touched hexes.
-  bool spliceChord(const Complex& cx, const std::vector<HexId>& touched, int32_t id, const std::vector<Slot>& own);
+  bool rejoinChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
+                    DualChange& change);
+  void rewalkChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
+                    DualChange& change);
+  // Chord pieces: places [lo, hi) of a label's run, listed forward or reversed.
+  struct Piece {
+    int32_t label, lo, hi;
+    bool reversed;
+  };
+  int32_t chordLength(int32_t id) const;
+  int32_t placeInChord(int32_t id, Slot s) const;  // -1 when s is not listed in chord id
+  Slot chordSlotAt(int32_t id, int32_t p) const;
+  void sliceChord(int32_t id, int32_t a, int32_t b, std::vector<Piece>& out) const;  // places a..b, b < length
+  int32_t newChordLabel(std::vector<Slot> run);
+  void cutLabel(int32_t label, int32_t lo, int32_t hi, int32_t chord, bool add);
+  void releaseLabels();
+  void setChordPieces(int32_t id, std::vector<Piece> pieces);
+  void settleChords() const;
+  bool chordSelfIntersects(int32_t id) const;
   // Recomputes the smallest-incidence marks of the edges through the live touched hexes and the
   // mid-surface share of every slot whose share the edit changed, listing the changes when asked.
   struct ShareChange {
@@ -76,7 +107,7 @@ class DualTracker {
   void setSign(Slot t, int sign);
   void pruneLabels(int32_t id);  // drops the sheet's labels no slot carries any more
   void mergeSheet(int32_t x, int32_t keep, bool flip);
-  Dual dual_;
+  mutable Dual dual_;  // dual() settles chord lists
   std::vector<std::vector<int32_t>> labels_;  // per sheet id: the labels naming it
   std::vector<int32_t> labelSlots_;           // per label: slots carrying it
   std::vector<uint8_t> labelFlip_;            // per label: its slots' stored orientations are flipped
@@ -104,7 +135,15 @@ class DualTracker {
   std::vector<int8_t> share_;
   std::vector<int32_t> front_;     // per slot: lockstep front + 1 that reached it (0 outside an update)
   std::vector<uint16_t> walked_;   // per hex: edges walked by the current refreshShares (0 outside it)
-  std::vector<int32_t> chordPos_;  // per slot: its place in its chord's slot list
+  // Chords: per label its run of slots (by place); per chord id its pieces; labels no slot carries.
+  std::vector<std::vector<Slot>> runs_;
+  std::vector<std::vector<Piece>> pieces_;
+  std::vector<int32_t> freeChordLabels_;
+  std::vector<int32_t> dropped_;  // labels that lost places in this update (released after it)
+  mutable std::vector<uint8_t> chordSelf_;  // per chord id: 0/1 self-intersecting, 2 not known until read
+  mutable std::vector<int32_t> unsettled_;  // chord ids whose Chord::slots wait for the next dual()
+  mutable std::vector<uint8_t> unsettledMark_;
+  bool localChords_ = true, chordsRewalked_ = false;
   std::vector<int64_t> delta_;     // per sheet id: change of twice its Euler characteristic (0 outside an update)
   size_t slotsTouched_ = 0, sheetSlotsTouched_ = 0, mergedLabels_ = 0;
   bool reflooded_ = false;

@@ -104,7 +104,7 @@ SheetDiagram assembleDiagram(const Dual& dual, int sheet, const MidSurface& s, c
     d.crossings.push_back({sl.hex,
                            sl.axis,
                            out ? of.crossing : pl.pos[size_t(s.centre(int(i)))],
-                           {dual.chordOf[size_t(sl.hex)][size_t(b)], dual.chordOf[size_t(sl.hex)][size_t(c)]},
+                           {dual.chordAt(sl.hex, b), dual.chordAt(sl.hex, c)},
                            out});
   }
   // Chords: walk each (slot, chord axis) pair once.
@@ -135,7 +135,7 @@ SheetDiagram assembleDiagram(const Dual& dual, int sheet, const MidSurface& s, c
       int in = closed ? 2 * b0 : entry;  // the face we enter through
       std::vector<SheetDiagram::ChordLine> pieces(1);
       Slot first = s.slots[size_t(i)];
-      pieces[0].chord = dual.chordOf[size_t(first.hex)][size_t(b)];
+      pieces[0].chord = dual.chordAt(first.hex, b);
       pieces[0].otherSheet = dual.sheetAt(first.hex, 3 - first.axis - b);
       pieces[0].closed = closed;
       int startI = i, startB = b;
