@@ -44,4 +44,22 @@ void assignHuge(std::vector<T>& v, size_t n, const T& x) {
   v.assign(n, x);
 }
 
+// Room for n entries and an eighth more (as Complex::reserve leaves for new hexes), so that arrays
+// kept per hex grow once every n/8 new hexes, not on the first step after a build.
+inline size_t withHeadroom(size_t n) { return n + n / 8 + 64; }
+
+// v.resize(n, x) for a per-hex or per-slot array that grows with the complex: new storage gets
+// headroom and huge-page advice before anything is copied into it.
+template <class T>
+void growHuge(std::vector<T>& v, size_t n, const T& x) {
+  if (v.size() >= n) return;
+  if (v.capacity() < n) {
+    std::vector<T> w;
+    reserveHuge(w, withHeadroom(n));
+    w.assign(v.begin(), v.end());
+    v.swap(w);
+  }
+  v.resize(n, x);
+}
+
 }  // namespace hexdual

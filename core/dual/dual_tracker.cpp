@@ -1,5 +1,7 @@
 #include "dual/dual_tracker.hpp"
 
+#include "complex/huge_pages.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <climits>
@@ -128,7 +130,21 @@ DualTracker::DualTracker(const Complex& cx) {
     dual_.labelCuts[c].assign(1, Dual::ChordCut{0, len, int32_t(c)});
     chordSelf_[c] = ch.selfIntersecting;
   }
-  delta_.assign(dual_.sheets.size(), 0);  // the scratch arrays are sized by the first update
+  delta_.assign(dual_.sheets.size(), 0);
+  growPerHexArrays(size_t(cx.hexCapacity()));
+}
+
+// The per-hex and per-slot arrays, grown to `cap` hexes with headroom (see growHuge): the first
+// steps after a build neither copy nor page-fault a 1M-hex mesh's arrays.
+void DualTracker::growPerHexArrays(size_t cap) {
+  growHuge(dual_.sheetLabel, cap, {-1, -1, -1});
+  growHuge(dual_.chordOf, cap, {-1, -1, -1});
+  growHuge(dual_.chordPlace, 3 * cap, int32_t(0));
+  flooder_.reserve(cap);
+  growHuge(edgeMarks_, cap, uint16_t(0));
+  growHuge(walked_, cap, uint16_t(0));
+  growHuge(share_, 3 * cap, int8_t(0));
+  growHuge(front_, 3 * cap, int32_t(0));
 }
 
 namespace {
@@ -906,14 +922,7 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
 
 DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bool sheetsKeepTopology) {
   const size_t cap = std::max(size_t(cx.hexCapacity()), dual_.sheetLabel.size());
-  dual_.sheetLabel.resize(cap, {-1, -1, -1});
-  dual_.chordOf.resize(cap, {-1, -1, -1});
-  dual_.chordPlace.resize(3 * cap, 0);
-  flooder_.reserve(cap);
-  edgeMarks_.resize(cap, 0);
-  walked_.resize(cap, 0);
-  share_.resize(3 * cap, 0);
-  front_.resize(3 * cap, 0);
+  growPerHexArrays(cap);
   slotsTouched_ = 0;
   sheetSlotsTouched_ = 0;
   mergedLabels_ = 0;

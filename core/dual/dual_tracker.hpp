@@ -107,6 +107,7 @@ class DualTracker {
   void setSign(Slot t, int sign);
   void pruneLabels(int32_t id);  // drops the sheet's labels no slot carries any more
   void mergeSheet(int32_t x, int32_t keep, bool flip);
+  void growPerHexArrays(size_t cap);
   mutable Dual dual_;  // dual() settles chord lists
   std::vector<std::vector<int32_t>> labels_;  // per sheet id: the labels naming it
   std::vector<int32_t> labelSlots_;           // per label: slots carrying it
