@@ -14,7 +14,21 @@ constexpr int loopBit(int f, int a) { return 2 * f + (a == (axisOfFace(f) + 1) %
 
 int axisAcrossGluing(int f, int a, const Gluing& g) { return kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))].axis; }
 
+// facesOfEdge(e) as a table, and as a bit mask of faces.
+constexpr auto kEdgeFaces = [] {
+  std::array<std::array<int, 2>, 12> t{};
+  for (int e = 0; e < 12; ++e) t[size_t(e)] = facesOfEdge(e);
+  return t;
+}();
+constexpr auto kEdgeFaceMask = [] {
+  std::array<unsigned, 12> t{};
+  for (int e = 0; e < 12; ++e) t[size_t(e)] = (1u << facesOfEdge(e)[0]) | (1u << facesOfEdge(e)[1]);
+  return t;
+}();
+
 size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
+// A per-hex array of 3 values read as one flat per-slot array (slotIndex).
+int32_t* flat(std::vector<std::array<int32_t, 3>>& v) { return v.empty() ? nullptr : v[0].data(); }
 
 }  // namespace
 
@@ -152,15 +166,17 @@ bool SheetFlooder::walkEdge(const Complex& cx, HexId h, int e) {
   return false;
 }
 
+namespace {
 // Walks one boundary loop of a sheet's mid-surface from a boundary mid-edge (the side of slot
-// (h, a) on boundary face f): mid-edge, fan of the primal edge it ends at, next mid-edge, ...
-void SheetFlooder::walkLoop(const Complex& cx, HexId h, int f, int a) {
+// (h, a) on boundary face f): mid-edge, fan of the primal edge it ends at, next mid-edge, ...;
+// marks each mid-edge in `loopSeen` (per hex, loopBit).
+void walkBoundaryLoop(const Complex& cx, HexId h, int f, int a, uint16_t* loopSeen) {
   HexId ch = h;
   int cf = f, ca = a;
   int leave = kMidSides[size_t(f * 3 + a)].secondEdge;
   const size_t limit = 12 * size_t(cx.hexCapacity()) + 1;  // a valid complex never gets near it
   for (size_t steps = 0; steps < limit; ++steps) {
-    loopSeen_[size_t(ch)] |= uint16_t(1u << loopBit(cf, ca));
+    loopSeen[size_t(ch)] |= uint16_t(1u << loopBit(cf, ca));
     // Around the primal edge `leave` from face cf to the fan's other boundary face.
     auto fs = facesOfEdge(leave);
     int exit = fs[0] == cf ? fs[1] : fs[0];
@@ -175,6 +191,9 @@ void SheetFlooder::walkLoop(const Complex& cx, HexId h, int f, int a) {
     leave = m.firstEdge == ce ? m.secondEdge : m.firstEdge;
   }
 }
+}  // namespace
+
+void SheetFlooder::walkLoop(const Complex& cx, HexId h, int f, int a) { walkBoundaryLoop(cx, h, f, a, loopSeen_.data()); }
 
 // Adds one slot's share of its sheet's mid-surface: the quad, its sides, and the primal edges and
 // boundary loops it is the first to meet (each is walked whole and marked).
@@ -331,21 +350,25 @@ std::string classifySurface(int64_t euler, int loops, bool orientable) {
 
 namespace {
 
-// Union-find over slots that also keeps each slot's orientation relative to its root (the low
-// bit of its link), so one sequential pass over glued quads finds the sheets and their
-// orientability, as the floor finds the sheets alone. The smaller root wins: a sheet's root is
-// its smallest slot.
-class OrientedUnionFind {
+// Union-find over slots kept in the sheet-label array itself (one uint32 per slot: parent << 1,
+// low bit the slot's orientation relative to its parent; a root's low bit marks its sheet
+// twisted), so one sequential pass over glued quads finds the sheets and their orientability, as
+// the floor finds the sheets alone. The smaller root wins, so every parent is a smaller slot and a
+// sheet's root is its smallest slot.
+class SheetUnionFind {
  public:
-  explicit OrientedUnionFind(size_t n) : link_(n), twisted_(n, 0) {
-    for (size_t i = 0; i < n; ++i) link_[i] = uint32_t(i) << 1;
-  }
+  explicit SheetUnionFind(uint32_t* link) : link_(link) {}
   uint32_t find(uint32_t x, uint32_t& parity) {
     parity = 0;
     for (;;) {
       const uint32_t l = link_[x], p = l >> 1;
       if (p == x) return x;
-      const uint32_t lp = link_[p], gp = lp >> 1, par = (l ^ lp) & 1u;
+      const uint32_t lp = link_[p], gp = lp >> 1;
+      if (gp == p) {  // p is the root: its low bit is not a parity
+        parity ^= l & 1u;
+        return p;
+      }
+      const uint32_t par = (l ^ lp) & 1u;
       link_[x] = (gp << 1) | par;  // path halving, parity composed
       parity ^= par;
       x = gp;
@@ -356,26 +379,27 @@ class OrientedUnionFind {
     uint32_t pa, pb;
     uint32_t ra = find(a, pa), rb = find(b, pb);
     if (ra == rb) {
-      if ((pa ^ pb) != flip) twisted_[ra] = 1;
+      if ((pa ^ pb) != flip) link_[ra] |= 1u;
       return;
     }
     if (rb < ra) std::swap(ra, rb);
+    const uint32_t twisted = link_[rb] & 1u;
     link_[rb] = (ra << 1) | (pa ^ pb ^ flip);
-    twisted_[ra] |= twisted_[rb];
+    link_[ra] |= twisted;
   }
-  bool twisted(uint32_t root) const { return twisted_[root] != 0; }
 
  private:
-  std::vector<uint32_t> link_;
-  std::vector<uint8_t> twisted_;
+  uint32_t* link_;
 };
 
-// Sheets numbered in the order of their smallest slot: labelled by one oriented union-find pass
-// over the glued quads, then each slot's share of its mid-surface measured in one more pass.
-void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
-  std::vector<int8_t>* signs = extras ? &extras->slotSigns : nullptr;
-  int32_t* sheetOf = d.sheetLabel.empty() ? nullptr : d.sheetLabel[0].data();
-  OrientedUnionFind uf(3 * size_t(cx.hexCapacity()));
+// Unites the sheet slots across every glued quad (each once).
+void uniteSheetSlots(const Complex& cx, Dual& d) {
+  const size_t n = size_t(cx.hexCapacity());
+  d.sheetLabel.resize(n);
+  uint32_t* link = reinterpret_cast<uint32_t*>(flat(d.sheetLabel));
+  for (size_t h = 0; h < n; ++h)
+    for (uint32_t a = 0; a < 3; ++a) link[3 * h + a] = cx.isHex(HexId(h)) ? uint32_t(3 * h + a) << 1 : ~0u;
+  SheetUnionFind uf(link);
   for (HexId h : cx.hexes())
     for (int f = 0; f < 6; ++f) {
       Gluing g = cx.gluing(h, f);
@@ -385,57 +409,177 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
         uf.unite(uint32_t(slotIndex(h, a)), uint32_t(slotIndex(g.hex, c.axis)), c.sign < 0 ? 1u : 0u);
       }
     }
-  std::vector<uint32_t> roots;
-  for (HexId h : cx.hexes())
-    for (int a = 0; a < 3; ++a) {
-      const uint32_t i = uint32_t(slotIndex(h, a));
-      uint32_t parity;
-      const uint32_t r = uf.find(i, parity);
-      if (signs) (*signs)[i] = parity ? -1 : 1;
-      if (r == i) {
-        sheetOf[i] = int32_t(roots.size());
-        roots.push_back(r);
-      } else {
-        sheetOf[i] = sheetOf[r];
-      }
+}
+
+// True when (h, e) is the smallest incidence of its primal edge; `closed` then tells whether the
+// edge's incidences form a cycle (false for a fan ending on the boundary). Two fronts walk round
+// the edge from (h, e), one through each of its faces, a step each in turn (independent loads),
+// and stop at the first smaller incidence: in a structured block a neighbour decides every
+// incidence but the smallest at once, and the smallest one's 4-cycle closes after a step each.
+bool smallestIncidence(const Complex& cx, HexId h, int e, bool& closed) {
+  // An incidence as one comparable key: hex * 16 + edge.
+  const int64_t start = int64_t(h) * 16 + e;
+  int64_t a = start, b = start;
+  int exitA = kEdgeFaces[size_t(e)][0], exitB = kEdgeFaces[size_t(e)][1];
+  auto step = [&cx](int64_t& k, int& exit) {
+    const Gluing g = cx.gluing(HexId(k >> 4), exit);
+    if (g.boundary()) return false;
+    const EdgeStep& st = kEdgeSteps[size_t(edgeStepIndex(int(k & 15), exit, g.face, g.orient))];
+    k = int64_t(g.hex) * 16 + st.edge;
+    exit = st.exit;
+    return true;
+  };
+  bool openA = true, openB = true;  // fronts not yet at the boundary
+  for (;;) {
+    if (openA && (openA = step(a, exitA))) {
+      if (a < start) return false;
+      if (a == b) break;  // the fronts met: every incidence seen
     }
-  std::vector<SheetStats> stats(roots.size());
-  SheetFlooder flooder;
-  flooder.reserve(size_t(cx.hexCapacity()));
-  if (extras) flooder.edgeMarks = &extras->edgeMarks;
-  for (HexId h : cx.hexes())
-    for (int a = 0; a < 3; ++a) flooder.measure(cx, h, a, stats[size_t(sheetOf[slotIndex(h, a)])]);
+    if (openB && (openB = step(b, exitB))) {
+      if (b < start) return false;
+      if (a == b) break;
+    }
+    if (!openA && !openB) {
+      closed = false;
+      return true;
+    }
+  }
+  closed = true;
+  return true;
+}
+
+// Marks every hex of the fan of boundary edge (h, e) as near the boundary (DualExtras::edgeMarks).
+void markFan(const Complex& cx, HexId h, int e, uint16_t* marks) {
+  marks[size_t(h)] |= kEdgeNearBoundary;
+  const auto fs = facesOfEdge(e);
+  for (int dir = 0; dir < 2; ++dir) {
+    EdgeRef cur{h, e};
+    int exit = fs[size_t(dir)];
+    while (cx.stepAroundEdge(cur, exit)) marks[size_t(cur.hex)] |= kEdgeNearBoundary;
+  }
+}
+
+// One pass over the slots in order: each slot's label read off the union-find (its parent, a
+// smaller slot, is already labelled: O(1) per slot, no find), its orientation, and its share of
+// its sheet's mid-surface: quad, sides, boundary loops first met, and the primal edges it holds
+// the smallest incidence of. The labels overwrite the links in place.
+template <bool kExtras>
+std::vector<SheetStats> labelAndMeasureSheets(const Complex& cx, Dual& d, DualExtras* x) {
+  const uint32_t* link = reinterpret_cast<const uint32_t*>(flat(d.sheetLabel));
+  int32_t* label = flat(d.sheetLabel);
+  int8_t* sign = kExtras ? x->slotSigns.data() : nullptr;
+  uint16_t* marks = kExtras ? x->edgeMarks.data() : nullptr;
+  int8_t* shares = kExtras ? x->slotShares.data() : nullptr;
+  std::vector<uint16_t> loopSeen(size_t(cx.hexCapacity()), 0);
+  std::vector<SheetStats> stats;
+  for (HexId h : cx.hexes()) {
+    // Faces glued to a smaller hex: an edge on one of them is not its edge's smallest incidence.
+    unsigned boundary = 0, smaller = 0;
+    for (int f = 0; f < 6; ++f) {
+      const Gluing g = cx.gluing(h, f);
+      boundary |= unsigned(g.boundary()) << f;
+      smaller |= unsigned(!g.boundary() && g.hex < h) << f;
+    }
+    for (int a = 0; a < 3; ++a) {
+      const size_t i = slotIndex(h, a);
+      const uint32_t l = link[i], p = l >> 1;
+      int32_t id;
+      if (p == i) {
+        id = int32_t(stats.size());
+        stats.emplace_back().orientable = (l & 1u) == 0;
+        if constexpr (kExtras) sign[i] = 1;
+      } else {
+        id = label[p];
+        if constexpr (kExtras) sign[i] = int8_t((l & 1u) ? -sign[p] : sign[p]);
+      }
+      label[i] = id;
+      SheetStats& st = stats[size_t(id)];
+      ++st.slots;
+      int share = 2;
+      for (int f : kParallelFaces[size_t(a)]) {
+        if (!((boundary >> f) & 1u)) {
+          ++st.interiorSides;
+          share -= 1;
+          continue;
+        }
+        ++st.boundarySides;
+        share -= 2;
+        if (!((loopSeen[size_t(h)] >> loopBit(f, a)) & 1u)) {
+          walkBoundaryLoop(cx, h, f, a, loopSeen.data());
+          ++st.loops;
+        }
+      }
+      for (int e = 4 * a; e < 4 * a + 4; ++e) {
+        bool closed;
+        if ((smaller & kEdgeFaceMask[size_t(e)]) || !smallestIncidence(cx, h, e, closed)) continue;
+        ++st.vertices;
+        if constexpr (kExtras) {
+          marks[size_t(h)] |= uint16_t(1u << e);
+          share += 2;
+          if (!closed) markFan(cx, h, e, marks);
+        }
+      }
+      if constexpr (kExtras) shares[i] = int8_t(share);
+    }
+  }
+  return stats;
+}
+
+// Sheets numbered in the order of their smallest slot: labelled by one oriented union-find pass
+// over the glued quads, then labelled and measured in one pass over the slots.
+void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
+  uniteSheetSlots(cx, d);
+  std::vector<SheetStats> stats = extras ? labelAndMeasureSheets<true>(cx, d, extras) : labelAndMeasureSheets<false>(cx, d, extras);
   d.sheets.resize(stats.size());
   d.labelSheet.resize(stats.size());
   for (size_t s = 0; s < stats.size(); ++s) {
     d.labelSheet[s] = int32_t(s);
     d.sheets[s].id = int32_t(s);
-    stats[s].orientable = !uf.twisted(roots[s]);
     stats[s].classify(d.sheets[s]);
-    d.sheets[s].slots.reserve(size_t(stats[s].slots));
   }
+  // Slot lists, exactly sized: one pass over the labels.
+  std::vector<std::vector<Slot>> lists(stats.size());
+  for (size_t s = 0; s < stats.size(); ++s) lists[s].reserve(size_t(stats[s].slots));
+  for (HexId h : cx.hexes()) {
+    const auto& l = d.sheetLabel[size_t(h)];
+    if (l[0] == l[1] || l[0] == l[2]) d.sheets[size_t(l[0])].selfIntersecting = true;
+    if (l[1] == l[2]) d.sheets[size_t(l[1])].selfIntersecting = true;
+    for (int a = 0; a < 3; ++a) lists[size_t(l[size_t(a)])].push_back({h, a});
+  }
+  for (size_t s = 0; s < stats.size(); ++s) d.sheets[s].slots = std::move(lists[s]);
 }
 
 // Open chords walked once, forward from the boundary end met first; closed ones after. Ids are
-// then renumbered in the order of each chord's smallest slot, and each open chord listed from the
-// end its smallest slot's low face leads to (as a walk from that slot would list it).
-std::vector<int32_t> extractChords(const Complex& cx, Dual& d) {
-  int32_t* chordOf = d.chordOf.empty() ? nullptr : d.chordOf[0].data();
-  std::vector<ChordWalk> walks;
+// then renumbered in the order of each chord's smallest slot (when the walks did not already meet
+// them in that order), and each open chord listed from the end its smallest slot's low face leads
+// to (as a walk from that slot would list it).
+void extractChords(const Complex& cx, Dual& d, DualExtras* extras) {
+  d.chordOf.assign(size_t(cx.hexCapacity()), {-1, -1, -1});
+  int32_t* chordOf = flat(d.chordOf);
+  int32_t* places = extras ? extras->chordPlaces.data() : nullptr;
+  std::vector<size_t> smallest;
+  bool inOrder = true;
+  auto add = [&](Chord&& ch, size_t least) {
+    inOrder = inOrder && (smallest.empty() || smallest.back() < least);
+    smallest.push_back(least);
+    if (places)
+      for (size_t i = 0; i < ch.slots.size(); ++i) places[slotIndex(ch.slots[i].hex, ch.slots[i].axis)] = int32_t(i);
+    d.chords.push_back(std::move(ch));
+  };
   Chord scratch;  // walked into one reused buffer, then copied to an exactly sized list (no regrowth per chord)
   for (HexId h : cx.hexes())
     for (int f = 0; f < 6; ++f) {
       if (!cx.isBoundary({h, f}) || chordOf[slotIndex(h, axisOfFace(f))] >= 0) continue;
       scratch.id = int32_t(d.chords.size());
       scratch.slots.clear();
-      walks.push_back(walkChordForward(cx, {h, axisOfFace(f)}, oppositeFace(f), scratch, chordOf));
+      const ChordWalk w = walkChordForward(cx, {h, axisOfFace(f)}, oppositeFace(f), scratch, chordOf);
       Chord ch;
       ch.id = scratch.id;
-      if (walks.back().smallestEnteredLow)
+      if (w.smallestEnteredLow)
         ch.slots.assign(scratch.slots.begin(), scratch.slots.end());
       else
         ch.slots.assign(scratch.slots.rbegin(), scratch.slots.rend());
-      d.chords.push_back(std::move(ch));
+      add(std::move(ch), w.smallest);
     }
   for (HexId h : cx.hexes())
     for (int a = 0; a < 3; ++a)
@@ -443,21 +587,27 @@ std::vector<int32_t> extractChords(const Complex& cx, Dual& d) {
         Chord ch;
         ch.id = int32_t(d.chords.size());
         walkChord(cx, {h, a}, ch, chordOf);
-        walks.push_back({slotIndex(h, a), true});
-        d.chords.push_back(std::move(ch));
+        add(std::move(ch), slotIndex(h, a));
       }
-  // Renumber by smallest slot.
-  std::vector<int32_t> order(walks.size()), newId(walks.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = int32_t(i);
-  std::sort(order.begin(), order.end(), [&](int32_t x, int32_t y) { return walks[size_t(x)].smallest < walks[size_t(y)].smallest; });
-  std::vector<Chord> sorted(order.size());
-  for (size_t r = 0; r < order.size(); ++r) {
-    newId[size_t(order[r])] = int32_t(r);
-    sorted[r] = std::move(d.chords[size_t(order[r])]);
-    sorted[r].id = int32_t(r);
+  if (!inOrder) {  // renumber by smallest slot
+    std::vector<int32_t> order(smallest.size()), newId(smallest.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = int32_t(i);
+    std::sort(order.begin(), order.end(), [&](int32_t p, int32_t q) { return smallest[size_t(p)] < smallest[size_t(q)]; });
+    std::vector<Chord> sorted(order.size());
+    for (size_t r = 0; r < order.size(); ++r) {
+      newId[size_t(order[r])] = int32_t(r);
+      sorted[r] = std::move(d.chords[size_t(order[r])]);
+      sorted[r].id = int32_t(r);
+    }
+    d.chords = std::move(sorted);
+    for (HexId h : cx.hexes())
+      for (int32_t& id : d.chordOf[size_t(h)]) id = newId[size_t(id)];
   }
-  d.chords = std::move(sorted);
-  return newId;
+  for (HexId h : cx.hexes()) {
+    const auto& c = d.chordOf[size_t(h)];
+    if (c[0] == c[1] || c[0] == c[2]) d.chords[size_t(c[0])].selfIntersecting = true;
+    if (c[1] == c[2]) d.chords[size_t(c[1])].selfIntersecting = true;
+  }
 }
 
 }  // namespace
@@ -465,32 +615,14 @@ std::vector<int32_t> extractChords(const Complex& cx, Dual& d) {
 Dual extractDual(const Complex& cx, DualExtras* extras) {
   const size_t n = size_t(cx.hexCapacity());
   Dual d;
-  d.sheetLabel.assign(n, {-1, -1, -1});
-  d.chordOf.assign(n, {-1, -1, -1});
   if (extras) {
     extras->slotSigns.assign(3 * n, 0);
     extras->edgeMarks.assign(n, 0);
+    extras->slotShares.assign(3 * n, 0);
+    extras->chordPlaces.assign(3 * n, 0);
   }
   extractSheets(cx, d, extras);
-  const std::vector<int32_t> newChordId = extractChords(cx, d);
-  if (extras) {  // the tracker's per-slot state, here where whole-mesh passes are compiled for speed
-    extras->slotShares.assign(3 * n, 0);
-    for (HexId h : cx.hexes())
-      for (int a = 0; a < 3; ++a) extras->slotShares[slotIndex(h, a)] = slotShare(cx, h, a, extras->edgeMarks[size_t(h)]);
-    extras->chordPlaces.assign(3 * n, 0);
-    for (const Chord& ch : d.chords)
-      for (size_t i = 0; i < ch.slots.size(); ++i) extras->chordPlaces[slotIndex(ch.slots[i].hex, ch.slots[i].axis)] = int32_t(i);
-  }
-  for (HexId h : cx.hexes()) {
-    auto& c = d.chordOf[size_t(h)];
-    for (int32_t& id : c) id = newChordId[size_t(id)];
-    const auto& s = d.sheetLabel[size_t(h)];  // labels are ids here
-    if (s[0] == s[1] || s[0] == s[2]) d.sheets[size_t(s[0])].selfIntersecting = true;
-    if (s[1] == s[2]) d.sheets[size_t(s[1])].selfIntersecting = true;
-    if (c[0] == c[1] || c[0] == c[2]) d.chords[size_t(c[0])].selfIntersecting = true;
-    if (c[1] == c[2]) d.chords[size_t(c[1])].selfIntersecting = true;
-    for (int a = 0; a < 3; ++a) d.sheets[size_t(s[size_t(a)])].slots.push_back({h, a});
-  }
+  extractChords(cx, d, extras);
   return d;
 }
 
