@@ -393,14 +393,14 @@ class SheetUnionFind {
 };
 
 // Unites the sheet slots across every glued quad (each once).
-void uniteSheetSlots(const Complex& cx, Dual& d) {
+[[gnu::noinline]] void uniteSheetSlots(const Complex& cx, Dual& d) {
   const size_t n = size_t(cx.hexCapacity());
   d.sheetLabel.resize(n);
   uint32_t* link = reinterpret_cast<uint32_t*>(flat(d.sheetLabel));
   for (size_t h = 0; h < n; ++h)
     for (uint32_t a = 0; a < 3; ++a) link[3 * h + a] = cx.isHex(HexId(h)) ? uint32_t(3 * h + a) << 1 : ~0u;
   SheetUnionFind uf(link);
-  for (HexId h : cx.hexes())
+  for (HexId h : cx.hexes()) {
     for (int f = 0; f < 6; ++f) {
       Gluing g = cx.gluing(h, f);
       if (g.boundary() || g.hex < h || (g.hex == h && g.face < f)) continue;  // each glued quad once
@@ -409,6 +409,7 @@ void uniteSheetSlots(const Complex& cx, Dual& d) {
         uf.unite(uint32_t(slotIndex(h, a)), uint32_t(slotIndex(g.hex, c.axis)), c.sign < 0 ? 1u : 0u);
       }
     }
+  }
 }
 
 // True when (h, e) is the smallest incidence of its primal edge; `closed` then tells whether the
@@ -448,6 +449,32 @@ bool smallestIncidence(const Complex& cx, HexId h, int e, bool& closed) {
   return true;
 }
 
+// The faces of hex h glued to h itself (bit mask).
+unsigned selfGlued(const std::array<Gluing, 6>& glued, HexId h) {
+  unsigned m = 0;
+  for (int f = 0; f < 6; ++f) m |= unsigned(glued[size_t(f)].hex == h) << f;
+  return m;
+}
+
+// smallestIncidence for an edge of h whose two faces are glued to larger hexes (`glued`: h's
+// gluings): one step from each neighbour, and when both land on the same incidence the edge is a
+// 4-cycle (a structured block's interior edge) decided by that incidence alone (unless it is (h, e):
+// a 2-cycle); else the walk.
+bool closesAsSmallest(const Complex& cx, HexId h, int e, const std::array<Gluing, 6>& glued, bool& closed) {
+  const auto& fs = kEdgeFaces[size_t(e)];
+  const Gluing& g0 = glued[size_t(fs[0])];
+  const Gluing& g1 = glued[size_t(fs[1])];
+  const EdgeStep& s0 = kEdgeSteps[size_t(edgeStepIndex(e, fs[0], g0.face, g0.orient))];
+  const EdgeStep& s1 = kEdgeSteps[size_t(edgeStepIndex(e, fs[1], g1.face, g1.orient))];
+  EdgeRef a{g0.hex, s0.edge}, b{g1.hex, s1.edge};
+  int exitA = s0.exit, exitB = s1.exit;
+  if (cx.stepAroundEdge(a, exitA) && cx.stepAroundEdge(b, exitB) && a == b && !(a == EdgeRef{h, e})) {
+    closed = true;
+    return h < a.hex || (h == a.hex && e < a.edge);
+  }
+  return smallestIncidence(cx, h, e, closed);
+}
+
 // Marks every hex of the fan of boundary edge (h, e) as near the boundary (DualExtras::edgeMarks).
 void markFan(const Complex& cx, HexId h, int e, uint16_t* marks) {
   marks[size_t(h)] |= kEdgeNearBoundary;
@@ -464,7 +491,7 @@ void markFan(const Complex& cx, HexId h, int e, uint16_t* marks) {
 // its sheet's mid-surface: quad, sides, boundary loops first met, and the primal edges it holds
 // the smallest incidence of. The labels overwrite the links in place.
 template <bool kExtras>
-std::vector<SheetStats> labelAndMeasureSheets(const Complex& cx, Dual& d, DualExtras* x) {
+[[gnu::noinline]] std::vector<SheetStats> labelAndMeasureSheets(const Complex& cx, Dual& d, DualExtras* x) {
   const uint32_t* link = reinterpret_cast<const uint32_t*>(flat(d.sheetLabel));
   int32_t* label = flat(d.sheetLabel);
   int8_t* sign = kExtras ? x->slotSigns.data() : nullptr;
@@ -475,10 +502,11 @@ std::vector<SheetStats> labelAndMeasureSheets(const Complex& cx, Dual& d, DualEx
   for (HexId h : cx.hexes()) {
     // Faces glued to a smaller hex: an edge on one of them is not its edge's smallest incidence.
     unsigned boundary = 0, smaller = 0;
+    std::array<Gluing, 6> glued;
     for (int f = 0; f < 6; ++f) {
-      const Gluing g = cx.gluing(h, f);
+      const Gluing g = glued[size_t(f)] = cx.gluing(h, f);
       boundary |= unsigned(g.boundary()) << f;
-      smaller |= unsigned(!g.boundary() && g.hex < h) << f;
+      smaller |= unsigned(!g.boundary() && g.hex <= h) << f;  // itself: decided by the walk
     }
     for (int a = 0; a < 3; ++a) {
       const size_t i = slotIndex(h, a);
@@ -511,7 +539,12 @@ std::vector<SheetStats> labelAndMeasureSheets(const Complex& cx, Dual& d, DualEx
       }
       for (int e = 4 * a; e < 4 * a + 4; ++e) {
         bool closed;
-        if ((smaller & kEdgeFaceMask[size_t(e)]) || !smallestIncidence(cx, h, e, closed)) continue;
+        const unsigned faces = kEdgeFaceMask[size_t(e)];
+        if (smaller & faces) {
+          if (!(smaller & faces & ~boundary & selfGlued(glued, h)) || !smallestIncidence(cx, h, e, closed)) continue;
+        } else if (!(boundary & faces) ? !closesAsSmallest(cx, h, e, glued, closed) : !smallestIncidence(cx, h, e, closed)) {
+          continue;
+        }
         ++st.vertices;
         if constexpr (kExtras) {
           marks[size_t(h)] |= uint16_t(1u << e);
@@ -553,7 +586,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
 // then renumbered in the order of each chord's smallest slot (when the walks did not already meet
 // them in that order), and each open chord listed from the end its smallest slot's low face leads
 // to (as a walk from that slot would list it).
-void extractChords(const Complex& cx, Dual& d, DualExtras* extras) {
+[[gnu::noinline]] void extractChords(const Complex& cx, Dual& d, DualExtras* extras) {
   d.chordOf.assign(size_t(cx.hexCapacity()), {-1, -1, -1});
   int32_t* chordOf = flat(d.chordOf);
   int32_t* places = extras ? extras->chordPlaces.data() : nullptr;
