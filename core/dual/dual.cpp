@@ -337,6 +337,42 @@ ChordWalk walkChordForward(const Complex& cx, Slot cur, int exitFace, Chord& ch,
   return w;
 }
 
+namespace {
+// A chord with no boundary end, listed from slot `first` as walkChord lists it (round once, forward
+// through the high face; a twisted return is listed the other way). Returns whether it closes.
+bool walkClosedChord(const Complex& cx, Slot first, std::vector<Slot>& out) {
+  Slot cur = first;
+  int back = 2 * cur.axis;
+  bool closed = false;
+  for (;;) {
+    Gluing g = cx.gluing(cur.hex, back);
+    if (g.boundary()) break;
+    cur = {g.hex, axisOfFace(g.face)};
+    back = oppositeFace(g.face);
+    if (cur == first) {
+      closed = back == 2 * first.axis;
+      break;
+    }
+  }
+  if (closed) {
+    cur = first;
+    back = 2 * first.axis;
+  }
+  const Slot from = cur;
+  int exit = oppositeFace(back);
+  const size_t limit = 3 * size_t(cx.hexCapacity());
+  for (;;) {
+    out.push_back(cur);
+    Gluing g = cx.gluing(cur.hex, exit);
+    if (g.boundary() || out.size() > limit) break;
+    cur = {g.hex, axisOfFace(g.face)};
+    exit = oppositeFace(g.face);
+    if (cur == from) break;
+  }
+  return closed;
+}
+}  // namespace
+
 int mapAxisAcross(const Complex& cx, HexId h, int face, int axis) { return axisAcrossGluing(face, axis, cx.gluing(h, face)); }
 
 std::string classifySurface(int64_t euler, int loops, bool orientable) {
@@ -392,13 +428,32 @@ class SheetUnionFind {
   uint32_t* link_;
 };
 
-// Unites the sheet slots across every glued quad (each once).
-[[gnu::noinline]] void uniteSheetSlots(const Complex& cx, Dual& d) {
+// Chord union-find: plain parent links kept in the chord-label array (the smaller root wins, so
+// every parent is a smaller slot, as for sheets).
+uint32_t findChordRoot(uint32_t* link, uint32_t x) {
+  while (link[x] != x) x = link[x] = link[link[x]];  // path halving
+  return x;
+}
+void uniteChordSlots(uint32_t* link, uint32_t a, uint32_t b) {
+  a = findChordRoot(link, a);
+  b = findChordRoot(link, b);
+  if (a < b) link[b] = a;
+  else if (b < a) link[a] = b;
+}
+
+// Unites the sheet slots and the chord slots across every glued quad (each once).
+[[gnu::noinline]] void uniteSlots(const Complex& cx, Dual& d) {
   const size_t n = size_t(cx.hexCapacity());
   d.sheetLabel.resize(n);
+  d.chordOf.resize(n);
   uint32_t* link = reinterpret_cast<uint32_t*>(flat(d.sheetLabel));
+  uint32_t* chordLink = reinterpret_cast<uint32_t*>(flat(d.chordOf));
   for (size_t h = 0; h < n; ++h)
-    for (uint32_t a = 0; a < 3; ++a) link[3 * h + a] = cx.isHex(HexId(h)) ? uint32_t(3 * h + a) << 1 : ~0u;
+    for (uint32_t a = 0; a < 3; ++a) {
+      const bool live = cx.isHex(HexId(h));
+      link[3 * h + a] = live ? uint32_t(3 * h + a) << 1 : ~0u;
+      chordLink[3 * h + a] = live ? uint32_t(3 * h + a) : ~0u;
+    }
   SheetUnionFind uf(link);
   for (HexId h : cx.hexes()) {
     for (int f = 0; f < 6; ++f) {
@@ -408,9 +463,19 @@ class SheetUnionFind {
         const Crossing& c = kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))];
         uf.unite(uint32_t(slotIndex(h, a)), uint32_t(slotIndex(g.hex, c.axis)), c.sign < 0 ? 1u : 0u);
       }
+      uniteChordSlots(chordLink, uint32_t(slotIndex(h, axisOfFace(f))), uint32_t(slotIndex(g.hex, axisOfFace(g.face))));
     }
   }
 }
+
+// What the slot pass learns of the chords: per chord id (in the order of its smallest slot) that
+// slot and whether a boundary start was claimed for it, and the starts: each open chord's boundary
+// face met first in (hex, face) order.
+struct ChordPlan {
+  std::vector<uint32_t> root;
+  std::vector<uint8_t> claimed, selfIntersecting;
+  std::vector<QuadSide> starts;
+};
 
 // True when (h, e) is the smallest incidence of its primal edge; `closed` then tells whether the
 // edge's incidences form a cycle (false for a fan ending on the boundary). Two fronts walk round
@@ -486,14 +551,41 @@ void markFan(const Complex& cx, HexId h, int e, uint16_t* marks) {
   }
 }
 
+// Labels hex h's chord slots (read off their parents, smaller slots already labelled) and claims
+// a boundary start for each open chord first met here (`boundary`: h's boundary faces).
+void labelChords(HexId h, unsigned boundary, int32_t* chordOf, ChordPlan& plan) {
+  for (int a = 0; a < 3; ++a) {
+    const size_t i = slotIndex(h, a);
+    const uint32_t parent = uint32_t(chordOf[i]);
+    if (parent == i) {
+      chordOf[i] = int32_t(plan.root.size());
+      plan.root.push_back(uint32_t(i));
+      plan.claimed.push_back(0);
+      plan.selfIntersecting.push_back(0);
+    } else {
+      chordOf[i] = chordOf[parent];
+    }
+  }
+  const int32_t* c = chordOf + slotIndex(h, 0);
+  if (c[0] == c[1] || c[0] == c[2]) plan.selfIntersecting[size_t(c[0])] = 1;
+  if (c[1] == c[2]) plan.selfIntersecting[size_t(c[1])] = 1;
+  for (int f = 0; f < 6; ++f)
+    if ((boundary >> f) & 1u) {
+      uint8_t& claimed = plan.claimed[size_t(c[axisOfFace(f)])];
+      if (!claimed) plan.starts.push_back({h, f});
+      claimed = 1;
+    }
+}
+
 // One pass over the slots in order: each slot's label read off the union-find (its parent, a
 // smaller slot, is already labelled: O(1) per slot, no find), its orientation, and its share of
 // its sheet's mid-surface: quad, sides, boundary loops first met, and the primal edges it holds
 // the smallest incidence of. The labels overwrite the links in place.
 template <bool kExtras>
-[[gnu::noinline]] std::vector<SheetStats> labelAndMeasureSheets(const Complex& cx, Dual& d, DualExtras* x) {
+[[gnu::noinline]] std::vector<SheetStats> labelAndMeasureSheets(const Complex& cx, Dual& d, DualExtras* x, ChordPlan& plan) {
   const uint32_t* link = reinterpret_cast<const uint32_t*>(flat(d.sheetLabel));
   int32_t* label = flat(d.sheetLabel);
+  int32_t* chordOf = flat(d.chordOf);
   int8_t* sign = kExtras ? x->slotSigns.data() : nullptr;
   uint16_t* marks = kExtras ? x->edgeMarks.data() : nullptr;
   int8_t* shares = kExtras ? x->slotShares.data() : nullptr;
@@ -508,6 +600,7 @@ template <bool kExtras>
       boundary |= unsigned(g.boundary()) << f;
       smaller |= unsigned(!g.boundary() && g.hex <= h) << f;  // itself: decided by the walk
     }
+    labelChords(h, boundary, chordOf, plan);
     for (int a = 0; a < 3; ++a) {
       const size_t i = slotIndex(h, a);
       const uint32_t l = link[i], p = l >> 1;
@@ -560,9 +653,9 @@ template <bool kExtras>
 
 // Sheets numbered in the order of their smallest slot: labelled by one oriented union-find pass
 // over the glued quads, then labelled and measured in one pass over the slots.
-void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
-  uniteSheetSlots(cx, d);
-  std::vector<SheetStats> stats = extras ? labelAndMeasureSheets<true>(cx, d, extras) : labelAndMeasureSheets<false>(cx, d, extras);
+void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& plan) {
+  std::vector<SheetStats> stats =
+      extras ? labelAndMeasureSheets<true>(cx, d, extras, plan) : labelAndMeasureSheets<false>(cx, d, extras, plan);
   d.sheets.resize(stats.size());
   d.labelSheet.resize(stats.size());
   for (size_t s = 0; s < stats.size(); ++s) {
@@ -582,65 +675,73 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
   for (size_t s = 0; s < stats.size(); ++s) d.sheets[s].slots = std::move(lists[s]);
 }
 
-// Open chords walked once, forward from the boundary end met first; closed ones after. Ids are
-// then renumbered in the order of each chord's smallest slot (when the walks did not already meet
-// them in that order), and each open chord listed from the end its smallest slot's low face leads
-// to (as a walk from that slot would list it).
-[[gnu::noinline]] void extractChords(const Complex& cx, Dual& d, DualExtras* extras) {
-  d.chordOf.assign(size_t(cx.hexCapacity()), {-1, -1, -1});
-  int32_t* chordOf = flat(d.chordOf);
+// Chord slot lists. Ids and labels are known (the chord union-find); each open chord is walked
+// once, forward from its claimed boundary start, several chords in turn so that their cache misses
+// overlap, and listed from the end its smallest slot's low face leads to (as a walk from that slot
+// would list it). Closed chords after: from their smallest slot, round once.
+[[gnu::noinline]] void extractChords(const Complex& cx, Dual& d, DualExtras* extras, const ChordPlan& plan) {
+  const int32_t* chordOf = flat(d.chordOf);
   int32_t* places = extras ? extras->chordPlaces.data() : nullptr;
-  std::vector<size_t> smallest;
-  bool inOrder = true;
-  auto add = [&](Chord&& ch, size_t least) {
-    inOrder = inOrder && (smallest.empty() || smallest.back() < least);
-    smallest.push_back(least);
+  d.chords.resize(plan.root.size());
+  for (size_t c = 0; c < d.chords.size(); ++c) {
+    d.chords[c].id = int32_t(c);
+    d.chords[c].selfIntersecting = plan.selfIntersecting[c] != 0;
+  }
+  auto keep = [&](int32_t id, const std::vector<Slot>& walked, bool reversed) {
+    Chord& ch = d.chords[size_t(id)];
+    if (reversed)
+      ch.slots.assign(walked.rbegin(), walked.rend());
+    else
+      ch.slots.assign(walked.begin(), walked.end());
     if (places)
       for (size_t i = 0; i < ch.slots.size(); ++i) places[slotIndex(ch.slots[i].hex, ch.slots[i].axis)] = int32_t(i);
-    d.chords.push_back(std::move(ch));
   };
-  Chord scratch;  // walked into one reused buffer, then copied to an exactly sized list (no regrowth per chord)
-  for (HexId h : cx.hexes())
-    for (int f = 0; f < 6; ++f) {
-      if (!cx.isBoundary({h, f}) || chordOf[slotIndex(h, axisOfFace(f))] >= 0) continue;
-      scratch.id = int32_t(d.chords.size());
-      scratch.slots.clear();
-      const ChordWalk w = walkChordForward(cx, {h, axisOfFace(f)}, oppositeFace(f), scratch, chordOf);
-      Chord ch;
-      ch.id = scratch.id;
-      if (w.smallestEnteredLow)
-        ch.slots.assign(scratch.slots.begin(), scratch.slots.end());
-      else
-        ch.slots.assign(scratch.slots.rbegin(), scratch.slots.rend());
-      add(std::move(ch), w.smallest);
-    }
-  for (HexId h : cx.hexes())
-    for (int a = 0; a < 3; ++a)
-      if (chordOf[slotIndex(h, a)] < 0) {
-        Chord ch;
-        ch.id = int32_t(d.chords.size());
-        walkChord(cx, {h, a}, ch, chordOf);
-        add(std::move(ch), slotIndex(h, a));
+  struct Lane {
+    int32_t chord = -1;
+    Slot cur;
+    int exit = 0;
+    bool rootEnteredLow = true;
+    std::vector<Slot> slots;
+  };
+  constexpr int kLanes = 8;
+  std::array<Lane, kLanes> lanes;
+  size_t next = 0;
+  auto start = [&](Lane& l) {
+    if (next == plan.starts.size()) return false;
+    const QuadSide s = plan.starts[next++];
+    l.cur = {s.hex, axisOfFace(s.face)};
+    l.chord = chordOf[slotIndex(l.cur.hex, l.cur.axis)];
+    l.exit = oppositeFace(s.face);
+    l.rootEnteredLow = (s.face & 1) == 0;
+    l.slots.clear();
+    return true;
+  };
+  int active = 0;
+  for (Lane& l : lanes) active += start(l);
+  const size_t limit = 3 * size_t(cx.hexCapacity());  // a valid complex never gets near it
+  while (active > 0)
+    for (Lane& l : lanes) {
+      if (l.chord < 0) continue;
+      l.slots.push_back(l.cur);
+      const Gluing g = cx.gluing(l.cur.hex, l.exit);
+      if (g.boundary() || l.slots.size() > limit) {
+        keep(l.chord, l.slots, !l.rootEnteredLow);
+        l.chord = -1;
+        if (!start(l)) --active;
+        continue;
       }
-  if (!inOrder) {  // renumber by smallest slot
-    std::vector<int32_t> order(smallest.size()), newId(smallest.size());
-    for (size_t i = 0; i < order.size(); ++i) order[i] = int32_t(i);
-    std::sort(order.begin(), order.end(), [&](int32_t p, int32_t q) { return smallest[size_t(p)] < smallest[size_t(q)]; });
-    std::vector<Chord> sorted(order.size());
-    for (size_t r = 0; r < order.size(); ++r) {
-      newId[size_t(order[r])] = int32_t(r);
-      sorted[r] = std::move(d.chords[size_t(order[r])]);
-      sorted[r].id = int32_t(r);
+      l.cur = {g.hex, axisOfFace(g.face)};
+      l.exit = oppositeFace(g.face);
+      if (slotIndex(l.cur.hex, l.cur.axis) == plan.root[size_t(l.chord)]) l.rootEnteredLow = (g.face & 1) == 0;
     }
-    d.chords = std::move(sorted);
-    for (HexId h : cx.hexes())
-      for (int32_t& id : d.chordOf[size_t(h)]) id = newId[size_t(id)];
-  }
-  for (HexId h : cx.hexes()) {
-    const auto& c = d.chordOf[size_t(h)];
-    if (c[0] == c[1] || c[0] == c[2]) d.chords[size_t(c[0])].selfIntersecting = true;
-    if (c[1] == c[2]) d.chords[size_t(c[1])].selfIntersecting = true;
-  }
+  std::vector<Slot> walked;
+  for (size_t c = 0; c < d.chords.size(); ++c)
+    if (!plan.claimed[c]) {
+      const Slot first{HexId(plan.root[c] / 3), int(plan.root[c] % 3)};
+      walked.clear();
+      d.chords[c].closed = walkClosedChord(cx, first, walked);
+      keep(int32_t(c), walked, false);
+    }
 }
 
 }  // namespace
@@ -654,8 +755,10 @@ Dual extractDual(const Complex& cx, DualExtras* extras) {
     extras->slotShares.assign(3 * n, 0);
     extras->chordPlaces.assign(3 * n, 0);
   }
-  extractSheets(cx, d, extras);
-  extractChords(cx, d, extras);
+  uniteSlots(cx, d);
+  ChordPlan plan;
+  extractSheets(cx, d, extras, plan);
+  extractChords(cx, d, extras, plan);
   return d;
 }
 
