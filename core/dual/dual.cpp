@@ -444,16 +444,20 @@ void uniteChordSlots(uint32_t* link, uint32_t a, uint32_t b) {
 // Unites the sheet slots and the chord slots across every glued quad (each once).
 [[gnu::noinline]] void uniteSlots(const Complex& cx, Dual& d) {
   const size_t n = size_t(cx.hexCapacity());
-  d.sheetLabel.resize(n);
-  d.chordOf.resize(n);
+  d.sheetLabel.reserve(n);  // written once each (no zero-fill first)
+  d.chordOf.reserve(n);
+  for (size_t h = 0; h < n; ++h) {
+    const int32_t i = int32_t(3 * h);
+    if (cx.isHex(HexId(h))) {
+      d.sheetLabel.push_back({i << 1, (i + 1) << 1, (i + 2) << 1});
+      d.chordOf.push_back({i, i + 1, i + 2});
+    } else {
+      d.sheetLabel.push_back({-1, -1, -1});
+      d.chordOf.push_back({-1, -1, -1});
+    }
+  }
   uint32_t* link = reinterpret_cast<uint32_t*>(flat(d.sheetLabel));
   uint32_t* chordLink = reinterpret_cast<uint32_t*>(flat(d.chordOf));
-  for (size_t h = 0; h < n; ++h)
-    for (uint32_t a = 0; a < 3; ++a) {
-      const bool live = cx.isHex(HexId(h));
-      link[3 * h + a] = live ? uint32_t(3 * h + a) << 1 : ~0u;
-      chordLink[3 * h + a] = live ? uint32_t(3 * h + a) : ~0u;
-    }
   SheetUnionFind uf(link);
   for (HexId h : cx.hexes()) {
     for (int f = 0; f < 6; ++f) {
@@ -703,7 +707,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
     bool rootEnteredLow = true;
     std::vector<Slot> slots;
   };
-  constexpr int kLanes = 8;
+  constexpr int kLanes = 16;
   std::array<Lane, kLanes> lanes;
   size_t next = 0;
   auto start = [&](Lane& l) {
