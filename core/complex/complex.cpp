@@ -1,4 +1,5 @@
 #include "complex/complex.hpp"
+#include "complex/large_arrays.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -12,11 +13,11 @@ void Complex::throwNoHex(HexId h, const char* what) {
 }
 
 void Complex::reserve(size_t hexes, size_t vertices) {
-  verts_.reserve(hexes);
-  glue_.reserve(hexes);
+  reserveLarge(verts_, hexes);
+  reserveLarge(glue_, hexes);
   alive_.reserve(hexes);
-  pos_.reserve(vertices);
-  refs_.reserve(vertices);
+  reserveLarge(pos_, vertices);
+  reserveLarge(refs_, vertices);
 }
 
 VertexId Complex::addVertex(Vec3 p) {
