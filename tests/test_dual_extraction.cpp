@@ -30,16 +30,19 @@ struct ReferenceUnionFind {
   explicit ReferenceUnionFind(size_t n) : link(n), twisted(n, 0) {
     for (size_t i = 0; i < n; ++i) link[i] = uint32_t(i) << 1;
   }
+  // Full path compression (recursive): a slot's parity to its root depends only on the union
+  // order, not on how paths are compressed.
   uint32_t find(uint32_t x, uint32_t& parity) {
-    parity = 0;
-    for (;;) {
-      const uint32_t l = link[x], p = l >> 1;
-      if (p == x) return x;
-      const uint32_t lp = link[p], gp = lp >> 1, par = (l ^ lp) & 1u;
-      link[x] = (gp << 1) | par;
-      parity ^= par;
-      x = gp;
+    const uint32_t p = link[x] >> 1;
+    if (p == x) {
+      parity = 0;
+      return x;
     }
+    uint32_t up;
+    const uint32_t root = find(p, up);
+    parity = (link[x] & 1u) ^ up;
+    link[x] = (root << 1) | parity;
+    return root;
   }
   void unite(uint32_t a, uint32_t b, uint32_t flip) {
     uint32_t pa, pb;

@@ -292,11 +292,14 @@ void SheetStats::classify(Sheet& sh) const {
   sh.topology = classifySurface(sh.euler, sh.boundaryLoops, sh.orientable);
 }
 
-// Walks one chord from a slot: back to a boundary end (or once round), then forward, labelling.
-void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf, std::vector<int32_t>* previous) {
+namespace {
+// Where a chord's list starts when walked from slot `start`: back through low faces to a boundary
+// end, or `start` itself once round. Sets `back` (the face the list's first slot is entered by)
+// and `closed` (a twisted return leaves the chord open-ended at start).
+Slot chordListStart(const Complex& cx, Slot start, int& back, bool& closed) {
   Slot cur = start;
-  int back = 2 * cur.axis;  // leaving backwards through the low face
-  bool closed = false;
+  back = 2 * cur.axis;  // leaving backwards through the low face
+  closed = false;
   for (;;) {
     Gluing g = cx.gluing(cur.hex, back);
     if (g.boundary()) break;
@@ -304,14 +307,23 @@ void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf, std::
     back = oppositeFace(g.face);
     if (cur == start) {
       closed = back == 2 * start.axis;
-      break;  // round once (a twisted return leaves the chord open-ended at start)
+      break;
     }
   }
   if (closed) {
     cur = start;
     back = 2 * start.axis;
   }
-  walkChordForward(cx, cur, oppositeFace(back), ch, chordOf, previous);
+  return cur;
+}
+}  // namespace
+
+// Walks one chord from a slot: back to a boundary end (or once round), then forward, labelling.
+void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf, std::vector<int32_t>* previous) {
+  int back;
+  bool closed;
+  const Slot from = chordListStart(cx, start, back, closed);
+  walkChordForward(cx, from, oppositeFace(back), ch, chordOf, previous);
   ch.closed = closed;
 }
 
@@ -343,24 +355,10 @@ namespace {
 // A chord with no boundary end, listed from slot `first` as walkChord lists it (round once, forward
 // through the high face; a twisted return is listed the other way). Returns whether it closes.
 bool walkClosedChord(const Complex& cx, Slot first, std::vector<Slot>& out) {
-  Slot cur = first;
-  int back = 2 * cur.axis;
-  bool closed = false;
-  for (;;) {
-    Gluing g = cx.gluing(cur.hex, back);
-    if (g.boundary()) break;
-    cur = {g.hex, axisOfFace(g.face)};
-    back = oppositeFace(g.face);
-    if (cur == first) {
-      closed = back == 2 * first.axis;
-      break;
-    }
-  }
-  if (closed) {
-    cur = first;
-    back = 2 * first.axis;
-  }
-  const Slot from = cur;
+  int back;
+  bool closed;
+  const Slot from = chordListStart(cx, first, back, closed);
+  Slot cur = from;
   int exit = oppositeFace(back);
   const size_t limit = 3 * size_t(cx.hexCapacity());
   for (;;) {
