@@ -7,6 +7,9 @@ SIZES=${SIZES:-"10 20 50 100"}
 FLOOR_SIZES=${FLOOR_SIZES:-"10 50 100 150 200"}
 REPS=${REPS:-5}
 OP_REPS=${OP_REPS:-21}
+# Every JSON result of this run, for the targets table at the end.
+RESULTS=$(mktemp)
+trap 'rm -f "$RESULTS"' EXIT
 
 echo "### Dual extraction against the floor (CPU ms, minimum of $REPS interleaved repetitions on the same complex)"
 echo
@@ -21,6 +24,7 @@ for n in $FLOOR_SIZES; do
     echo "| ${n}³ | — | — | — | not run: ${f//$'\n'/ } | |"
     continue
   fi
+  echo "$f" >>"$RESULTS"
   node -e '
     const a = JSON.parse(process.argv[1]);
     console.log(`| ${a.n}³ = ${a.hexes} | ${a.floorMs.toFixed(1)} | ${a.dualMs.toFixed(1)} | ${a.ratio.toFixed(2)} | ${a.floorNsPerHex.toFixed(0)} | ${a.dualNsPerHex.toFixed(0)} |`);
@@ -36,6 +40,7 @@ echo "| n³ hexes | native cold ms | native warm build+dual ms | native tracker 
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for n in $SIZES; do
   nat=$(build/native/hexdual_bench build "$n" "$REPS")
+  echo "$nat" >>"$RESULTS"
   # The wasm row comes from the package build (wasm/dist); marked when that build is absent or fails.
   was=$(node bench/bench_wasm.mjs build "$n" "$REPS" 2>/dev/null || echo '{"missing":true}')
   node -e '
@@ -51,6 +56,7 @@ echo "### Operation latency at the centre of an n³ grid (CPU µs, minimum of $O
 echo
 lines=""
 for n in $SIZES; do lines+=$(build/native/hexdual_bench ops "$n" "$OP_REPS")$'\n'; done
+printf '%s' "$lines" >>"$RESULTS"
 node -e '
   const rows = process.argv[1].trim().split("\n").map((l) => JSON.parse(l));
   const sizes = [...new Set(rows.map((r) => r.n))], ops = [...new Set(rows.map((r) => r.op))];
@@ -72,6 +78,7 @@ echo "| grid | attempted | applied | applied per second | hexes at the end |"
 echo "| --- | --- | --- | --- | --- |"
 for n in 10 100; do
   t=$(build/native/hexdual_bench throughput "$n" 20000)
+  echo "$t" >>"$RESULTS"
   node -e 'const t = JSON.parse(process.argv[1]); console.log(`| ${t.n}³ | ${t.attempted} | ${t.applied} | ${t.appliedPerSec} | ${t.hexesAfter} |`);' "$t"
 done
 
@@ -127,3 +134,48 @@ echo "| --- | --- | --- | --- | --- | --- |"
 echo "| MOAB 5.1.1 DualTool::construct_hex_dual | dual extraction | 529 ms | 4.8 s | 52.9 s | 886 s |"
 echo "| MOAB 5.1.1 face_shrink (= hex push) + dual update | one operation | | | 3.7 s | |"
 echo "| gmds sheet selector | sheets (some wrong) | | | 15.8 s | |"
+
+echo
+echo "### Cold build with glibc's transparent huge pages for all of malloc (an environment setting, for comparison)"
+echo
+echo "hexdual advises huge pages for its large arrays itself (core/complex/huge_pages.hpp); glibc can do it for every"
+echo "allocation when the process starts with GLIBC_TUNABLES=glibc.malloc.hugetlb=1."
+echo
+echo "| n³ | cold ms | warm build+dual ms | cold/warm |"
+echo "| --- | --- | --- | --- |"
+t=$(GLIBC_TUNABLES=glibc.malloc.hugetlb=1 build/native/hexdual_bench build 100 "$REPS")
+node -e 'const a = JSON.parse(process.argv[1]); console.log(`| ${a.n}³ | ${a.coldMs.toFixed(1)} | ${a.totalMs.toFixed(1)} | ${(a.coldMs / a.totalMs).toFixed(2)} |`);' "$t"
+
+echo
+echo "### Against the performance targets (this run)"
+echo
+node -e '
+  const rows = require("fs").readFileSync(process.argv[1], "utf8").trim().split("\n").filter(Boolean).map((l) => JSON.parse(l));
+  const builds = rows.filter((r) => r.bench === "build"), floors = rows.filter((r) => r.floorMs !== undefined);
+  const ops = rows.filter((r) => r.op !== undefined), thr = rows.filter((r) => r.bench === "throughput" || r.appliedPerSec !== undefined);
+  const verdict = (ok) => (ok ? "met" : "**not met**");
+  console.log("| target | this run | verdict |");
+  console.log("| --- | --- | --- |");
+  const b100 = builds.find((r) => r.n === 100);
+  if (b100) {
+    console.log(`| build + dual at 100³ ≤ 100 ms warm | ${b100.totalMs.toFixed(1)} ms | ${verdict(b100.totalMs <= 100)} |`);
+    console.log(`| cold ≤ 1.5× warm at 100³ | ${(b100.coldMs / b100.totalMs).toFixed(2)}× | ${verdict(b100.coldMs <= 1.5 * b100.totalMs)} |`);
+  }
+  if (floors.length > 1) {
+    const ns = floors.map((f) => f.dualNsPerHex), spread = Math.max(...ns) / Math.min(...ns);
+    const sizes = floors.map((f) => f.n + "³").join(", ");
+    console.log(`| per-hex cost flat (${sizes}) | ${ns.map((x) => x.toFixed(0)).join(" / ")} ns/hex, max/min ${spread.toFixed(2)} | ${verdict(spread <= 1.5)} |`);
+    const ratios = floors.map((f) => f.ratio);
+    console.log(`| extractDual / floor | ${ratios.map((x) => x.toFixed(2)).join(" / ")} | (≈2 needed for 100 ms) |`);
+  }
+  const sizes = [...new Set(ops.map((r) => r.n))];
+  if (sizes.length > 1) {
+    const lo = Math.min(...sizes), hi = Math.max(...sizes);
+    for (const op of [...new Set(ops.map((r) => r.op))]) {
+      const a = ops.find((r) => r.n === lo && r.op === op), b = ops.find((r) => r.n === hi && r.op === op);
+      const ratio = b.opPlusDualUs / a.opPlusDualUs;
+      console.log(`| ${op} + dual update, ${hi}³/${lo}³ ≤ 1.5 | ${ratio.toFixed(2)} | ${verdict(ratio <= 1.5)} |`);
+    }
+  }
+  for (const t of thr) console.log(`| throughput at ${t.n}³ ≥ 50,000 applied/s | ${t.appliedPerSec} | ${verdict(t.appliedPerSec >= 50000)} |`);
+' "$RESULTS"

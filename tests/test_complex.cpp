@@ -1,6 +1,10 @@
 #include <doctest/doctest.h>
 
+#include <cstdio>
+#include <fstream>
+
 #include "complex/builders.hpp"
+#include "complex/huge_pages.hpp"
 #include "helpers.hpp"
 #include "io/io.hpp"
 
@@ -127,4 +131,31 @@ TEST_CASE("edges(), vertices() and boundaryQuads() list each entity once") {
     onQ += v == std::array<VertexId, 4>{4, 5, 6, 7};
   }
   CHECK(onQ == 2);
+}
+
+TEST_CASE("reserveHuge keeps the contents and, on Linux, advises huge pages for large storage") {
+  std::vector<int32_t> v = {7, 8, 9};
+  reserveHuge(v, size_t(4) << 20);  // 16 MiB
+  CHECK(v.capacity() >= (size_t(4) << 20));
+  CHECK(v == std::vector<int32_t>{7, 8, 9});
+  std::vector<int32_t> w = {1, 2};
+  assignHuge(w, 5, int32_t(-1));
+  CHECK(w == std::vector<int32_t>(5, -1));
+#if defined(__linux__)
+  // The mapping holding the middle of the storage carries the kernel's huge-page advice flag.
+  const auto middle = reinterpret_cast<uintptr_t>(v.data() + (size_t(2) << 20));
+  std::ifstream smaps("/proc/self/smaps");
+  std::string line, flags;
+  bool inside = false;
+  while (std::getline(smaps, line)) {
+    const std::string first = line.substr(0, line.find(' '));
+    unsigned long lo = 0, hi = 0;
+    if (first.find(':') == std::string::npos && std::sscanf(first.c_str(), "%lx-%lx", &lo, &hi) == 2)
+      inside = lo <= middle && middle < hi;  // a mapping's header line
+    else if (inside && line.rfind("VmFlags:", 0) == 0)
+      flags = line;
+  }
+  INFO("VmFlags of the storage's mapping: " << flags);
+  CHECK(flags.find(" hg") != std::string::npos);
+#endif
 }

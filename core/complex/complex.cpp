@@ -1,5 +1,5 @@
 #include "complex/complex.hpp"
-#include "complex/large_arrays.hpp"
+#include "complex/huge_pages.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -13,11 +13,11 @@ void Complex::throwNoHex(HexId h, const char* what) {
 }
 
 void Complex::reserve(size_t hexes, size_t vertices) {
-  reserveLarge(verts_, hexes);
-  reserveLarge(glue_, hexes);
-  alive_.reserve(hexes);
-  reserveLarge(pos_, vertices);
-  reserveLarge(refs_, vertices);
+  reserveHuge(verts_, hexes);
+  reserveHuge(glue_, hexes);
+  reserveHuge(alive_, hexes);
+  reserveHuge(pos_, vertices);
+  reserveHuge(refs_, vertices);
 }
 
 VertexId Complex::addVertex(Vec3 p) {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "complex/large_arrays.hpp"
+#include "complex/huge_pages.hpp"
 
 
 namespace hexdual {
@@ -444,8 +444,8 @@ void uniteChordSlots(uint32_t* link, uint32_t a, uint32_t b) {
 // Unites the sheet slots and the chord slots across every glued quad (each once).
 [[gnu::noinline]] void uniteSlots(const Complex& cx, Dual& d) {
   const size_t n = size_t(cx.hexCapacity());
-  reserveLarge(d.sheetLabel, n);  // written once each (no zero-fill first)
-  reserveLarge(d.chordOf, n);
+  reserveHuge(d.sheetLabel, n);  // written once each (no zero-fill first)
+  reserveHuge(d.chordOf, n);
   for (size_t h = 0; h < n; ++h) {
     const int32_t i = int32_t(3 * h);
     if (cx.isHex(HexId(h))) {
@@ -754,10 +754,10 @@ Dual extractDual(const Complex& cx, DualExtras* extras) {
   const size_t n = size_t(cx.hexCapacity());
   Dual d;
   if (extras) {
-    reserveLarge(extras->slotSigns, 3 * n);
-    reserveLarge(extras->edgeMarks, n);
-    reserveLarge(extras->slotShares, 3 * n);
-    reserveLarge(extras->chordPlaces, 3 * n);
+    reserveHuge(extras->slotSigns, 3 * n);
+    reserveHuge(extras->edgeMarks, n);
+    reserveHuge(extras->slotShares, 3 * n);
+    reserveHuge(extras->chordPlaces, 3 * n);
     extras->slotSigns.assign(3 * n, 0);
     extras->edgeMarks.assign(n, 0);
     extras->slotShares.assign(3 * n, 0);

@@ -259,7 +259,19 @@ test('the triple-chord push decomposition: the tutorial link replays its 8 steps
   assert.ok(!s.error, s.error);
   assert.deepEqual(s.steps, ['hexpush h4f5', 'hexpush h29f2', 'facecollapse h1e11 h5f0 h34f2', 'ringcollapse h30e4',
     'facesplit h28f4 h36f4', 'facecollapse h7e2 h27f5 h35f5', 'facesplit h27f1 h5f0', 'chordpull h35']);
-  assert.equal(s.at, 8);
+  // The link opens before the first step, so a student steps forward and sees each step's change.
+  assert.equal(s.at, 0);
+  assert.equal((await shownCounts()).hexes, 27);
+  const hexesAfter = [31, 35, 35, 31, 31, 31, 31, 29];
+  for (let i = 1; i <= 8; i++) {
+    await page.keyboard.press('ArrowRight');
+    assert.equal((await state()).at, i);
+    assert.equal((await shownCounts()).hexes, hexesAfter[i - 1], `hexes after step ${i}`);
+    if (i === 2) {
+      await settle();
+      await page.screenshot({ path: join(screenshotDir, 'explorer-triple-chord-push-step2.png') });
+    }
+  }
   // 27 hexes + the triple-chord push's 2; (V, E, F, H) change by (+2, +6, +6, +2).
   assert.deepEqual(await shownCounts(), { ...(await shownCounts()), vertices: 66, edges: 150, quads: 114, hexes: 29 });
   await settle();
