@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "complex/huge_pages.hpp"
+
 
 namespace hexdual {
 using namespace tables;
@@ -15,7 +17,21 @@ constexpr int loopBit(int f, int a) { return 2 * f + (a == (axisOfFace(f) + 1) %
 
 int axisAcrossGluing(int f, int a, const Gluing& g) { return kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))].axis; }
 
+// facesOfEdge(e) as a table, and as a bit mask of faces.
+constexpr auto kEdgeFaces = [] {
+  std::array<std::array<int, 2>, 12> t{};
+  for (int e = 0; e < 12; ++e) t[size_t(e)] = facesOfEdge(e);
+  return t;
+}();
+constexpr auto kEdgeFaceMask = [] {
+  std::array<unsigned, 12> t{};
+  for (int e = 0; e < 12; ++e) t[size_t(e)] = (1u << facesOfEdge(e)[0]) | (1u << facesOfEdge(e)[1]);
+  return t;
+}();
+
 size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
+// A per-hex array of 3 values read as one flat per-slot array (slotIndex).
+int32_t* flat(std::vector<std::array<int32_t, 3>>& v) { return v.empty() ? nullptr : v[0].data(); }
 
 }  // namespace
 
@@ -126,9 +142,9 @@ void SlotList::settle() const {
 }
 
 void SheetFlooder::reserve(size_t hexCapacity) {
-  if (sign_.size() < 3 * hexCapacity) sign_.resize(3 * hexCapacity, 0);
-  if (edgeSeen_.size() < hexCapacity) edgeSeen_.resize(hexCapacity, 0);
-  if (loopSeen_.size() < hexCapacity) loopSeen_.resize(hexCapacity, 0);
+  growHuge(sign_, 3 * hexCapacity, int8_t(0));
+  growHuge(edgeSeen_, hexCapacity, uint16_t(0));
+  growHuge(loopSeen_, hexCapacity, uint16_t(0));
 }
 
 void SheetFlooder::clear(const std::vector<Slot>& slots) {
@@ -153,15 +169,17 @@ bool SheetFlooder::walkEdge(const Complex& cx, HexId h, int e) {
   return false;
 }
 
+namespace {
 // Walks one boundary loop of a sheet's mid-surface from a boundary mid-edge (the side of slot
-// (h, a) on boundary face f): mid-edge, fan of the primal edge it ends at, next mid-edge, ...
-void SheetFlooder::walkLoop(const Complex& cx, HexId h, int f, int a) {
+// (h, a) on boundary face f): mid-edge, fan of the primal edge it ends at, next mid-edge, ...;
+// marks each mid-edge in `loopSeen` (per hex, loopBit).
+void walkBoundaryLoop(const Complex& cx, HexId h, int f, int a, uint16_t* loopSeen) {
   HexId ch = h;
   int cf = f, ca = a;
   int leave = kMidSides[size_t(f * 3 + a)].secondEdge;
   const size_t limit = 12 * size_t(cx.hexCapacity()) + 1;  // a valid complex never gets near it
   for (size_t steps = 0; steps < limit; ++steps) {
-    loopSeen_[size_t(ch)] |= uint16_t(1u << loopBit(cf, ca));
+    loopSeen[size_t(ch)] |= uint16_t(1u << loopBit(cf, ca));
     // Around the primal edge `leave` from face cf to the fan's other boundary face.
     auto fs = facesOfEdge(leave);
     int exit = fs[0] == cf ? fs[1] : fs[0];
@@ -176,6 +194,9 @@ void SheetFlooder::walkLoop(const Complex& cx, HexId h, int f, int a) {
     leave = m.firstEdge == ce ? m.secondEdge : m.firstEdge;
   }
 }
+}  // namespace
+
+void SheetFlooder::walkLoop(const Complex& cx, HexId h, int f, int a) { walkBoundaryLoop(cx, h, f, a, loopSeen_.data()); }
 
 // Adds one slot's share of its sheet's mid-surface: the quad, its sides, and the primal edges and
 // boundary loops it is the first to meet (each is walked whole and marked).
@@ -272,11 +293,14 @@ void SheetStats::classify(Sheet& sh) const {
   sh.topology = classifySurface(sh.euler, sh.boundaryLoops, sh.orientable);
 }
 
-// Walks one chord from a slot: back to a boundary end (or once round), then forward, labelling.
-void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf, std::vector<int32_t>* previous) {
+namespace {
+// Where a chord's list starts when walked from slot `start`: back through low faces to a boundary
+// end, or `start` itself once round. Sets `back` (the face the list's first slot is entered by)
+// and `closed` (a twisted return leaves the chord open-ended at start).
+Slot chordListStart(const Complex& cx, Slot start, int& back, bool& closed) {
   Slot cur = start;
-  int back = 2 * cur.axis;  // leaving backwards through the low face
-  bool closed = false;
+  back = 2 * cur.axis;  // leaving backwards through the low face
+  closed = false;
   for (;;) {
     Gluing g = cx.gluing(cur.hex, back);
     if (g.boundary()) break;
@@ -284,14 +308,23 @@ void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf, std::
     back = oppositeFace(g.face);
     if (cur == start) {
       closed = back == 2 * start.axis;
-      break;  // round once (a twisted return leaves the chord open-ended at start)
+      break;
     }
   }
   if (closed) {
     cur = start;
     back = 2 * start.axis;
   }
-  walkChordForward(cx, cur, oppositeFace(back), ch, chordOf, previous);
+  return cur;
+}
+}  // namespace
+
+// Walks one chord from a slot: back to a boundary end (or once round), then forward, labelling.
+void walkChord(const Complex& cx, Slot start, Chord& ch, int32_t* chordOf, std::vector<int32_t>* previous) {
+  int back;
+  bool closed;
+  const Slot from = chordListStart(cx, start, back, closed);
+  walkChordForward(cx, from, oppositeFace(back), ch, chordOf, previous);
   ch.closed = closed;
 }
 
@@ -319,6 +352,28 @@ ChordWalk walkChordForward(const Complex& cx, Slot cur, int exitFace, Chord& ch,
   return w;
 }
 
+namespace {
+// A chord with no boundary end, listed from slot `first` as walkChord lists it (round once, forward
+// through the high face; a twisted return is listed the other way). Returns whether it closes.
+bool walkClosedChord(const Complex& cx, Slot first, std::vector<Slot>& out) {
+  int back;
+  bool closed;
+  const Slot from = chordListStart(cx, first, back, closed);
+  Slot cur = from;
+  int exit = oppositeFace(back);
+  const size_t limit = 3 * size_t(cx.hexCapacity());
+  for (;;) {
+    out.push_back(cur);
+    Gluing g = cx.gluing(cur.hex, exit);
+    if (g.boundary() || out.size() > limit) break;
+    cur = {g.hex, axisOfFace(g.face)};
+    exit = oppositeFace(g.face);
+    if (cur == from) break;
+  }
+  return closed;
+}
+}  // namespace
+
 int mapAxisAcross(const Complex& cx, HexId h, int face, int axis) { return axisAcrossGluing(face, axis, cx.gluing(h, face)); }
 
 std::string classifySurface(int64_t euler, int loops, bool orientable) {
@@ -332,21 +387,25 @@ std::string classifySurface(int64_t euler, int loops, bool orientable) {
 
 namespace {
 
-// Union-find over slots that also keeps each slot's orientation relative to its root (the low
-// bit of its link), so one sequential pass over glued quads finds the sheets and their
-// orientability, as the floor finds the sheets alone. The smaller root wins: a sheet's root is
-// its smallest slot.
-class OrientedUnionFind {
+// Union-find over slots kept in the sheet-label array itself (one uint32 per slot: parent << 1,
+// low bit the slot's orientation relative to its parent; a root's low bit marks its sheet
+// twisted), so one sequential pass over glued quads finds the sheets and their orientability, as
+// the floor finds the sheets alone. The smaller root wins, so every parent is a smaller slot and a
+// sheet's root is its smallest slot.
+class SheetUnionFind {
  public:
-  explicit OrientedUnionFind(size_t n) : link_(n), twisted_(n, 0) {
-    for (size_t i = 0; i < n; ++i) link_[i] = uint32_t(i) << 1;
-  }
+  explicit SheetUnionFind(uint32_t* link) : link_(link) {}
   uint32_t find(uint32_t x, uint32_t& parity) {
     parity = 0;
     for (;;) {
       const uint32_t l = link_[x], p = l >> 1;
       if (p == x) return x;
-      const uint32_t lp = link_[p], gp = lp >> 1, par = (l ^ lp) & 1u;
+      const uint32_t lp = link_[p], gp = lp >> 1;
+      if (gp == p) {  // p is the root: its low bit is not a parity
+        parity ^= l & 1u;
+        return p;
+      }
+      const uint32_t par = (l ^ lp) & 1u;
       link_[x] = (gp << 1) | par;  // path halving, parity composed
       parity ^= par;
       x = gp;
@@ -357,27 +416,51 @@ class OrientedUnionFind {
     uint32_t pa, pb;
     uint32_t ra = find(a, pa), rb = find(b, pb);
     if (ra == rb) {
-      if ((pa ^ pb) != flip) twisted_[ra] = 1;
+      if ((pa ^ pb) != flip) link_[ra] |= 1u;
       return;
     }
     if (rb < ra) std::swap(ra, rb);
+    const uint32_t twisted = link_[rb] & 1u;
     link_[rb] = (ra << 1) | (pa ^ pb ^ flip);
-    twisted_[ra] |= twisted_[rb];
+    link_[ra] |= twisted;
   }
-  bool twisted(uint32_t root) const { return twisted_[root] != 0; }
 
  private:
-  std::vector<uint32_t> link_;
-  std::vector<uint8_t> twisted_;
+  uint32_t* link_;
 };
 
-// Sheets numbered in the order of their smallest slot: labelled by one oriented union-find pass
-// over the glued quads, then each slot's share of its mid-surface measured in one more pass.
-void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
-  std::vector<int8_t>* signs = extras ? &extras->slotSigns : nullptr;
-  int32_t* sheetOf = d.sheetLabel.empty() ? nullptr : d.sheetLabel[0].data();
-  OrientedUnionFind uf(3 * size_t(cx.hexCapacity()));
-  for (HexId h : cx.hexes())
+// Chord union-find: plain parent links kept in the chord-label array (the smaller root wins, so
+// every parent is a smaller slot, as for sheets).
+uint32_t findChordRoot(uint32_t* link, uint32_t x) {
+  while (link[x] != x) x = link[x] = link[link[x]];  // path halving
+  return x;
+}
+void uniteChordSlots(uint32_t* link, uint32_t a, uint32_t b) {
+  a = findChordRoot(link, a);
+  b = findChordRoot(link, b);
+  if (a < b) link[b] = a;
+  else if (b < a) link[a] = b;
+}
+
+// Unites the sheet slots and the chord slots across every glued quad (each once).
+[[gnu::noinline]] void uniteSlots(const Complex& cx, Dual& d) {
+  const size_t n = size_t(cx.hexCapacity());
+  reserveHuge(d.sheetLabel, withHeadroom(n));  // written once each (no zero-fill first)
+  reserveHuge(d.chordOf, withHeadroom(n));
+  for (size_t h = 0; h < n; ++h) {
+    const int32_t i = int32_t(3 * h);
+    if (cx.isHex(HexId(h))) {
+      d.sheetLabel.push_back({i << 1, (i + 1) << 1, (i + 2) << 1});
+      d.chordOf.push_back({i, i + 1, i + 2});
+    } else {
+      d.sheetLabel.push_back({-1, -1, -1});
+      d.chordOf.push_back({-1, -1, -1});
+    }
+  }
+  uint32_t* link = reinterpret_cast<uint32_t*>(flat(d.sheetLabel));
+  uint32_t* chordLink = reinterpret_cast<uint32_t*>(flat(d.chordOf));
+  SheetUnionFind uf(link);
+  for (HexId h : cx.hexes()) {
     for (int f = 0; f < 6; ++f) {
       Gluing g = cx.gluing(h, f);
       if (g.boundary() || g.hex < h || (g.hex == h && g.face < f)) continue;  // each glued quad once
@@ -385,80 +468,285 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras) {
         const Crossing& c = kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))];
         uf.unite(uint32_t(slotIndex(h, a)), uint32_t(slotIndex(g.hex, c.axis)), c.sign < 0 ? 1u : 0u);
       }
+      uniteChordSlots(chordLink, uint32_t(slotIndex(h, axisOfFace(f))), uint32_t(slotIndex(g.hex, axisOfFace(g.face))));
     }
-  std::vector<uint32_t> roots;
-  for (HexId h : cx.hexes())
+  }
+}
+
+// What the slot pass learns of the chords: per chord id (in the order of its smallest slot) that
+// slot and whether a boundary start was claimed for it, and the starts: each open chord's boundary
+// face met first in (hex, face) order.
+struct ChordPlan {
+  std::vector<uint32_t> root;
+  std::vector<uint8_t> claimed, selfIntersecting;
+  std::vector<QuadSide> starts;
+};
+
+// True when (h, e) is the smallest incidence of its primal edge; `closed` then tells whether the
+// edge's incidences form a cycle (false for a fan ending on the boundary). Two fronts walk round
+// the edge from (h, e), one through each of its faces, a step each in turn (independent loads),
+// and stop at the first smaller incidence: in a structured block a neighbour decides every
+// incidence but the smallest at once, and the smallest one's 4-cycle closes after a step each.
+bool smallestIncidence(const Complex& cx, HexId h, int e, bool& closed) {
+  // An incidence as one comparable key: hex * 16 + edge.
+  const int64_t start = int64_t(h) * 16 + e;
+  int64_t a = start, b = start;
+  int exitA = kEdgeFaces[size_t(e)][0], exitB = kEdgeFaces[size_t(e)][1];
+  auto step = [&cx](int64_t& k, int& exit) {
+    const Gluing g = cx.gluing(HexId(k >> 4), exit);
+    if (g.boundary()) return false;
+    const EdgeStep& st = kEdgeSteps[size_t(edgeStepIndex(int(k & 15), exit, g.face, g.orient))];
+    k = int64_t(g.hex) * 16 + st.edge;
+    exit = st.exit;
+    return true;
+  };
+  bool openA = true, openB = true;  // fronts not yet at the boundary
+  for (;;) {
+    if (openA && (openA = step(a, exitA))) {
+      if (a < start) return false;
+      if (a == b) break;  // the fronts met: every incidence seen
+    }
+    if (openB && (openB = step(b, exitB))) {
+      if (b < start) return false;
+      if (a == b) break;
+    }
+    if (!openA && !openB) {
+      closed = false;
+      return true;
+    }
+  }
+  closed = true;
+  return true;
+}
+
+// The faces of hex h glued to h itself (bit mask).
+unsigned selfGlued(const std::array<Gluing, 6>& glued, HexId h) {
+  unsigned m = 0;
+  for (int f = 0; f < 6; ++f) m |= unsigned(glued[size_t(f)].hex == h) << f;
+  return m;
+}
+
+// smallestIncidence for an edge of h whose two faces are glued to larger hexes (`glued`: h's
+// gluings): one step from each neighbour, and when both land on the same incidence the edge is a
+// 4-cycle (a structured block's interior edge) decided by that incidence alone (unless it is (h, e):
+// a 2-cycle); else the walk.
+bool closesAsSmallest(const Complex& cx, HexId h, int e, const std::array<Gluing, 6>& glued, bool& closed) {
+  const auto& fs = kEdgeFaces[size_t(e)];
+  const Gluing& g0 = glued[size_t(fs[0])];
+  const Gluing& g1 = glued[size_t(fs[1])];
+  const EdgeStep& s0 = kEdgeSteps[size_t(edgeStepIndex(e, fs[0], g0.face, g0.orient))];
+  const EdgeStep& s1 = kEdgeSteps[size_t(edgeStepIndex(e, fs[1], g1.face, g1.orient))];
+  EdgeRef a{g0.hex, s0.edge}, b{g1.hex, s1.edge};
+  int exitA = s0.exit, exitB = s1.exit;
+  if (cx.stepAroundEdge(a, exitA) && cx.stepAroundEdge(b, exitB) && a == b && !(a == EdgeRef{h, e})) {
+    closed = true;
+    return h < a.hex || (h == a.hex && e < a.edge);
+  }
+  return smallestIncidence(cx, h, e, closed);
+}
+
+// Marks every hex of the fan of boundary edge (h, e) as near the boundary (DualExtras::edgeMarks).
+void markFan(const Complex& cx, HexId h, int e, uint16_t* marks) {
+  marks[size_t(h)] |= kEdgeNearBoundary;
+  const auto fs = facesOfEdge(e);
+  for (int dir = 0; dir < 2; ++dir) {
+    EdgeRef cur{h, e};
+    int exit = fs[size_t(dir)];
+    while (cx.stepAroundEdge(cur, exit)) marks[size_t(cur.hex)] |= kEdgeNearBoundary;
+  }
+}
+
+// Labels hex h's chord slots (read off their parents, smaller slots already labelled) and claims
+// a boundary start for each open chord first met here (`boundary`: h's boundary faces).
+void labelChords(HexId h, unsigned boundary, int32_t* chordOf, ChordPlan& plan) {
+  for (int a = 0; a < 3; ++a) {
+    const size_t i = slotIndex(h, a);
+    const uint32_t parent = uint32_t(chordOf[i]);
+    if (parent == i) {
+      chordOf[i] = int32_t(plan.root.size());
+      plan.root.push_back(uint32_t(i));
+      plan.claimed.push_back(0);
+      plan.selfIntersecting.push_back(0);
+    } else {
+      chordOf[i] = chordOf[parent];
+    }
+  }
+  const int32_t* c = chordOf + slotIndex(h, 0);
+  if (c[0] == c[1] || c[0] == c[2]) plan.selfIntersecting[size_t(c[0])] = 1;
+  if (c[1] == c[2]) plan.selfIntersecting[size_t(c[1])] = 1;
+  for (int f = 0; f < 6; ++f)
+    if ((boundary >> f) & 1u) {
+      uint8_t& claimed = plan.claimed[size_t(c[axisOfFace(f)])];
+      if (!claimed) plan.starts.push_back({h, f});
+      claimed = 1;
+    }
+}
+
+// One pass over the slots in order: each slot's label read off the union-find (its parent, a
+// smaller slot, is already labelled: O(1) per slot, no find), its orientation, and its share of
+// its sheet's mid-surface: quad, sides, boundary loops first met, and the primal edges it holds
+// the smallest incidence of. The labels overwrite the links in place.
+template <bool kExtras>
+[[gnu::noinline]] std::vector<SheetStats> labelAndMeasureSheets(const Complex& cx, Dual& d, DualExtras* x, ChordPlan& plan) {
+  const uint32_t* link = reinterpret_cast<const uint32_t*>(flat(d.sheetLabel));
+  int32_t* label = flat(d.sheetLabel);
+  int32_t* chordOf = flat(d.chordOf);
+  int8_t* sign = kExtras ? x->slotSigns.data() : nullptr;
+  uint16_t* marks = kExtras ? x->edgeMarks.data() : nullptr;
+  int8_t* shares = kExtras ? x->slotShares.data() : nullptr;
+  std::vector<uint16_t> loopSeen(size_t(cx.hexCapacity()), 0);
+  std::vector<SheetStats> stats;
+  for (HexId h : cx.hexes()) {
+    // Faces glued to a smaller hex: an edge on one of them is not its edge's smallest incidence.
+    unsigned boundary = 0, smaller = 0;
+    std::array<Gluing, 6> glued;
+    for (int f = 0; f < 6; ++f) {
+      const Gluing g = glued[size_t(f)] = cx.gluing(h, f);
+      boundary |= unsigned(g.boundary()) << f;
+      smaller |= unsigned(!g.boundary() && g.hex <= h) << f;  // itself: decided by the walk
+    }
+    labelChords(h, boundary, chordOf, plan);
     for (int a = 0; a < 3; ++a) {
-      const uint32_t i = uint32_t(slotIndex(h, a));
-      uint32_t parity;
-      const uint32_t r = uf.find(i, parity);
-      if (signs) (*signs)[i] = parity ? -1 : 1;
-      if (r == i) {
-        sheetOf[i] = int32_t(roots.size());
-        roots.push_back(r);
+      const size_t i = slotIndex(h, a);
+      const uint32_t l = link[i], p = l >> 1;
+      int32_t id;
+      if (p == i) {
+        id = int32_t(stats.size());
+        stats.emplace_back().orientable = (l & 1u) == 0;
+        if constexpr (kExtras) sign[i] = 1;
       } else {
-        sheetOf[i] = sheetOf[r];
+        id = label[p];
+        if constexpr (kExtras) sign[i] = int8_t((l & 1u) ? -sign[p] : sign[p]);
       }
+      label[i] = id;
+      SheetStats& st = stats[size_t(id)];
+      ++st.slots;
+      int share = 2;
+      for (int f : kParallelFaces[size_t(a)]) {
+        if (!((boundary >> f) & 1u)) {
+          ++st.interiorSides;
+          share -= 1;
+          continue;
+        }
+        ++st.boundarySides;
+        share -= 2;
+        if (!((loopSeen[size_t(h)] >> loopBit(f, a)) & 1u)) {
+          walkBoundaryLoop(cx, h, f, a, loopSeen.data());
+          ++st.loops;
+        }
+      }
+      for (int e = 4 * a; e < 4 * a + 4; ++e) {
+        bool closed;
+        const unsigned faces = kEdgeFaceMask[size_t(e)];
+        if (smaller & faces) {
+          if (!(smaller & faces & ~boundary & selfGlued(glued, h)) || !smallestIncidence(cx, h, e, closed)) continue;
+        } else if (!(boundary & faces) ? !closesAsSmallest(cx, h, e, glued, closed) : !smallestIncidence(cx, h, e, closed)) {
+          continue;
+        }
+        ++st.vertices;
+        if constexpr (kExtras) {
+          marks[size_t(h)] |= uint16_t(1u << e);
+          share += 2;
+          if (!closed) markFan(cx, h, e, marks);
+        }
+      }
+      if constexpr (kExtras) shares[i] = int8_t(share);
     }
-  std::vector<SheetStats> stats(roots.size());
-  SheetFlooder flooder;
-  flooder.reserve(size_t(cx.hexCapacity()));
-  if (extras) flooder.edgeMarks = &extras->edgeMarks;
-  for (HexId h : cx.hexes())
-    for (int a = 0; a < 3; ++a) flooder.measure(cx, h, a, stats[size_t(sheetOf[slotIndex(h, a)])]);
+  }
+  return stats;
+}
+
+// Sheets numbered in the order of their smallest slot: labelled by one oriented union-find pass
+// over the glued quads, then labelled and measured in one pass over the slots.
+void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& plan) {
+  std::vector<SheetStats> stats =
+      extras ? labelAndMeasureSheets<true>(cx, d, extras, plan) : labelAndMeasureSheets<false>(cx, d, extras, plan);
   d.sheets.resize(stats.size());
   d.labelSheet.resize(stats.size());
   for (size_t s = 0; s < stats.size(); ++s) {
     d.labelSheet[s] = int32_t(s);
     d.sheets[s].id = int32_t(s);
-    stats[s].orientable = !uf.twisted(roots[s]);
     stats[s].classify(d.sheets[s]);
-    d.sheets[s].slots.reserve(size_t(stats[s].slots));
   }
+  // Slot lists, exactly sized: one pass over the labels.
+  std::vector<std::vector<Slot>> lists(stats.size());
+  for (size_t s = 0; s < stats.size(); ++s) lists[s].reserve(size_t(stats[s].slots));
+  for (HexId h : cx.hexes()) {
+    const auto& l = d.sheetLabel[size_t(h)];
+    if (l[0] == l[1] || l[0] == l[2]) d.sheets[size_t(l[0])].selfIntersecting = true;
+    if (l[1] == l[2]) d.sheets[size_t(l[1])].selfIntersecting = true;
+    for (int a = 0; a < 3; ++a) lists[size_t(l[size_t(a)])].push_back({h, a});
+  }
+  for (size_t s = 0; s < stats.size(); ++s) d.sheets[s].slots = std::move(lists[s]);
 }
 
-// Open chords walked once, forward from the boundary end met first; closed ones after. Ids are
-// then renumbered in the order of each chord's smallest slot, and each open chord listed from the
-// end its smallest slot's low face leads to (as a walk from that slot would list it).
-std::vector<int32_t> extractChords(const Complex& cx, Dual& d) {
-  int32_t* chordOf = d.chordOf.empty() ? nullptr : d.chordOf[0].data();
-  std::vector<ChordWalk> walks;
-  Chord scratch;  // walked into one reused buffer, then copied to an exactly sized list (no regrowth per chord)
-  for (HexId h : cx.hexes())
-    for (int f = 0; f < 6; ++f) {
-      if (!cx.isBoundary({h, f}) || chordOf[slotIndex(h, axisOfFace(f))] >= 0) continue;
-      scratch.id = int32_t(d.chords.size());
-      scratch.slots.clear();
-      walks.push_back(walkChordForward(cx, {h, axisOfFace(f)}, oppositeFace(f), scratch, chordOf));
-      Chord ch;
-      ch.id = scratch.id;
-      if (walks.back().smallestEnteredLow)
-        ch.slots.assign(scratch.slots.begin(), scratch.slots.end());
-      else
-        ch.slots.assign(scratch.slots.rbegin(), scratch.slots.rend());
-      d.chords.push_back(std::move(ch));
-    }
-  for (HexId h : cx.hexes())
-    for (int a = 0; a < 3; ++a)
-      if (chordOf[slotIndex(h, a)] < 0) {
-        Chord ch;
-        ch.id = int32_t(d.chords.size());
-        walkChord(cx, {h, a}, ch, chordOf);
-        walks.push_back({slotIndex(h, a), true});
-        d.chords.push_back(std::move(ch));
-      }
-  // Renumber by smallest slot.
-  std::vector<int32_t> order(walks.size()), newId(walks.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = int32_t(i);
-  std::sort(order.begin(), order.end(), [&](int32_t x, int32_t y) { return walks[size_t(x)].smallest < walks[size_t(y)].smallest; });
-  std::vector<Chord> sorted(order.size());
-  for (size_t r = 0; r < order.size(); ++r) {
-    newId[size_t(order[r])] = int32_t(r);
-    sorted[r] = std::move(d.chords[size_t(order[r])]);
-    sorted[r].id = int32_t(r);
+// Chord slot lists. Ids and labels are known (the chord union-find); each open chord is walked
+// once, forward from its claimed boundary start, several chords in turn so that their cache misses
+// overlap, and listed from the end its smallest slot's low face leads to (as a walk from that slot
+// would list it). Closed chords after: from their smallest slot, round once.
+[[gnu::noinline]] void extractChords(const Complex& cx, Dual& d, DualExtras* extras, const ChordPlan& plan) {
+  const int32_t* chordOf = flat(d.chordOf);
+  int32_t* places = extras ? extras->chordPlaces.data() : nullptr;
+  d.chords.resize(plan.root.size());
+  for (size_t c = 0; c < d.chords.size(); ++c) {
+    d.chords[c].id = int32_t(c);
+    d.chords[c].selfIntersecting = plan.selfIntersecting[c] != 0;
   }
-  d.chords = std::move(sorted);
-  return newId;
+  auto keep = [&](int32_t id, const std::vector<Slot>& walked, bool reversed) {
+    Chord& ch = d.chords[size_t(id)];
+    if (reversed)
+      ch.slots.assign(walked.rbegin(), walked.rend());
+    else
+      ch.slots.assign(walked.begin(), walked.end());
+    if (places)
+      for (size_t i = 0; i < ch.slots.size(); ++i) places[slotIndex(ch.slots[i].hex, ch.slots[i].axis)] = int32_t(i);
+  };
+  struct Lane {
+    int32_t chord = -1;
+    Slot cur;
+    int exit = 0;
+    bool rootEnteredLow = true;
+    std::vector<Slot> slots;
+  };
+  constexpr int kLanes = 16;
+  std::array<Lane, kLanes> lanes;
+  size_t next = 0;
+  auto start = [&](Lane& l) {
+    if (next == plan.starts.size()) return false;
+    const QuadSide s = plan.starts[next++];
+    l.cur = {s.hex, axisOfFace(s.face)};
+    l.chord = chordOf[slotIndex(l.cur.hex, l.cur.axis)];
+    l.exit = oppositeFace(s.face);
+    l.rootEnteredLow = (s.face & 1) == 0;
+    l.slots.clear();
+    return true;
+  };
+  int active = 0;
+  for (Lane& l : lanes) active += start(l);
+  const size_t limit = 3 * size_t(cx.hexCapacity());  // a valid complex never gets near it
+  while (active > 0)
+    for (Lane& l : lanes) {
+      if (l.chord < 0) continue;
+      l.slots.push_back(l.cur);
+      const Gluing g = cx.gluing(l.cur.hex, l.exit);
+      if (g.boundary() || l.slots.size() > limit) {
+        keep(l.chord, l.slots, !l.rootEnteredLow);
+        l.chord = -1;
+        if (!start(l)) --active;
+        continue;
+      }
+      l.cur = {g.hex, axisOfFace(g.face)};
+      l.exit = oppositeFace(g.face);
+      if (slotIndex(l.cur.hex, l.cur.axis) == plan.root[size_t(l.chord)]) l.rootEnteredLow = (g.face & 1) == 0;
+    }
+  std::vector<Slot> walked;
+  for (size_t c = 0; c < d.chords.size(); ++c)
+    if (!plan.claimed[c]) {
+      const Slot first{HexId(plan.root[c] / 3), int(plan.root[c] % 3)};
+      walked.clear();
+      d.chords[c].closed = walkClosedChord(cx, first, walked);
+      keep(int32_t(c), walked, false);
+    }
 }
 
 // Every chord one label, equal to its id (DualTracker cuts and joins them later).
@@ -472,33 +760,21 @@ void labelChordsById(Dual& d) {
 Dual extractDual(const Complex& cx, DualExtras* extras) {
   const size_t n = size_t(cx.hexCapacity());
   Dual d;
-  d.sheetLabel.assign(n, {-1, -1, -1});
-  d.chordOf.assign(n, {-1, -1, -1});
   if (extras) {
+    reserveHuge(extras->slotSigns, withHeadroom(3 * n));
+    reserveHuge(extras->edgeMarks, withHeadroom(n));
+    reserveHuge(extras->slotShares, withHeadroom(3 * n));
+    reserveHuge(extras->chordPlaces, withHeadroom(3 * n));
     extras->slotSigns.assign(3 * n, 0);
     extras->edgeMarks.assign(n, 0);
-  }
-  extractSheets(cx, d, extras);
-  const std::vector<int32_t> newChordId = extractChords(cx, d);
-  labelChordsById(d);
-  if (extras) {  // the tracker's per-slot state, here where whole-mesh passes are compiled for speed
     extras->slotShares.assign(3 * n, 0);
-    for (HexId h : cx.hexes())
-      for (int a = 0; a < 3; ++a) extras->slotShares[slotIndex(h, a)] = slotShare(cx, h, a, extras->edgeMarks[size_t(h)]);
     extras->chordPlaces.assign(3 * n, 0);
-    for (const Chord& ch : d.chords)
-      for (size_t i = 0; i < ch.slots.size(); ++i) extras->chordPlaces[slotIndex(ch.slots[i].hex, ch.slots[i].axis)] = int32_t(i);
   }
-  for (HexId h : cx.hexes()) {
-    auto& c = d.chordOf[size_t(h)];
-    for (int32_t& id : c) id = newChordId[size_t(id)];
-    const auto& s = d.sheetLabel[size_t(h)];  // labels are ids here
-    if (s[0] == s[1] || s[0] == s[2]) d.sheets[size_t(s[0])].selfIntersecting = true;
-    if (s[1] == s[2]) d.sheets[size_t(s[1])].selfIntersecting = true;
-    if (c[0] == c[1] || c[0] == c[2]) d.chords[size_t(c[0])].selfIntersecting = true;
-    if (c[1] == c[2]) d.chords[size_t(c[1])].selfIntersecting = true;
-    for (int a = 0; a < 3; ++a) d.sheets[size_t(s[size_t(a)])].slots.push_back({h, a});
-  }
+  uniteSlots(cx, d);
+  ChordPlan plan;
+  extractSheets(cx, d, extras, plan);
+  extractChords(cx, d, extras, plan);
+  labelChordsById(d);
   return d;
 }
 
