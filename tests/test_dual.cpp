@@ -111,7 +111,7 @@ TEST_CASE("dual ids are deterministic") {
   Dual a = extractDual(makeRing(8, 2, 2)), b = extractDual(makeRing(8, 2, 2));
   CHECK(a.sheetLabel == b.sheetLabel);
   CHECK(a.labelSheet == b.labelSheet);
-  CHECK(a.chordOf == b.chordOf);
+  CHECK(a.chordLabel == b.chordLabel);
 }
 
 TEST_CASE("validateDual accepts extracted duals and names a tampered slot") {

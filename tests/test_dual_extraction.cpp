@@ -101,7 +101,7 @@ void referenceSheets(const Complex& cx, Dual& d, DualExtras& x) {
 }
 
 std::vector<int32_t> referenceChords(const Complex& cx, Dual& d) {
-  int32_t* chordOf = d.chordOf[0].data();
+  int32_t* chordOf = d.chordLabel[0].data();
   std::vector<ChordWalk> walks;
   for (HexId h : cx.hexes())
     for (int f = 0; f < 6; ++f) {
@@ -139,7 +139,7 @@ Dual referenceDual(const Complex& cx, DualExtras& x) {
   const size_t n = size_t(cx.hexCapacity());
   Dual d;
   d.sheetLabel.assign(n, {-1, -1, -1});
-  d.chordOf.assign(n, {-1, -1, -1});
+  d.chordLabel.assign(n, {-1, -1, -1});
   x.slotSigns.assign(3 * n, 0);
   x.edgeMarks.assign(n, 0);
   x.slotShares.assign(3 * n, 0);
@@ -148,14 +148,14 @@ Dual referenceDual(const Complex& cx, DualExtras& x) {
   const std::vector<int32_t> newId = referenceChords(cx, d);
   for (HexId h : cx.hexes()) {
     for (int a = 0; a < 3; ++a) x.slotShares[slotOf(h, a)] = slotShare(cx, h, a, x.edgeMarks[size_t(h)]);
-    for (int32_t& c : d.chordOf[size_t(h)]) c = newId[size_t(c)];
+    for (int32_t& c : d.chordLabel[size_t(h)]) c = newId[size_t(c)];
   }
   for (const Chord& ch : d.chords)
     for (size_t i = 0; i < ch.slots.size(); ++i) x.chordPlaces[slotOf(ch.slots[i].hex, ch.slots[i].axis)] = int32_t(i);
   for (HexId h : cx.hexes())
     for (int a = 0; a < 3; ++a) {
       const auto& s = d.sheetLabel[size_t(h)];
-      const auto& c = d.chordOf[size_t(h)];
+      const auto& c = d.chordLabel[size_t(h)];
       for (int b = a + 1; b < 3; ++b) {
         if (s[size_t(a)] == s[size_t(b)]) d.sheets[size_t(s[size_t(a)])].selfIntersecting = true;
         if (c[size_t(a)] == c[size_t(b)]) d.chords[size_t(c[size_t(a)])].selfIntersecting = true;
@@ -199,9 +199,9 @@ void requireSameExtraction(const Complex& cx, const std::string& what) {
   }
   REQUIRE(f.sheetLabel == r.sheetLabel);
   REQUIRE(f.labelSheet == r.labelSheet);
-  REQUIRE(f.chordOf == r.chordOf);
+  REQUIRE(f.chordLabel == r.chordLabel);
   REQUIRE(plain.sheetLabel == r.sheetLabel);
-  REQUIRE(plain.chordOf == r.chordOf);
+  REQUIRE(plain.chordLabel == r.chordLabel);
   REQUIRE(fx.slotSigns == rx.slotSigns);
   REQUIRE(fx.edgeMarks == rx.edgeMarks);
   REQUIRE(fx.slotShares == rx.slotShares);

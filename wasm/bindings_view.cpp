@@ -115,10 +115,10 @@ val viewHexDual(double dualAddress) {
     const Dual& d = dualAt(dualAddress);
     std::vector<int32_t> sheets, chords;
     sheets.reserve(d.sheetLabel.size() * 3);
-    chords.reserve(d.chordOf.size() * 3);
+    chords.reserve(d.chordLabel.size() * 3);
     for (size_t h = 0; h < d.sheetLabel.size(); ++h)
       for (int a = 0; a < 3; ++a) sheets.push_back(d.sheetAt(HexId(h), a));
-    for (size_t h = 0; h < d.chordOf.size(); ++h)
+    for (size_t h = 0; h < d.chordLabel.size(); ++h)
       for (int a = 0; a < 3; ++a) chords.push_back(d.chordAt(HexId(h), a));
     val out = val::object();
     out.set("sheetOf", copyOut("Int32Array", sheets));

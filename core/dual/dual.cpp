@@ -446,19 +446,19 @@ void uniteChordSlots(uint32_t* link, uint32_t a, uint32_t b) {
 [[gnu::noinline]] void uniteSlots(const Complex& cx, Dual& d) {
   const size_t n = size_t(cx.hexCapacity());
   reserveHuge(d.sheetLabel, withHeadroom(n));  // written once each (no zero-fill first)
-  reserveHuge(d.chordOf, withHeadroom(n));
+  reserveHuge(d.chordLabel, withHeadroom(n));
   for (size_t h = 0; h < n; ++h) {
     const int32_t i = int32_t(3 * h);
     if (cx.isHex(HexId(h))) {
       d.sheetLabel.push_back({i << 1, (i + 1) << 1, (i + 2) << 1});
-      d.chordOf.push_back({i, i + 1, i + 2});
+      d.chordLabel.push_back({i, i + 1, i + 2});
     } else {
       d.sheetLabel.push_back({-1, -1, -1});
-      d.chordOf.push_back({-1, -1, -1});
+      d.chordLabel.push_back({-1, -1, -1});
     }
   }
   uint32_t* link = reinterpret_cast<uint32_t*>(flat(d.sheetLabel));
-  uint32_t* chordLink = reinterpret_cast<uint32_t*>(flat(d.chordOf));
+  uint32_t* chordLink = reinterpret_cast<uint32_t*>(flat(d.chordLabel));
   SheetUnionFind uf(link);
   for (HexId h : cx.hexes()) {
     for (int f = 0; f < 6; ++f) {
@@ -590,7 +590,7 @@ template <bool kExtras>
 [[gnu::noinline]] std::vector<SheetStats> labelAndMeasureSheets(const Complex& cx, Dual& d, DualExtras* x, ChordPlan& plan) {
   const uint32_t* link = reinterpret_cast<const uint32_t*>(flat(d.sheetLabel));
   int32_t* label = flat(d.sheetLabel);
-  int32_t* chordOf = flat(d.chordOf);
+  int32_t* chordOf = flat(d.chordLabel);
   int8_t* sign = kExtras ? x->slotSigns.data() : nullptr;
   uint16_t* marks = kExtras ? x->edgeMarks.data() : nullptr;
   int8_t* shares = kExtras ? x->slotShares.data() : nullptr;
@@ -685,7 +685,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
 // overlap, and listed from the end its smallest slot's low face leads to (as a walk from that slot
 // would list it). Closed chords after: from their smallest slot, round once.
 [[gnu::noinline]] void extractChords(const Complex& cx, Dual& d, DualExtras* extras, const ChordPlan& plan) {
-  const int32_t* chordOf = flat(d.chordOf);
+  const int32_t* chordOf = flat(d.chordLabel);
   int32_t* places = extras ? extras->chordPlaces.data() : nullptr;
   d.chords.resize(plan.root.size());
   for (size_t c = 0; c < d.chords.size(); ++c) {
@@ -785,7 +785,7 @@ namespace hexdual {
 void validateDual(const Complex& cx, const Dual& d) {
   auto fail = [](const std::string& m) { throw Error("validateDual: " + m); };
   auto slotName = [](Slot s) { return "slot (hex " + std::to_string(s.hex) + ", axis " + std::to_string(s.axis) + ")"; };
-  if (d.sheetLabel.size() < size_t(cx.hexCapacity()) || d.chordOf.size() < size_t(cx.hexCapacity()))
+  if (d.sheetLabel.size() < size_t(cx.hexCapacity()) || d.chordLabel.size() < size_t(cx.hexCapacity()))
     fail("per-hex arrays are shorter than the hex capacity");
   std::vector<uint8_t> seenSheet(size_t(3) * size_t(cx.hexCapacity()), 0), seenChord(seenSheet.size(), 0);
   auto mark = [&](std::vector<uint8_t>& seen, Slot s, const char* what, int id) {

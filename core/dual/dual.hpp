@@ -89,13 +89,13 @@ struct Dual {
   // re-pointing the labels of one instead of re-writing its slots. Read sheet ids with sheetAt().
   std::vector<std::array<int32_t, 3>> sheetLabel;
   std::vector<int32_t> labelSheet;
-  // Per hex id (capacity), per axis: a chord LABEL, -1 for tombstones (the name is extraction's).
+  // Per hex id (capacity), per axis: a chord LABEL, -1 for tombstones.
   // Extraction gives every chord one label equal to its id. DualTracker lists a chord as pieces of
   // labels' runs (the slots a label was made with, by place: chordPlace), so joining or cutting
   // chords writes no slot outside the edit; a label's slots can then lie in several chords:
   // labelChord names the chord of a label lying in one, else (-1) labelCuts lists its ranges of
   // places per chord. Read chord ids with chordAt().
-  std::vector<std::array<int32_t, 3>> chordOf;
+  std::vector<std::array<int32_t, 3>> chordLabel;
   std::vector<int32_t> labelChord;
   struct ChordCut {
     int32_t lo, hi, chord;  // places [lo, hi) of a label's run lie in this chord
@@ -111,7 +111,7 @@ struct Dual {
   std::array<int32_t, 3> sheetsAt(HexId h) const { return {sheetAt(h, 0), sheetAt(h, 1), sheetAt(h, 2)}; }
   // The chord id of slot (h, a), -1 for a tombstone.
   int32_t chordAt(HexId h, int a) const {
-    const int32_t l = chordOf[size_t(h)][size_t(a)];
+    const int32_t l = chordLabel[size_t(h)][size_t(a)];
     if (l < 0) return -1;
     const int32_t c = labelChord[size_t(l)];
     if (c >= 0) return c;

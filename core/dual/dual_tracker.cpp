@@ -138,7 +138,7 @@ DualTracker::DualTracker(const Complex& cx) {
 // steps after a build neither copy nor page-fault a 1M-hex mesh's arrays.
 void DualTracker::growPerHexArrays(size_t cap) {
   growHuge(dual_.sheetLabel, cap, {-1, -1, -1});
-  growHuge(dual_.chordOf, cap, {-1, -1, -1});
+  growHuge(dual_.chordLabel, cap, {-1, -1, -1});
   growHuge(dual_.chordPlace, 3 * cap, int32_t(0));
   flooder_.reserve(cap);
   growHuge(edgeMarks_, cap, uint16_t(0));
@@ -1079,7 +1079,7 @@ int32_t DualTracker::chordLength(int32_t id) const {
 }
 
 int32_t DualTracker::placeInChord(int32_t id, Slot s) const {
-  const int32_t l = dual_.chordOf[size_t(s.hex)][size_t(s.axis)];
+  const int32_t l = dual_.chordLabel[size_t(s.hex)][size_t(s.axis)];
   if (l < 0) return -1;
   const int32_t i = dual_.chordPlace[slotIndex(s)];
   int32_t before = 0;
@@ -1124,7 +1124,7 @@ int32_t DualTracker::newChordLabel(std::vector<Slot> run) {
     dual_.labelChord.push_back(-1);
   }
   for (size_t i = 0; i < run.size(); ++i) {
-    dual_.chordOf[size_t(run[i].hex)][size_t(run[i].axis)] = l;
+    dual_.chordLabel[size_t(run[i].hex)][size_t(run[i].axis)] = l;
     dual_.chordPlace[slotIndex(run[i])] = int32_t(i);
   }
   runs_[size_t(l)] = std::move(run);
@@ -1277,7 +1277,7 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
 void DualTracker::rewalkChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
                                DualChange& change) {
   settleChords();
-  int32_t* chordOf = dual_.chordOf[0].data();
+  int32_t* chordOf = dual_.chordLabel[0].data();
   auto walk = [&](Slot s, Chord& ch, std::vector<int32_t>& previous) {
     ch.id = kTemp;
     walkChord(cx, s, ch, chordOf, &previous);
@@ -1298,7 +1298,7 @@ void DualTracker::rewalkChords(const Complex& cx, const std::vector<HexId>& touc
     return l;
   };
   slotsTouched_ += relabel(
-      cx, touched, dual_.chordOf, dual_.chords, ids, walk, change.chordsCreated, change.chordsChanged,
+      cx, touched, dual_.chordLabel, dual_.chords, ids, walk, change.chordsCreated, change.chordsChanged,
       change.chordsRemoved, [](int) { return false; }, labelOf);
   const size_t n = dual_.chords.size();
   pieces_.resize(n);
@@ -1659,7 +1659,7 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
     pieces_[size_t(id)].clear();
   }
   for (const Touched& t : ts)
-    if (!t.live) dual_.chordOf[size_t(t.slot.hex)][size_t(t.slot.axis)] = -1;
+    if (!t.live) dual_.chordLabel[size_t(t.slot.hex)][size_t(t.slot.axis)] = -1;
   const size_t n = size_t(fresh);
   if (dual_.chords.size() < n) dual_.chords.resize(n);
   pieces_.resize(std::max(pieces_.size(), n));

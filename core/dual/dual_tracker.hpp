@@ -7,7 +7,7 @@
 // touch the boundary or non-orientable sheets re-flood the sheets they touch. Chords through the
 // touched hexes are rebuilt from their untouched stretches and walks through the touched hexes
 // that join them (TK03 §4.4: a collapse cuts two chords and re-joins them crosswise): a chord is
-// listed as pieces of labelled runs (see Dual::chordOf), so a merge or a cut writes only the
+// listed as pieces of labelled runs (see Dual::chordLabel), so a merge or a cut writes only the
 // touched slots (same ids and order as a re-walk). Surviving
 // sheets and chords keep their ids; new ones get fresh ids; when sheets merge or split, the
 // unexplored remainder keeps the id of its largest old sheet and explored pieces keep an old id
