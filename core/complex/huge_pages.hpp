@@ -34,19 +34,20 @@ void reserveHuge(std::vector<T>& v, size_t n) {
   adviseHugePages(v.data() + v.size(), (n - v.size()) * sizeof(T));
 }
 
-// v.assign(n, x) into storage reserved by reserveHuge.
+// Room for n entries and an eighth more (as Complex::reserve leaves for new hexes), so that arrays
+// kept per hex grow once every n/8 new hexes, not on the first step after a build.
+inline size_t withHeadroom(size_t n) { return n + n / 8 + 64; }
+
+// v.assign(n, x) for a per-hex or per-slot array: new storage (with headroom) is reserved by
+// reserveHuge before anything writes it.
 template <class T>
 void assignHuge(std::vector<T>& v, size_t n, const T& x) {
   if (v.capacity() < n) {
     std::vector<T>().swap(v);
-    reserveHuge(v, n);
+    reserveHuge(v, withHeadroom(n));
   }
   v.assign(n, x);
 }
-
-// Room for n entries and an eighth more (as Complex::reserve leaves for new hexes), so that arrays
-// kept per hex grow once every n/8 new hexes, not on the first step after a build.
-inline size_t withHeadroom(size_t n) { return n + n / 8 + 64; }
 
 // v.resize(n, x) for a per-hex or per-slot array that grows with the complex: new storage gets
 // headroom and huge-page advice before anything is copied into it.

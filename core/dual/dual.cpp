@@ -223,18 +223,25 @@ void SheetFlooder::measure(const Complex& cx, HexId h, int a, SheetStats& st) {
   }
 }
 
+namespace {
+// Marks every hex of the fan of boundary edge (h, e) as near the boundary (DualExtras::edgeMarks).
+void markFan(const Complex& cx, HexId h, int e, uint16_t* marks) {
+  marks[size_t(h)] |= kEdgeNearBoundary;
+  const auto fs = facesOfEdge(e);
+  for (int dir = 0; dir < 2; ++dir) {
+    EdgeRef cur{h, e};
+    int exit = fs[size_t(dir)];
+    while (cx.stepAroundEdge(cur, exit)) marks[size_t(cur.hex)] |= kEdgeNearBoundary;
+  }
+}
+
+}  // namespace
+
 // In a whole extraction (hexes in id order) the first incidence of an edge measured is its
 // smallest; a fan's hexes all reach the boundary.
 void SheetFlooder::markEdge(const Complex& cx, HexId h, int e, bool closed) {
   (*edgeMarks)[size_t(h)] |= uint16_t(1u << e);
-  if (closed) return;
-  (*edgeMarks)[size_t(h)] |= kEdgeNearBoundary;
-  auto fs = facesOfEdge(e);
-  for (int dir = 0; dir < 2; ++dir) {
-    EdgeRef cur{h, e};
-    int exit = fs[size_t(dir)];
-    while (cx.stepAroundEdge(cur, exit)) (*edgeMarks)[size_t(cur.hex)] |= kEdgeNearBoundary;
-  }
+  if (!closed) markFan(cx, h, e, edgeMarks->data());
 }
 
 int8_t slotShare(const Complex& cx, HexId h, int a, uint16_t marks) {
@@ -545,17 +552,6 @@ bool closesAsSmallest(const Complex& cx, HexId h, int e, const std::array<Gluing
   return smallestIncidence(cx, h, e, closed);
 }
 
-// Marks every hex of the fan of boundary edge (h, e) as near the boundary (DualExtras::edgeMarks).
-void markFan(const Complex& cx, HexId h, int e, uint16_t* marks) {
-  marks[size_t(h)] |= kEdgeNearBoundary;
-  const auto fs = facesOfEdge(e);
-  for (int dir = 0; dir < 2; ++dir) {
-    EdgeRef cur{h, e};
-    int exit = fs[size_t(dir)];
-    while (cx.stepAroundEdge(cur, exit)) marks[size_t(cur.hex)] |= kEdgeNearBoundary;
-  }
-}
-
 // Labels hex h's chord slots (read off their parents, smaller slots already labelled) and claims
 // a boundary start for each open chord first met here (`boundary`: h's boundary faces).
 void labelChords(HexId h, unsigned boundary, int32_t* chordOf, ChordPlan& plan) {
@@ -639,7 +635,7 @@ template <bool kExtras>
         bool closed;
         const unsigned faces = kEdgeFaceMask[size_t(e)];
         if (smaller & faces) {
-          if (!(smaller & faces & ~boundary & selfGlued(glued, h)) || !smallestIncidence(cx, h, e, closed)) continue;
+          if (!(smaller & faces & selfGlued(glued, h)) || !smallestIncidence(cx, h, e, closed)) continue;
         } else if (!(boundary & faces) ? !closesAsSmallest(cx, h, e, glued, closed) : !smallestIncidence(cx, h, e, closed)) {
           continue;
         }
@@ -761,14 +757,10 @@ Dual extractDual(const Complex& cx, DualExtras* extras) {
   const size_t n = size_t(cx.hexCapacity());
   Dual d;
   if (extras) {
-    reserveHuge(extras->slotSigns, withHeadroom(3 * n));
-    reserveHuge(extras->edgeMarks, withHeadroom(n));
-    reserveHuge(extras->slotShares, withHeadroom(3 * n));
-    reserveHuge(extras->chordPlaces, withHeadroom(3 * n));
-    extras->slotSigns.assign(3 * n, 0);
-    extras->edgeMarks.assign(n, 0);
-    extras->slotShares.assign(3 * n, 0);
-    extras->chordPlaces.assign(3 * n, 0);
+    assignHuge(extras->slotSigns, 3 * n, int8_t(0));
+    assignHuge(extras->edgeMarks, n, uint16_t(0));
+    assignHuge(extras->slotShares, 3 * n, int8_t(0));
+    assignHuge(extras->chordPlaces, 3 * n, int32_t(0));
   }
   uniteSlots(cx, d);
   ChordPlan plan;
@@ -804,7 +796,7 @@ void validateDual(const Complex& cx, const Dual& d) {
     for (size_t k = 0; k < ch.slots.size(); ++k) {
       Slot s = ch.slots[k];
       mark(seenChord, s, "chord", ch.id);
-      if (d.chordAt(s.hex, s.axis) != ch.id) fail(slotName(s) + " is in chord " + std::to_string(ch.id) + " but chordOf says otherwise");
+      if (d.chordAt(s.hex, s.axis) != ch.id) fail(slotName(s) + " is in chord " + std::to_string(ch.id) + " but its label names another");
       bool last = k + 1 == ch.slots.size();
       if (last && !ch.closed) continue;
       Slot next = ch.slots[last ? 0 : k + 1];
