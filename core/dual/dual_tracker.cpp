@@ -1268,8 +1268,12 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
     slotsTouched_ += own.size();
     if (!unchanged(id, own)) ids.push_back(id);
   }
+  const size_t before = slotsTouched_;
   chordsRewalked_ = !localChords_ || !rejoinChords(cx, touched, ids, change);
-  if (chordsRewalked_) rewalkChords(cx, touched, ids, change);
+  if (chordsRewalked_) {
+    slotsTouched_ = before;  // a rejoin that gave up counts nothing: the re-walk is the work done
+    rewalkChords(cx, touched, ids, change);
+  }
 }
 
 // Re-walks the changed chords whole from the touched slots (relabel): the reference, and the way
