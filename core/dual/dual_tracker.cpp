@@ -1090,6 +1090,20 @@ int32_t DualTracker::placeInChord(int32_t id, Slot s) const {
   return -1;
 }
 
+// The chords lose their pieces (their labels' places are cut from them).
+void DualTracker::dropPieces(const std::vector<int32_t>& ids) {
+  for (int32_t id : ids) {
+    for (const Piece& p : pieces_[size_t(id)]) cutLabel(p.label, p.lo, p.hi, id, false);
+    pieces_[size_t(id)].clear();
+  }
+}
+
+// The slots of pieces, in order.
+void DualTracker::appendSlots(const std::vector<Piece>& pieces, std::vector<Slot>& out) const {
+  for (const Piece& p : pieces)
+    for (int32_t k = 0; k < p.hi - p.lo; ++k) out.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
+}
+
 Slot DualTracker::chordSlotAt(int32_t id, int32_t q) const {
   for (const Piece& p : pieces_[size_t(id)]) {
     const int32_t n = p.hi - p.lo;
@@ -1183,9 +1197,7 @@ void DualTracker::setChordPieces(int32_t id, std::vector<Piece> pieces) {
   constexpr size_t kMaxPieces = 16;
   if (joined.size() > kMaxPieces) {
     std::vector<Slot> run;
-    for (const Piece& p : joined)
-      for (int32_t k = 0; k < p.hi - p.lo; ++k)
-        run.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
+    appendSlots(joined, run);
     for (const Piece& p : joined) dropped_.push_back(p.label);  // they lose these places
     slotsTouched_ += run.size();
     const int32_t n = int32_t(run.size());
@@ -1216,9 +1228,7 @@ void DualTracker::settleChords() const {
     ch.slots.clear();
     if (!ch.alive) continue;
     ch.slots.reserve(size_t(chordLength(id)));
-    for (const Piece& p : pieces_[size_t(id)])
-      for (int32_t k = 0; k < p.hi - p.lo; ++k)
-        ch.slots.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
+    appendSlots(pieces_[size_t(id)], ch.slots);
     if (chordSelf_[size_t(id)] == 2) chordSelf_[size_t(id)] = chordSelfIntersects(id);
     ch.selfIntersecting = chordSelf_[size_t(id)] != 0;
   }
@@ -1291,10 +1301,7 @@ void DualTracker::rewalkChords(const Complex& cx, const std::vector<HexId>& touc
       ch.selfIntersecting = ch.selfIntersecting || of[(t.axis + 1) % 3] == kTemp || of[(t.axis + 2) % 3] == kTemp;
     }
   };
-  for (int32_t id : ids) {
-    for (const Piece& p : pieces_[size_t(id)]) cutLabel(p.label, p.lo, p.hi, id, false);
-    pieces_[size_t(id)].clear();
-  }
+  dropPieces(ids);
   std::vector<std::pair<int32_t, int32_t>> made;  // (chord id, label): the runs are set after the walks
   auto labelOf = [&](int id) {
     const int32_t l = newChordLabel({});
@@ -1658,10 +1665,7 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
     sliceChord(st.chord, st.a, std::min(st.b, len - 1), stretchPieces[r]);
     if (st.b >= len) sliceChord(st.chord, 0, st.b - len, stretchPieces[r]);
   }
-  for (int32_t id : ids) {
-    for (const Piece& p : pieces_[size_t(id)]) cutLabel(p.label, p.lo, p.hi, id, false);
-    pieces_[size_t(id)].clear();
-  }
+  dropPieces(ids);
   for (const Touched& t : ts)
     if (!t.live) dual_.chordLabel[size_t(t.slot.hex)][size_t(t.slot.axis)] = -1;
   const size_t n = size_t(fresh);

@@ -79,6 +79,8 @@ class DualTracker {
   };
   int32_t chordLength(int32_t id) const;
   int32_t placeInChord(int32_t id, Slot s) const;  // -1 when s is not listed in chord id
+  void appendSlots(const std::vector<Piece>& pieces, std::vector<Slot>& out) const;
+  void dropPieces(const std::vector<int32_t>& ids);
   Slot chordSlotAt(int32_t id, int32_t p) const;
   void sliceChord(int32_t id, int32_t a, int32_t b, std::vector<Piece>& out) const;  // places a..b, b < length
   int32_t newChordLabel(std::vector<Slot> run);
