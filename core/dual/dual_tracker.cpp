@@ -1,6 +1,8 @@
 #include "dual/dual_tracker.hpp"
 
 #include "complex/huge_pages.hpp"
+#include "dual/tracker/relabel.hpp"
+#include "dual/tracker/slots.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -8,6 +10,7 @@
 #include <numeric>
 
 namespace hexdual {
+using namespace tracker;
 
 std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
   std::vector<HexId> out;
@@ -40,19 +43,6 @@ namespace {
 constexpr uint16_t kNearBoundary = kEdgeNearBoundary;
 constexpr uint16_t kWalkedFan = uint16_t(1u << 15);  // in walked_: one of the hex's edges walked is a fan
 
-// The sheet ids on the slots of these hexes, ascending, once each.
-std::vector<int32_t> sheetIdsThrough(const Dual& d, const std::vector<HexId>& hexes) {
-  std::vector<int32_t> ids;
-  for (HexId h : hexes)
-    for (int a = 0; a < 3; ++a)
-      if (d.sheetAt(h, a) >= 0) ids.push_back(d.sheetAt(h, a));
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  return ids;
-}
-
-size_t slotIndex(Slot s) { return 3 * size_t(s.hex) + size_t(s.axis); }
-
 // The incidences of the edge at e, round its cycle or along its fan; false for a fan.
 bool edgeIncidences(const Complex& cx, EdgeRef e, std::vector<EdgeRef>& out) {
   out.assign(1, e);
@@ -78,16 +68,6 @@ bool nearBoundary(const Complex& cx, HexId h) {
     }
   }
   return false;
-}
-
-// The slot across face f of slot s's hex (f parallel to s's axis), and the orientation flip.
-bool sheetNeighbour(const Complex& cx, Slot s, int f, Slot& n, int& flip) {
-  Gluing g = cx.gluing(s.hex, f);
-  if (g.boundary()) return false;
-  const tables::Crossing& c = tables::kCrossings[size_t(tables::crossingIndex(f, s.axis, g.face, g.orient))];
-  n = {g.hex, c.axis};
-  flip = c.sign;
-  return true;
 }
 
 }  // namespace
@@ -938,86 +918,6 @@ DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bo
   updateChords(cx, touched, change);
   return change;
 }
-
-namespace {
-
-// Old labels are parked in the per-slot array as -2 - id, so a walk that overwrites them reports
-// which old sheets or chords each new one holds (no map of slots).
-int32_t parked(int32_t id) { return -2 - id; }
-
-// Picks the id for a recomputed component: the smallest old id it holds that no earlier
-// component took, else a fresh id.
-int chooseId(const std::vector<int32_t>& previous, std::vector<int>& taken, size_t freshId) {
-  int best = -1;
-  for (int32_t p : previous) {
-    int c = p <= -2 ? parked(p) : -1;
-    if (c >= 0 && (best < 0 || c < best) && std::find(taken.begin(), taken.end(), c) == taken.end()) best = c;
-  }
-  if (best < 0) return int(freshId);
-  taken.push_back(best);
-  return best;
-}
-
-// Re-labels the sheets or chords (`list`, per-slot labels `of`) through the touched hexes: every
-// old one touched (`old`, ascending) is cleared and its slots re-walked from seeds (with `walk`,
-// labelling kTemp), and each component found keeps the smallest old id it holds; `labelOf(id)`
-// gives the label its slots get. Sheets and chords alike.
-template <class Entity, class Walk, class Unchanged, class LabelOf>
-size_t relabel(const Complex& cx, const std::vector<HexId>& touched, std::vector<std::array<int32_t, 3>>& of,
-               std::vector<Entity>& list, std::vector<int32_t> old, Walk walk, std::vector<int>& created,
-               std::vector<int>& changed, std::vector<int>& removed, Unchanged unchanged, LabelOf labelOf) {
-  size_t visited = 0;
-  size_t kept = 0;
-  for (int32_t id : old)
-    if (!unchanged(id)) old[kept++] = id;
-  old.resize(kept);
-  // Every new component holds a touched slot (its other slots kept their gluings), so the live
-  // touched slots are enough seeds.
-  for (int id : old) {
-    for (Slot s : list[size_t(id)].slots) of[size_t(s.hex)][size_t(s.axis)] = parked(id);
-    visited += list[size_t(id)].slots.size();
-    list[size_t(id)].alive = false;
-    list[size_t(id)].slots.clear();
-  }
-  std::vector<Slot> seeds;
-  for (HexId h : touched) {
-    if (!cx.isHex(h)) {
-      of[size_t(h)] = {-1, -1, -1};
-      continue;
-    }
-    for (int a = 0; a < 3; ++a) seeds.push_back({h, a});
-  }
-  std::sort(seeds.begin(), seeds.end());
-  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-  visited += seeds.size();
-  std::vector<int> taken;
-  std::vector<int32_t> previous;
-  for (Slot s : seeds) {
-    if (!cx.isHex(s.hex) || of[size_t(s.hex)][size_t(s.axis)] >= 0) continue;
-    Entity e;
-    previous.clear();
-    walk(s, e, previous);
-    visited += e.slots.size();
-    int id = chooseId(previous, taken, list.size());
-    e.id = id;
-    const int32_t label = labelOf(id);
-    for (Slot t : e.slots) of[size_t(t.hex)][size_t(t.axis)] = label;
-    if (id == int(list.size())) {
-      list.push_back(std::move(e));
-      created.push_back(id);
-    } else {
-      list[size_t(id)] = std::move(e);
-      changed.push_back(id);
-    }
-  }
-  for (int id : old)
-    if (!list[size_t(id)].alive) removed.push_back(id);
-  return visited;
-}
-
-constexpr int32_t kTemp = INT32_MAX - 1;
-
-}  // namespace
 
 void DualTracker::updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
   int32_t* sheetOf = dual_.sheetLabel[0].data();

@@ -1,0 +1,35 @@
+// Slots and their neighbours, shared by the tracker's units (tracker/*.cpp): a slot's index in the
+// per-slot arrays, the sheet slot across a face, the sheets through a set of hexes. Owns no state.
+#pragma once
+#include <algorithm>
+#include <vector>
+
+#include "complex/complex.hpp"
+#include "dual/dual.hpp"
+
+namespace hexdual::tracker {
+
+// The sheet ids on the slots of these hexes, ascending, once each.
+inline std::vector<int32_t> sheetIdsThrough(const Dual& d, const std::vector<HexId>& hexes) {
+  std::vector<int32_t> ids;
+  for (HexId h : hexes)
+    for (int a = 0; a < 3; ++a)
+      if (d.sheetAt(h, a) >= 0) ids.push_back(d.sheetAt(h, a));
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+inline size_t slotIndex(Slot s) { return 3 * size_t(s.hex) + size_t(s.axis); }
+
+// The slot across face f of slot s's hex (f parallel to s's axis), and the orientation flip.
+inline bool sheetNeighbour(const Complex& cx, Slot s, int f, Slot& n, int& flip) {
+  Gluing g = cx.gluing(s.hex, f);
+  if (g.boundary()) return false;
+  const tables::Crossing& c = tables::kCrossings[size_t(tables::crossingIndex(f, s.axis, g.face, g.orient))];
+  n = {g.hex, c.axis};
+  flip = c.sign;
+  return true;
+}
+
+}  // namespace hexdual::tracker
