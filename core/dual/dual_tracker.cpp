@@ -38,40 +38,6 @@ std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
   return out;
 }
 
-namespace {
-
-constexpr uint16_t kNearBoundary = kEdgeNearBoundary;
-constexpr uint16_t kWalkedFan = uint16_t(1u << 15);  // in walked_: one of the hex's edges walked is a fan
-
-// The incidences of the edge at e, round its cycle or along its fan; false for a fan.
-bool edgeIncidences(const Complex& cx, EdgeRef e, std::vector<EdgeRef>& out) {
-  out.assign(1, e);
-  auto fs = tables::facesOfEdge(e.edge);
-  for (int dir = 0; dir < 2; ++dir) {
-    EdgeRef cur = e;
-    int exit = fs[size_t(dir)];
-    while (cx.stepAroundEdge(cur, exit)) {
-      if (cur == e) return true;
-      out.push_back(cur);
-    }
-  }
-  return false;
-}
-
-bool nearBoundary(const Complex& cx, HexId h) {
-  for (int e = 0; e < 12; ++e) {
-    EdgeRef cur{h, e};
-    int exit = tables::facesOfEdge(e)[0];
-    for (;;) {
-      if (!cx.stepAroundEdge(cur, exit)) return true;
-      if (cur.hex == h && cur.edge == e) break;
-    }
-  }
-  return false;
-}
-
-}  // namespace
-
 DualTracker::DualTracker(const Complex& cx) {
   DualExtras extras;
   dual_ = extractDual(cx, &extras);
@@ -254,72 +220,6 @@ void DualTracker::mergeSheet(int32_t x, int32_t keep, bool flip) {
   mergedLabels_ += labels_[size_t(x)].size();
   labels_[size_t(x)].clear();
   dual_.sheets[size_t(keep)].slots.absorb(std::move(dual_.sheets[size_t(x)].slots));
-}
-
-void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& touched, std::vector<ShareChange>* changes) {
-  auto onChange = [&](Slot t, int before, int after) {
-    if (changes) changes->push_back({t, before, after});
-  };
-  bool nearBefore = false;
-  std::vector<Slot> dirty;
-  std::vector<HexId> met;
-  std::vector<EdgeRef> inc;
-  for (HexId h : touched) {
-    nearBefore = nearBefore || (edgeMarks_[size_t(h)] & kNearBoundary);
-    if (cx.isHex(h)) {
-      for (int a = 0; a < 3; ++a) dirty.push_back({h, a});
-      continue;
-    }
-    for (int a = 0; a < 3; ++a) {
-      int8_t& old = share_[3 * size_t(h) + size_t(a)];
-      if (old) onChange(Slot{h, a}, int(old), 0);
-      old = 0;
-    }
-    edgeMarks_[size_t(h)] = 0;
-  }
-  bool fan = false;
-  for (HexId h : touched) {
-    if (!cx.isHex(h)) continue;
-    for (int e = 0; e < 12; ++e) {
-      if ((walked_[size_t(h)] >> e) & 1u) continue;
-      const bool closed = edgeIncidences(cx, {h, e}, inc);
-      fan = fan || !closed;
-      const EdgeRef least = *std::min_element(inc.begin(), inc.end());
-      for (EdgeRef r : inc) {
-        if (!walked_[size_t(r.hex)]) met.push_back(r.hex);
-        walked_[size_t(r.hex)] |= uint16_t((1u << r.edge) | (closed ? 0u : kWalkedFan));
-        const uint16_t bit = uint16_t(1u << r.edge);
-        if (((edgeMarks_[size_t(r.hex)] & bit) != 0) != (r == least)) {
-          edgeMarks_[size_t(r.hex)] ^= bit;
-          dirty.push_back({r.hex, tables::axisOfEdge(r.edge)});
-        }
-      }
-    }
-  }
-  // Only an edge through a touched hex can have reached or left the boundary: a hex met is near
-  // it when one of those is a fan now, or (when it was near before) one of its other edges is.
-  if (fan || nearBefore)
-    for (HexId m : met) {
-      const bool near = (walked_[size_t(m)] & kWalkedFan) || ((edgeMarks_[size_t(m)] & kNearBoundary) && nearBoundary(cx, m));
-      edgeMarks_[size_t(m)] = uint16_t((edgeMarks_[size_t(m)] & ~kNearBoundary) | (near ? kNearBoundary : 0));
-    }
-  for (HexId m : met) walked_[size_t(m)] = 0;
-  for (Slot s : dirty) {
-    const int8_t now = slotShare(cx, s.hex, s.axis, edgeMarks_[size_t(s.hex)]);
-    int8_t& old = share_[slotIndex(s)];
-    if (now != old) {
-      onChange(s, int(old), int(now));
-      old = now;
-    }
-  }
-}
-
-bool DualTracker::touchesBoundary(const Complex& cx, const std::vector<HexId>& touched) const {
-  for (HexId h : touched)
-    if (edgeMarks_[size_t(h)] & kNearBoundary) return true;
-  for (HexId h : touched)
-    if (cx.isHex(h) && nearBoundary(cx, h)) return true;
-  return false;
 }
 
 // Orients slots without an orientation from oriented neighbours on the same sheet (new slots
