@@ -1,0 +1,183 @@
+// Chords as pieces of labelled runs (Dual::chordLabel, chordPlace, labelChord, labelCuts): a chord
+// label is written once on a run of slots with their places, and a chord lists pieces [lo, hi) of
+// label runs, forward or reversed, so cutting or joining chords writes only the touched slots.
+// Owns: runs_, pieces_, freeChordLabels_, dropped_, chordSelf_, and the chord lists readers have
+// not settled yet (unsettled_, unsettledMark_).
+// Keeps: every piece of a live chord has a matching cut in its label's labelCuts, and every cut a
+// piece; labelChord is a label's one chord, or -1 when its cuts lie in several or none; every
+// place a cut lists holds a slot carrying that label at that place (chordPlace), whose chordAt is
+// the cut's chord; a chord has at most 16 pieces; a free label has no cuts; a chord whose slot
+// list is not settled is listed in unsettled_ once.
+#include "dual/dual_tracker.hpp"
+
+#include <algorithm>
+
+#include "dual/tracker/slots.hpp"
+
+namespace hexdual {
+using namespace tracker;
+
+int32_t DualTracker::chordLength(int32_t id) const {
+  int32_t n = 0;
+  for (const Piece& p : pieces_[size_t(id)]) n += p.hi - p.lo;
+  return n;
+}
+
+int32_t DualTracker::placeInChord(int32_t id, Slot s) const {
+  const int32_t l = dual_.chordLabel[size_t(s.hex)][size_t(s.axis)];
+  if (l < 0) return -1;
+  const int32_t i = dual_.chordPlace[slotIndex(s)];
+  int32_t before = 0;
+  for (const Piece& p : pieces_[size_t(id)]) {
+    if (p.label == l && i >= p.lo && i < p.hi) return before + (p.reversed ? p.hi - 1 - i : i - p.lo);
+    before += p.hi - p.lo;
+  }
+  return -1;
+}
+
+// The chords lose their pieces (their labels' places are cut from them).
+void DualTracker::dropPieces(const std::vector<int32_t>& ids) {
+  for (int32_t id : ids) {
+    for (const Piece& p : pieces_[size_t(id)]) cutLabel(p.label, p.lo, p.hi, id, false);
+    pieces_[size_t(id)].clear();
+  }
+}
+
+// The slots of pieces, in order.
+void DualTracker::appendSlots(const std::vector<Piece>& pieces, std::vector<Slot>& out) const {
+  for (const Piece& p : pieces)
+    for (int32_t k = 0; k < p.hi - p.lo; ++k) out.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
+}
+
+Slot DualTracker::chordSlotAt(int32_t id, int32_t q) const {
+  for (const Piece& p : pieces_[size_t(id)]) {
+    const int32_t n = p.hi - p.lo;
+    if (q < n) return runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - q : p.lo + q)];
+    q -= n;
+  }
+  return {};
+}
+
+void DualTracker::sliceChord(int32_t id, int32_t a, int32_t b, std::vector<Piece>& out) const {
+  int32_t before = 0;
+  for (const Piece& p : pieces_[size_t(id)]) {
+    const int32_t n = p.hi - p.lo, from = std::max(a, before), to = std::min(b + 1, before + n);
+    if (from < to) {
+      const int32_t x = from - before, y = to - before;  // listed offsets [x, y) in the piece
+      out.push_back(p.reversed ? Piece{p.label, p.hi - y, p.hi - x, true} : Piece{p.label, p.lo + x, p.lo + y, false});
+    }
+    before += n;
+  }
+}
+
+// A label for a run of slots, written on them with their places.
+int32_t DualTracker::newChordLabel(std::vector<Slot> run) {
+  int32_t l;
+  if (!freeChordLabels_.empty()) {
+    l = freeChordLabels_.back();
+    freeChordLabels_.pop_back();
+  } else {
+    l = int32_t(runs_.size());
+    runs_.emplace_back();
+    dual_.labelCuts.emplace_back();
+    dual_.labelChord.push_back(-1);
+  }
+  for (size_t i = 0; i < run.size(); ++i) {
+    dual_.chordLabel[size_t(run[i].hex)][size_t(run[i].axis)] = l;
+    dual_.chordPlace[slotIndex(run[i])] = int32_t(i);
+  }
+  runs_[size_t(l)] = std::move(run);
+  dual_.labelCuts[size_t(l)].clear();
+  dual_.labelChord[size_t(l)] = -1;
+  return l;
+}
+
+// Adds or removes a range of a label's places listed in a chord; the label's chord (or -1 when its
+// places lie in several) follows. Labels left with no range are released by releaseLabels().
+void DualTracker::cutLabel(int32_t label, int32_t lo, int32_t hi, int32_t chord, bool add) {
+  auto& cuts = dual_.labelCuts[size_t(label)];
+  if (add) {
+    cuts.push_back({lo, hi, chord});
+  } else {
+    for (size_t i = 0; i < cuts.size(); ++i)
+      if (cuts[i].lo == lo && cuts[i].hi == hi && cuts[i].chord == chord) {
+        cuts.erase(cuts.begin() + std::ptrdiff_t(i));
+        break;
+      }
+    dropped_.push_back(label);
+  }
+  int32_t c = cuts.empty() ? -1 : cuts[0].chord;
+  for (const Dual::ChordCut& k : cuts) c = k.chord == c ? c : -1;
+  dual_.labelChord[size_t(label)] = c;
+}
+
+// Labels that lost places in this update and lie in no chord any more: no slot carries them.
+void DualTracker::releaseLabels() {
+  std::sort(dropped_.begin(), dropped_.end());
+  dropped_.erase(std::unique(dropped_.begin(), dropped_.end()), dropped_.end());
+  for (int32_t l : dropped_)
+    if (dual_.labelCuts[size_t(l)].empty()) {
+      runs_[size_t(l)] = std::vector<Slot>();
+      dual_.labelChord[size_t(l)] = -1;
+      freeChordLabels_.push_back(l);
+    }
+  dropped_.clear();
+}
+
+// Lists chord id as these pieces (joined where they continue one another). A chord cut and joined
+// so often that it has many pieces is given one run again (its slots re-labelled: a rare, whole pass).
+void DualTracker::setChordPieces(int32_t id, std::vector<Piece> pieces) {
+  std::vector<Piece> joined;
+  for (const Piece& p : pieces) {
+    if (!joined.empty()) {
+      Piece& q = joined.back();
+      if (q.label == p.label && q.reversed == p.reversed && (p.reversed ? p.hi == q.lo : q.hi == p.lo)) {
+        q.lo = std::min(q.lo, p.lo);
+        q.hi = std::max(q.hi, p.hi);
+        continue;
+      }
+    }
+    joined.push_back(p);
+  }
+  constexpr size_t kMaxPieces = 16;
+  if (joined.size() > kMaxPieces) {
+    std::vector<Slot> run;
+    appendSlots(joined, run);
+    for (const Piece& p : joined) dropped_.push_back(p.label);  // they lose these places
+    slotsTouched_ += run.size();
+    const int32_t n = int32_t(run.size());
+    joined.assign(1, Piece{newChordLabel(std::move(run)), 0, n, false});
+  }
+  for (const Piece& p : joined) cutLabel(p.label, p.lo, p.hi, id, true);
+  pieces_[size_t(id)] = std::move(joined);
+  if (!unsettledMark_[size_t(id)]) {
+    unsettledMark_[size_t(id)] = 1;
+    unsettled_.push_back(id);
+  }
+}
+
+bool DualTracker::chordSelfIntersects(int32_t id) const {
+  for (const Piece& p : pieces_[size_t(id)])
+    for (int32_t i = p.lo; i < p.hi; ++i) {
+      const Slot t = runs_[size_t(p.label)][size_t(i)];
+      if (dual_.chordAt(t.hex, (t.axis + 1) % 3) == id || dual_.chordAt(t.hex, (t.axis + 2) % 3) == id) return true;
+    }
+  return false;
+}
+
+// Chord lists (and self-intersection where the update left it open) from their pieces, for readers.
+void DualTracker::settleChords() const {
+  for (int32_t id : unsettled_) {
+    unsettledMark_[size_t(id)] = 0;
+    Chord& ch = dual_.chords[size_t(id)];
+    ch.slots.clear();
+    if (!ch.alive) continue;
+    ch.slots.reserve(size_t(chordLength(id)));
+    appendSlots(pieces_[size_t(id)], ch.slots);
+    if (chordSelf_[size_t(id)] == 2) chordSelf_[size_t(id)] = chordSelfIntersects(id);
+    ch.selfIntersecting = chordSelf_[size_t(id)] != 0;
+  }
+  unsettled_.clear();
+}
+
+}  // namespace hexdual
