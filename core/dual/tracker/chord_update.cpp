@@ -1,0 +1,110 @@
+// The chord update as a whole: chords through the touched hexes whose touched slots keep their
+// neighbours along the chord are unchanged; the others are rebuilt locally (chord_rejoin.cpp) or,
+// when the rejoin is not sure (or setLocalChords(false)), re-walked whole from the touched slots
+// (relabel): the reference the local update must equal (same ids, same slot order).
+// Owns chordsRewalked_; the re-walk gives every chord it walks one label run.
+#include "dual/dual_tracker.hpp"
+
+#include <algorithm>
+
+#include "dual/tracker/relabel.hpp"
+#include "dual/tracker/slots.hpp"
+
+namespace hexdual {
+using namespace tracker;
+
+void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
+  // A chord whose touched slots still have the same neighbours along it is unchanged.
+  auto unchanged = [&](int32_t id, const std::vector<Slot>& own) {
+    const int32_t len = chordLength(id);
+    const bool closed = dual_.chords[size_t(id)].closed;
+    for (Slot s : own) {
+      const int32_t p = placeInChord(id, s);
+      if (!cx.isHex(s.hex) || p < 0) return false;
+      auto along = [&](int face, Slot& n) {
+        Gluing g = cx.gluing(s.hex, face);
+        if (g.boundary()) return false;
+        n = {g.hex, tables::axisOfFace(g.face)};
+        return true;
+      };
+      Slot lo, hi, prev, next;
+      const bool hasLo = along(2 * s.axis, lo), hasHi = along(2 * s.axis + 1, hi);
+      const bool hasPrev = p > 0 || closed, hasNext = p + 1 < len || closed;
+      if (hasPrev) prev = chordSlotAt(id, p > 0 ? p - 1 : len - 1);
+      if (hasNext) next = chordSlotAt(id, p + 1 < len ? p + 1 : 0);
+      auto same = [](bool x, Slot a, bool y, Slot b) { return x == y && (!x || a == b); };
+      if (!(same(hasLo, lo, hasPrev, prev) && same(hasHi, hi, hasNext, next)) &&
+          !(same(hasLo, lo, hasNext, next) && same(hasHi, hi, hasPrev, prev)))
+        return false;
+    }
+    return true;
+  };
+  // The touched slots grouped by chord, so each chord reads only its own.
+  std::vector<std::pair<int32_t, Slot>> through;
+  for (HexId h : touched)
+    for (int a = 0; a < 3; ++a) {
+      const int32_t c = dual_.chordAt(h, a);
+      if (c >= 0) through.push_back({c, Slot{h, a}});
+    }
+  std::sort(through.begin(), through.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<int32_t> ids;
+  std::vector<Slot> own;
+  for (size_t i = 0, j = 0; i < through.size(); i = j) {
+    const int32_t id = through[i].first;
+    own.clear();
+    for (j = i; j < through.size() && through[j].first == id; ++j) own.push_back(through[j].second);
+    slotsTouched_ += own.size();
+    if (!unchanged(id, own)) ids.push_back(id);
+  }
+  const size_t before = slotsTouched_;
+  chordsRewalked_ = !localChords_ || !rejoinChords(cx, touched, ids, change);
+  if (chordsRewalked_) {
+    slotsTouched_ = before;  // a rejoin that gave up counts nothing: the re-walk is the work done
+    rewalkChords(cx, touched, ids, change);
+  }
+}
+
+// Re-walks the changed chords whole from the touched slots (relabel): the reference, and the way
+// out when the local rejoin is not sure.
+void DualTracker::rewalkChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
+                               DualChange& change) {
+  settleChords();
+  int32_t* chordOf = dual_.chordLabel[0].data();
+  auto walk = [&](Slot s, Chord& ch, std::vector<int32_t>& previous) {
+    ch.id = kTemp;
+    walkChord(cx, s, ch, chordOf, &previous);
+    // A hex met twice has another slot labelled kTemp (read from the lines the walk just wrote).
+    for (Slot t : ch.slots) {
+      const int32_t* of = chordOf + 3 * size_t(t.hex);
+      ch.selfIntersecting = ch.selfIntersecting || of[(t.axis + 1) % 3] == kTemp || of[(t.axis + 2) % 3] == kTemp;
+    }
+  };
+  dropPieces(ids);
+  std::vector<std::pair<int32_t, int32_t>> made;  // (chord id, label): the runs are set after the walks
+  auto labelOf = [&](int id) {
+    const int32_t l = newChordLabel({});
+    made.push_back({int32_t(id), l});
+    return l;
+  };
+  slotsTouched_ += relabel(
+      cx, touched, dual_.chordLabel, dual_.chords, ids, walk, change.chordsCreated, change.chordsChanged,
+      change.chordsRemoved, [](int) { return false; }, labelOf);
+  const size_t n = dual_.chords.size();
+  pieces_.resize(n);
+  chordSelf_.resize(n, 0);
+  unsettledMark_.resize(n, 0);
+  for (auto [id, l] : made) {
+    const Chord& ch = dual_.chords[size_t(id)];
+    runs_[size_t(l)] = ch.slots;
+    for (size_t i = 0; i < ch.slots.size(); ++i) dual_.chordPlace[slotIndex(ch.slots[i])] = int32_t(i);
+    const int32_t len = int32_t(ch.slots.size());
+    dual_.labelCuts[size_t(l)].assign(1, Dual::ChordCut{0, len, id});
+    dual_.labelChord[size_t(l)] = id;
+    pieces_[size_t(id)].assign(1, Piece{l, 0, len, false});
+    chordSelf_[size_t(id)] = ch.selfIntersecting;
+  }
+  // Labels of the old pieces are released after the walks, which parked every slot that carried them.
+  releaseLabels();
+}
+
+}  // namespace hexdual
