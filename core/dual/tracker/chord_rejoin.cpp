@@ -1,0 +1,416 @@
+// The local chord update (TK03 §3.2: an edit changes chords only through the edited hexes): the
+// changed chords' untouched stretches keep their labels and places, walks through the touched
+// hexes join the stretches' ends (a collapse joins two chords crosswise, TK03 §4.4), and touched
+// slots no walk meets form chords of their own. Each new chord gets the id and slot order a
+// re-walk from its smallest touched slot gives; only the touched slots are written.
+// Owns nothing between updates; refuses, writing nothing, when the state is not one it can follow.
+#include "dual/dual_tracker.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "dual/tracker/slots.hpp"
+
+namespace hexdual {
+using namespace tracker;
+
+// The changed chords rebuilt from what the edit left of them (TK03 §3.2: an edit changes chords
+// only through the edited hexes): their untouched stretches keep their labels and places, walks
+// through the touched hexes join the stretches' ends (a collapse joins two chords crosswise, TK03
+// §4.4), and touched slots no walk meets form chords of their own. Each new chord gets the id and
+// the slot order a re-walk from its smallest touched slot gives (relabel); only the touched slots
+// are written. False, writing nothing, when the state is not one it can follow.
+bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
+                               DualChange& change) {
+  auto inIds = [&](int32_t c) { return c >= 0 && std::binary_search(ids.begin(), ids.end(), c); };
+  // The touched slots, by slot (touched is sorted); a slot's old chord, run or own chord.
+  struct Touched {
+    Slot slot;
+    int32_t old;
+    bool live;
+    int32_t run = -1, entry = -1;  // the walk that met it, and the face it entered through
+    int32_t comp = -1;             // the new chord it lies in
+  };
+  std::vector<Touched> ts;
+  ts.reserve(3 * touched.size());
+  for (HexId h : touched)
+    for (int a = 0; a < 3; ++a) ts.push_back({{h, a}, dual_.chordAt(h, a), cx.isHex(h)});
+  auto indexOf = [&](Slot s) -> int32_t {
+    if (!std::binary_search(touched.begin(), touched.end(), s.hex)) return -1;
+    return int32_t(3 * size_t(std::lower_bound(touched.begin(), touched.end(), s.hex) - touched.begin()) +
+                   size_t(s.axis));
+  };
+  auto faceTo = [&](Slot s, Slot t) {  // the one face of s's hex along its axis glued to slot t, else -1
+    int found = -1, count = 0;
+    for (int f = 2 * s.axis; f < 2 * s.axis + 2; ++f) {
+      Gluing g = cx.gluing(s.hex, f);
+      if (!g.boundary() && Slot{g.hex, tables::axisOfFace(g.face)} == t) {
+        found = f;
+        ++count;
+      }
+    }
+    return count == 1 ? found : -1;
+  };
+  // ---- stretches: the untouched places of each old chord between touched ones ----
+  struct Stretch {
+    int32_t chord, a, b;  // places a..b (b >= length wraps round a closed chord)
+    Slot end[2];
+    int face[2] = {-1, -1};      // the face each end leaves through, -1 at the chord's boundary end
+    int32_t link[2] = {-1, -1};  // the walk from or to each end
+  };
+  std::vector<Stretch> stretches;
+  std::vector<int32_t> lengths(ids.size()), liveOld(ids.size(), 0);
+  std::vector<uint8_t> contiguous(ids.size(), 0);
+  for (size_t k = 0; k < ids.size(); ++k) {
+    const int32_t id = ids[k], len = chordLength(id);
+    const bool closed = dual_.chords[size_t(id)].closed;
+    lengths[k] = len;
+    std::vector<int32_t> at;
+    for (const Touched& t : ts)
+      if (t.old == id) {
+        const int32_t p = placeInChord(id, t.slot);
+        if (p < 0) return false;
+        at.push_back(p);
+        liveOld[k] += t.live;
+      }
+    if (at.empty()) return false;
+    std::sort(at.begin(), at.end());
+    contiguous[k] =
+        !closed && at.front() > 0 && at.back() + 1 < len && at.back() - at.front() + 1 == int32_t(at.size());
+    auto add = [&](int32_t a, int32_t b) {
+      Stretch st{id, a, b, {chordSlotAt(id, a % len), chordSlotAt(id, b % len)}};
+      for (int side = 0; side < 2; ++side) {
+        if (!closed && (side == 0 ? a == 0 : b == len - 1)) continue;  // the chord's boundary end
+        const Slot n = chordSlotAt(id, side == 0 ? (a - 1 + len) % len : (b + 1) % len);
+        st.face[side] = faceTo(st.end[side], n);
+        if (st.face[side] < 0) return false;
+      }
+      stretches.push_back(st);
+      return true;
+    };
+    bool ok = true;
+    if (!closed) {
+      if (at.front() > 0) ok = ok && add(0, at.front() - 1);
+      if (at.back() + 1 < len) ok = ok && add(at.back() + 1, len - 1);
+    }
+    for (size_t j = 0; ok && j < at.size(); ++j) {
+      if (j + 1 == at.size() && !closed) break;
+      const int32_t next = j + 1 < at.size() ? at[j + 1] : at[0] + len;
+      if (next > at[j] + 1) ok = add(at[j] + 1, next - 1);
+    }
+    if (!ok) return false;
+  }
+  slotsTouched_ += 2 * stretches.size();
+  // ---- walks through the touched slots from every stretch end ----
+  struct Walk {
+    std::vector<int32_t> slots;  // indices into ts, in walk order
+    int32_t from, to;            // stretch ends (2 * stretch + side), -1 for the boundary
+  };
+  std::vector<Walk> walks;
+  auto endAt = [&](Slot s, int face) -> int32_t {
+    for (size_t r = 0; r < stretches.size(); ++r)
+      for (int side = 0; side < 2; ++side)
+        if (stretches[r].face[side] == face && stretches[r].end[side] == s) return int32_t(2 * r + size_t(side));
+    return -1;
+  };
+  for (size_t r = 0; r < stretches.size(); ++r)
+    for (int side = 0; side < 2; ++side) {
+      if (stretches[r].face[side] < 0 || stretches[r].link[side] >= 0) continue;
+      const int32_t w = int32_t(walks.size());
+      walks.push_back({{}, int32_t(2 * r + size_t(side)), -1});
+      stretches[r].link[side] = w;
+      Slot cur = stretches[r].end[side];
+      int exit = stretches[r].face[side];
+      for (;;) {
+        Gluing g = cx.gluing(cur.hex, exit);
+        if (g.boundary()) break;
+        const Slot n{g.hex, tables::axisOfFace(g.face)};
+        const int32_t k = indexOf(n);
+        if (k < 0) {
+          const int32_t e = endAt(n, g.face);
+          if (e < 0 || stretches[size_t(e / 2)].link[e % 2] >= 0) return false;
+          stretches[size_t(e / 2)].link[e % 2] = w;
+          walks[size_t(w)].to = e;
+          break;
+        }
+        Touched& t = ts[size_t(k)];
+        if (!t.live || t.run >= 0 || (t.old >= 0 && !inIds(t.old)) || walks[size_t(w)].slots.size() >= ts.size())
+          return false;
+        t.run = w;
+        t.entry = g.face;
+        walks[size_t(w)].slots.push_back(k);
+        cur = n;
+        exit = tables::oppositeFace(g.face);
+      }
+      slotsTouched_ += walks[size_t(w)].slots.size();
+    }
+  // ---- new chords: chains of stretches and walks, and chords of touched slots alone ----
+  struct Item {
+    int32_t stretch = -1, slot = -1;  // a stretch (listed a..b when forward), or one touched slot (ts index)
+    bool forward = true;
+  };
+  struct Comp {
+    std::vector<Item> items;
+    bool closed = false;
+    int32_t first = -1;  // its smallest touched slot (ts index)
+  };
+  std::vector<Comp> comps;
+  std::vector<uint8_t> inChain(stretches.size(), 0);
+  auto walkItems = [&](int32_t w, bool forward, std::vector<Item>& out) {
+    const auto& sl = walks[size_t(w)].slots;
+    if (forward)
+      for (int32_t k : sl) out.push_back({-1, k, true});
+    else
+      for (size_t i = sl.size(); i-- > 0;) out.push_back({-1, sl[i], false});
+  };
+  for (size_t r0 = 0; r0 < stretches.size(); ++r0) {
+    if (inChain[r0]) continue;
+    inChain[r0] = 1;
+    Comp c;
+    // Rightwards from side 1, then leftwards from side 0 (listed reversed).
+    std::vector<Item> right, left;
+    int32_t end = int32_t(2 * r0 + 1);
+    for (;;) {
+      const int32_t w = stretches[size_t(end / 2)].link[end % 2];
+      if (w < 0) break;
+      const bool fwd = walks[size_t(w)].from == end;
+      walkItems(w, fwd, right);
+      const int32_t other = fwd ? walks[size_t(w)].to : walks[size_t(w)].from;
+      if (other < 0) break;
+      if (size_t(other / 2) == r0) {
+        if (other % 2 != 0) return false;
+        c.closed = true;
+        break;
+      }
+      if (inChain[size_t(other / 2)]) return false;
+      inChain[size_t(other / 2)] = 1;
+      right.push_back({other / 2, -1, other % 2 == 0});
+      end = other ^ 1;
+    }
+    end = int32_t(2 * r0);
+    while (!c.closed) {
+      const int32_t w = stretches[size_t(end / 2)].link[end % 2];
+      if (w < 0) break;
+      const bool fwd = walks[size_t(w)].from == end;
+      std::vector<Item> part;
+      walkItems(w, fwd, part);
+      for (const Item& it : part) left.push_back({-1, it.slot, !it.forward});  // listed right to left
+      const int32_t other = fwd ? walks[size_t(w)].to : walks[size_t(w)].from;
+      if (other < 0) break;
+      if (inChain[size_t(other / 2)]) return false;
+      inChain[size_t(other / 2)] = 1;
+      left.push_back({other / 2, -1, other % 2 == 1});
+      end = other ^ 1;
+    }
+    c.items.assign(left.rbegin(), left.rend());
+    c.items.push_back({int32_t(r0), -1, true});
+    c.items.insert(c.items.end(), right.begin(), right.end());
+    comps.push_back(std::move(c));
+  }
+  // Touched slots no walk met (old chords rebuilt here, or new slots) form chords of their own,
+  // walked as walkChord would from the smallest: back through its low face, then forward.
+  for (size_t k = 0; k < ts.size(); ++k) {
+    Touched& t0 = ts[k];
+    if (!t0.live || t0.run >= 0 || t0.comp >= 0 || (t0.old >= 0 && !inIds(t0.old))) continue;
+    const Slot start = t0.slot;
+    Slot cur = start;
+    int back = 2 * start.axis;
+    bool closed = false;
+    for (size_t steps = 0;; ++steps) {
+      Gluing g = cx.gluing(cur.hex, back);
+      if (g.boundary()) break;
+      cur = {g.hex, tables::axisOfFace(g.face)};
+      back = tables::oppositeFace(g.face);
+      if (indexOf(cur) < 0 || steps > ts.size()) return false;
+      if (cur == start) {
+        if (back != 2 * start.axis) return false;  // a twisted return: the re-walk is the reference
+        closed = true;
+        break;
+      }
+    }
+    if (closed) cur = start;
+    Comp c;
+    c.closed = closed;
+    int exit = closed ? 2 * start.axis + 1 : tables::oppositeFace(back);
+    const int32_t ci = int32_t(comps.size());
+    bool returned = false;
+    for (;;) {
+      const int32_t i = indexOf(cur);
+      Touched& t = ts[size_t(i)];
+      if (!t.live || t.run >= 0 || t.comp >= 0 || (t.old >= 0 && !inIds(t.old))) return false;
+      t.comp = ci;
+      c.items.push_back({-1, i, true});
+      Gluing g = cx.gluing(cur.hex, exit);
+      if (g.boundary()) break;
+      cur = {g.hex, tables::axisOfFace(g.face)};
+      exit = tables::oppositeFace(g.face);
+      const int32_t next = indexOf(cur);
+      if (next < 0) return false;
+      if (ts[size_t(next)].comp == ci) {
+        if (!(cur == start)) return false;
+        returned = true;
+        break;
+      }
+    }
+    if (returned != closed) return false;
+    c.first = int32_t(k);
+    slotsTouched_ += c.items.size();
+    comps.push_back(std::move(c));
+  }
+  // Each chain is listed as a re-walk from its smallest touched slot lists it: from the end its low
+  // face leads to, or (closed) starting there and leaving through its high face.
+  for (size_t ci = 0; ci < comps.size(); ++ci) {
+    Comp& c = comps[ci];
+    if (c.first >= 0) continue;  // a chord of touched slots alone: walked in order
+    size_t at = c.items.size();
+    for (size_t i = 0; i < c.items.size(); ++i)
+      if (c.items[i].slot >= 0 && (at == c.items.size() || c.items[i].slot < c.items[at].slot)) at = i;
+    if (at == c.items.size()) return false;
+    for (const Item& it : c.items)
+      if (it.slot >= 0) ts[size_t(it.slot)].comp = int32_t(ci);
+    // The slot before it in this listing is across its low face when the listing runs along the
+    // walk that met it and it entered through its low face, or against it and through the high one.
+    const Touched& t = ts[size_t(c.items[at].slot)];
+    const bool lowBefore = ((t.entry & 1) == 0) == c.items[at].forward;
+    if (!lowBefore) {
+      std::reverse(c.items.begin(), c.items.end());
+      for (Item& it : c.items) it.forward = !it.forward;
+      at = c.items.size() - 1 - at;
+    }
+    if (c.closed) std::rotate(c.items.begin(), c.items.begin() + std::ptrdiff_t(at), c.items.end());
+    c.first = c.items[c.closed ? 0 : at].slot;
+  }
+  // ---- ids: in the order of each new chord's smallest touched slot, the smallest old id it holds
+  // that no earlier one took, else a fresh one (relabel's rule) ----
+  std::vector<size_t> order(comps.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return comps[x].first < comps[y].first; });
+  auto oldOf = [&](const Item& it) {
+    return it.stretch >= 0 ? stretches[size_t(it.stretch)].chord : ts[size_t(it.slot)].old;
+  };
+  std::vector<int32_t> compId(comps.size(), -1), taken;
+  int32_t fresh = int32_t(dual_.chords.size());
+  for (size_t ci : order) {
+    int32_t best = -1;
+    for (const Item& it : comps[ci].items) {
+      const int32_t o = oldOf(it);
+      if (o >= 0 && (best < 0 || o < best) && std::find(taken.begin(), taken.end(), o) == taken.end()) best = o;
+    }
+    if (best >= 0) taken.push_back(best);
+    compId[ci] = best >= 0 ? best : fresh++;
+  }
+  // ---- self-intersection: a touched hex with two slots in one new chord; untouched hexes only
+  // matter when a chord joins stretches of several old chords (or of one that self-intersected):
+  // then it is left for the reader (settleChords) ----
+  std::vector<uint8_t> self(comps.size(), 0);
+  for (size_t i = 0; i + 2 < ts.size(); i += 3)
+    for (size_t a = 0; a < 3; ++a)
+      for (size_t b = a + 1; b < 3; ++b)
+        if (ts[i + a].comp >= 0 && ts[i + a].comp == ts[i + b].comp) self[size_t(ts[i + a].comp)] = 1;
+  for (size_t ci = 0; ci < comps.size(); ++ci) {
+    int32_t one = -1;
+    bool several = false;
+    for (const Item& it : comps[ci].items)
+      if (it.stretch >= 0) {
+        const int32_t o = stretches[size_t(it.stretch)].chord;
+        several = several || (one >= 0 && o != one);
+        one = o;
+      }
+    if (!self[ci] && (several || (one >= 0 && chordSelf_[size_t(one)] != 0))) self[ci] = 2;
+  }
+  // ---- which of them an in-place splice of one old chord would have given (listed first among the
+  // changed, as before) ----
+  auto splice = [&](size_t ci) {
+    const Comp& c = comps[ci];
+    const int32_t id = compId[ci];
+    const size_t k = size_t(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
+    if (c.closed || k == ids.size() || ids[k] != id || !contiguous[k] || c.items.size() < 3) return false;
+    const Item &head = c.items.front(), &tail = c.items.back();
+    if (head.stretch < 0 || tail.stretch < 0 || !head.forward || !tail.forward ||
+        stretches[size_t(head.stretch)].chord != id || stretches[size_t(head.stretch)].a != 0 ||
+        stretches[size_t(tail.stretch)].chord != id || stretches[size_t(tail.stretch)].b != lengths[k] - 1)
+      return false;
+    int32_t kept = 0;
+    for (size_t i = 1; i + 1 < c.items.size(); ++i) {
+      const Item& it = c.items[i];
+      if (it.slot < 0 || (ts[size_t(it.slot)].old != id && ts[size_t(it.slot)].old != -1)) return false;
+      kept += ts[size_t(it.slot)].old == id;
+    }
+    if (kept != liveOld[k] || c.items.size() - 2 >= 3 * touched.size()) return false;
+    return chordSelf_[size_t(id)] == 0 || (chordSelf_[size_t(id)] == 2 && !chordSelfIntersects(id));
+  };
+  std::vector<uint8_t> spliced(comps.size(), 0);
+  for (size_t ci = 0; ci < comps.size(); ++ci) spliced[ci] = splice(ci);
+
+  // ---- commit: stretches keep their pieces, consecutive touched slots get new labels ----
+  std::vector<std::vector<Piece>> stretchPieces(stretches.size());
+  for (size_t r = 0; r < stretches.size(); ++r) {
+    const Stretch& st = stretches[r];
+    const int32_t len = lengths[size_t(std::lower_bound(ids.begin(), ids.end(), st.chord) - ids.begin())];
+    sliceChord(st.chord, st.a, std::min(st.b, len - 1), stretchPieces[r]);
+    if (st.b >= len) sliceChord(st.chord, 0, st.b - len, stretchPieces[r]);
+  }
+  dropPieces(ids);
+  for (const Touched& t : ts)
+    if (!t.live) dual_.chordLabel[size_t(t.slot.hex)][size_t(t.slot.axis)] = -1;
+  const size_t n = size_t(fresh);
+  if (dual_.chords.size() < n) dual_.chords.resize(n);
+  pieces_.resize(std::max(pieces_.size(), n));
+  chordSelf_.resize(std::max(chordSelf_.size(), n), 0);
+  unsettledMark_.resize(std::max(unsettledMark_.size(), n), 0);
+  std::vector<int32_t> splicedIds;
+  for (size_t ci : order) {
+    const Comp& c = comps[ci];
+    std::vector<Piece> pieces;
+    std::vector<Slot> run;
+    auto flush = [&] {
+      if (run.empty()) return;
+      const int32_t len = int32_t(run.size());
+      slotsTouched_ += run.size();
+      pieces.push_back({newChordLabel(std::move(run)), 0, len, false});
+      run.clear();
+    };
+    for (const Item& it : c.items) {
+      if (it.slot >= 0) {
+        run.push_back(ts[size_t(it.slot)].slot);
+        continue;
+      }
+      flush();
+      const std::vector<Piece>& ps = stretchPieces[size_t(it.stretch)];
+      if (it.forward) {
+        pieces.insert(pieces.end(), ps.begin(), ps.end());
+      } else {
+        for (size_t i = ps.size(); i-- > 0;) pieces.push_back({ps[i].label, ps[i].lo, ps[i].hi, !ps[i].reversed});
+      }
+    }
+    flush();
+    const int32_t id = compId[ci];
+    Chord& ch = dual_.chords[size_t(id)];
+    ch.id = id;
+    ch.alive = true;
+    ch.closed = c.closed;
+    chordSelf_[size_t(id)] = self[ci];
+    if (self[ci] != 2) ch.selfIntersecting = self[ci] != 0;
+    setChordPieces(id, std::move(pieces));
+    if (!std::binary_search(ids.begin(), ids.end(), id))
+      change.chordsCreated.push_back(id);
+    else if (spliced[ci])
+      splicedIds.push_back(id);
+    else
+      change.chordsChanged.push_back(id);
+  }
+  std::sort(splicedIds.begin(), splicedIds.end());
+  change.chordsChanged.insert(change.chordsChanged.begin(), splicedIds.begin(), splicedIds.end());
+  for (int32_t id : ids)
+    if (std::find(taken.begin(), taken.end(), id) == taken.end()) {
+      Chord& ch = dual_.chords[size_t(id)];
+      ch.alive = false;
+      ch.slots.clear();
+      chordSelf_[size_t(id)] = 0;
+      change.chordsRemoved.push_back(id);
+    }
+  releaseLabels();
+  return true;
+}
+
+}  // namespace hexdual
