@@ -1,16 +1,17 @@
+// The tracker's frame: construction from a full extraction, update() choosing the sheet-update
+// strategy (topology kept, interior lockstep, fallback reflood: tracker/sheets_*.cpp) before the
+// chord update (tracker/chord_update.cpp), and the release of retired ids after an undo.
+// Owns: the growth of every per-hex and per-slot array (all grow here together) and the cost
+// counters (slotsTouched_, sheetSlotsTouched_, mergedLabels_, reflooded_).
+// Keeps: every per-hex array holds at least the complex's hex capacity; an id is retired, never
+// reused, except that releaseRetiredTail drops retired ids at the end of the id ranges.
 #include "dual/dual_tracker.hpp"
 
-#include "complex/huge_pages.hpp"
-#include "dual/tracker/relabel.hpp"
-#include "dual/tracker/slots.hpp"
-
 #include <algorithm>
-#include <bit>
-#include <climits>
-#include <numeric>
+
+#include "complex/huge_pages.hpp"
 
 namespace hexdual {
-using namespace tracker;
 
 std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
   std::vector<HexId> out;

@@ -12,6 +12,20 @@
 // sheets and chords keep their ids; new ones get fresh ids; when sheets merge or split, the
 // unexplored remainder keeps the id of its largest old sheet and explored pieces keep an old id
 // only when they are all that is left of it; chords follow the smallest old id.
+//
+// The implementation is split by concern (docs/architecture.md draws the parts and what flows
+// between them); each unit's first lines say what it owns and the invariants it keeps:
+//   dual_tracker.cpp                     construction, update() choosing a strategy, retired ids
+//   tracker/sheet_labels.cpp             sheet labels, orientations, merges, pair counts (self-intersection)
+//   tracker/shares.cpp                   edge marks and per-slot Euler shares
+//   tracker/sheets_topology_kept.cpp     sheet update when the operation keeps every sheet's topology
+//   tracker/sheets_interior_lockstep.cpp sheet update for other edits away from the boundary (lockstep flood)
+//   tracker/sheets_fallback_reflood.cpp  sheet update when neither applies (boundary, twisted sheets)
+//   tracker/chord_runs.cpp               chords as pieces of labelled runs: slicing, cutting, labels, settling
+//   tracker/chord_update.cpp             which chords changed; the whole re-walk (reference and fallback)
+//   tracker/chord_rejoin.cpp             the local chord update: stretches joined by walks through the edit
+// The undo journal itself is the complex's (Complex::EditLog, cx.undo); the tracker follows an undo
+// like any edit and gives the undone step's ids back with releaseRetiredTail().
 #pragma once
 #include <vector>
 
