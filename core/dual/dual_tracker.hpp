@@ -78,6 +78,7 @@ class DualTracker {
   bool lastChordsRewalked() const { return chordsRewalked_; }
 
  private:
+  struct TopologyKept;  // one topology-kept update's state and steps (tracker/sheets_topology_kept.cpp)
   bool updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   struct Lockstep;  // one lockstep update's state and steps (tracker/sheets_interior_lockstep.cpp)
   bool updateSheetsLockstep(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);

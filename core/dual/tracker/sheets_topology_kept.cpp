@@ -5,123 +5,172 @@
 // Refuses, changing nothing, when a component touches two old sheets (a merge): update() then
 // runs the lockstep flood.
 // Owns nothing between updates; marks front_ with component numbers while it runs (cleared after).
-#include "dual/dual_tracker.hpp"
-
 #include <algorithm>
 
+#include "dual/dual_tracker.hpp"
 #include "dual/tracker/slots.hpp"
 
 namespace hexdual {
 using namespace tracker;
 
+// One topology-kept update: the components of new (unlabelled) slots and the old sheets each
+// touches, and the steps of updateSheetsLocally below.
+struct DualTracker::TopologyKept {
+  DualTracker& t;
+  const Complex& cx;
+  const std::vector<HexId>& touched;
+  const size_t cap;                         // hexes the dual had labels for before the edit
+  std::vector<std::vector<Slot>> comps;     // components of the new slots
+  std::vector<std::vector<int32_t>> joins;  // per component: the old sheets it touches
+  std::vector<int32_t> changed;             // old sheets that lost or gained slots
+
+  TopologyKept(DualTracker& tracker, const Complex& c, const std::vector<HexId>& hexes)
+      : t(tracker), cx(c), touched(hexes), cap(tracker.dual_.sheetLabel.size()) {}
+  bool findNewComponents();
+  void clearMarks();
+  void dropDeadSlots();
+  void formNewSheet(const std::vector<Slot>& comp, DualChange& change);
+  void joinOldSheet(const std::vector<Slot>& comp, int32_t id);
+  void labelNewComponents(DualChange& change);
+  void reportChanges(DualChange& change);
+};
+
 bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
-  const size_t cap = dual_.sheetLabel.size();
-  // Components of the unlabelled (new) slots, and the existing sheets each one touches.
-  std::vector<std::vector<Slot>> comps;
-  std::vector<std::vector<int32_t>> joins;
-  // A new slot's component is marked in front_ (ci + 1) while this runs.
-  auto clearMarks = [&] {
-    for (const auto& comp : comps)
-      for (Slot t : comp) front_[slotIndex(t)] = 0;
-  };
+  TopologyKept up(*this, cx, touched);
+  const bool local = up.findNewComponents();
+  up.clearMarks();
+  if (!local) return false;
+  // Shares move with the edit but each sheet's sum (its Euler characteristic) does not: the
+  // operation keeps every sheet's topology.
+  refreshShares(cx, touched, nullptr);
+  up.dropDeadSlots();
+  up.labelNewComponents(change);
+  up.reportChanges(change);
+  return true;
+}
+
+// Components of the unlabelled (new) slots, and the existing sheets each one touches; a new
+// slot's component is marked in front_ (ci + 1) until clearMarks. False when a component touches
+// two sheets: they would merge, not a local change.
+bool DualTracker::TopologyKept::findNewComponents() {
+  std::vector<int32_t>& front = t.front_;
   for (HexId h : touched) {
     if (!cx.isHex(h)) continue;
     for (int a = 0; a < 3; ++a) {
-      if (dual_.sheetLabel[size_t(h)][size_t(a)] >= 0 || front_[slotIndex({h, a})]) continue;
+      if (t.dual_.sheetLabel[size_t(h)][size_t(a)] >= 0 || front[slotIndex({h, a})]) continue;
       size_t ci = comps.size();
       comps.push_back({{h, a}});
       joins.emplace_back();
-      front_[slotIndex({h, a})] = int32_t(ci + 1);
+      front[slotIndex({h, a})] = int32_t(ci + 1);
       for (size_t i = 0; i < comps[ci].size(); ++i) {
         Slot cur = comps[ci][i];
         for (int f : kParallelFaces[size_t(cur.axis)]) {
           Slot n;
           int flip;
           if (!sheetNeighbour(cx, cur, f, n, flip)) continue;
-          int32_t id = size_t(n.hex) < cap ? dual_.sheetAt(n.hex, n.axis) : -1;
+          int32_t id = size_t(n.hex) < cap ? t.dual_.sheetAt(n.hex, n.axis) : -1;
           if (id >= 0) {
             if (std::find(joins[ci].begin(), joins[ci].end(), id) == joins[ci].end()) joins[ci].push_back(id);
-          } else if (!front_[slotIndex(n)]) {
-            front_[slotIndex(n)] = int32_t(ci + 1);
+          } else if (!front[slotIndex(n)]) {
+            front[slotIndex(n)] = int32_t(ci + 1);
             comps[ci].push_back(n);
           }
         }
       }
-      if (joins[ci].size() > 1) {  // two sheets would merge: not a local change
-        clearMarks();
-        return false;
-      }
+      if (joins[ci].size() > 1) return false;
     }
   }
-  clearMarks();
-  // Shares move with the edit but each sheet's sum (its Euler characteristic) does not: the
-  // operation keeps every sheet's topology.
-  refreshShares(cx, touched, nullptr);
-  // Remove the slots of dead hexes (from their lists when next read).
-  std::vector<int32_t> changed;
+  return true;
+}
+
+void DualTracker::TopologyKept::clearMarks() {
+  for (const auto& comp : comps)
+    for (Slot s : comp) t.front_[slotIndex(s)] = 0;
+}
+
+// The slots of dead hexes lose their labels and orientations, and leave their sheets' lists
+// (when next read); their pairs are uncounted.
+void DualTracker::TopologyKept::dropDeadSlots() {
   std::vector<std::pair<int32_t, Slot>> dead;
   for (HexId h : touched) {
     if (cx.isHex(h) || size_t(h) >= cap) continue;
-    countSelfHex(h, -1);
+    t.countSelfHex(h, -1);
     for (int a = 0; a < 3; ++a) {
-      const int32_t id = dual_.sheetAt(h, a);
+      const int32_t id = t.dual_.sheetAt(h, a);
       if (id < 0) continue;
       dead.push_back({id, Slot{h, a}});
       changed.push_back(id);
-      setLabel({h, a}, -1);
-      flooder_.signs()[3 * size_t(h) + size_t(a)] = 0;
+      t.setLabel({h, a}, -1);
+      t.flooder_.signs()[3 * size_t(h) + size_t(a)] = 0;
     }
   }
-  std::sort(dead.begin(), dead.end(), [](const auto& x, const auto& y) { return x.first != y.first ? x.first < y.first : x.second < y.second; });
+  std::sort(dead.begin(), dead.end(),
+            [](const auto& x, const auto& y) { return x.first != y.first ? x.first < y.first : x.second < y.second; });
   for (size_t i = 0; i < dead.size();) {
     std::vector<Slot> gone;
     size_t j = i;
     for (; j < dead.size() && dead[j].first == dead[i].first; ++j) gone.push_back(dead[j].second);
-    dual_.sheets[size_t(dead[i].first)].slots.remove(std::move(gone));
+    t.dual_.sheets[size_t(dead[i].first)].slots.remove(std::move(gone));
     i = j;
   }
-  // Label the new components: join the one sheet they touch, or form a new sheet.
+}
+
+// A component that touches no old sheet is a new sheet, flooded (labelled, oriented, measured) whole.
+void DualTracker::TopologyKept::formNewSheet(const std::vector<Slot>& comp, DualChange& change) {
+  Dual& d = t.dual_;
+  const int32_t id = int32_t(d.sheets.size());
+  const int32_t label = t.newLabel(id);
+  Sheet sh;
+  sh.id = id;
+  std::vector<Slot> slots;
+  SheetStats st = t.flooder_.flood(cx, comp[0], label, d.sheetLabel[0].data(), &slots);
+  t.flooder_.clear(slots);
+  t.labelSlots_[size_t(label)] += int32_t(slots.size());
+  std::sort(slots.begin(), slots.end());
+  st.classify(sh);
+  t.sheetSlotsTouched_ += slots.size();
+  sh.slots = std::move(slots);
+  d.sheets.push_back(std::move(sh));
+  t.selfPairs_.push_back(0);
+  change.sheetsCreated.push_back(id);
+}
+
+// A component that touches one old sheet joins it with its first label, oriented from its neighbours.
+void DualTracker::TopologyKept::joinOldSheet(const std::vector<Slot>& comp, int32_t id) {
+  const int32_t label = t.labels_[size_t(id)].front();
+  for (Slot s : comp) t.setLabel(s, label);
+  std::vector<Slot> run = comp;
+  std::sort(run.begin(), run.end());
+  t.dual_.sheets[size_t(id)].slots.add(std::move(run));
+  t.propagateSigns(cx, comp);
+  t.sheetSlotsTouched_ += comp.size();
+  changed.push_back(id);
+}
+
+// Labels the new components (join the one sheet they touch, or form a new sheet), then counts the
+// pairs of the new hexes (all three of their slots are new).
+void DualTracker::TopologyKept::labelNewComponents(DualChange& change) {
   std::vector<HexId> born;
   for (size_t ci = 0; ci < comps.size(); ++ci) {
-    for (Slot t : comps[ci]) born.push_back(t.hex);
-    if (joins[ci].empty()) {
-      const int32_t id = int32_t(dual_.sheets.size());
-      const int32_t label = newLabel(id);
-      Sheet sh;
-      sh.id = id;
-      std::vector<Slot> slots;
-      SheetStats st = flooder_.flood(cx, comps[ci][0], label, dual_.sheetLabel[0].data(), &slots);
-      flooder_.clear(slots);
-      labelSlots_[size_t(label)] += int32_t(slots.size());
-      std::sort(slots.begin(), slots.end());
-      st.classify(sh);
-      sheetSlotsTouched_ += slots.size();
-      sh.slots = std::move(slots);
-      dual_.sheets.push_back(std::move(sh));
-      selfPairs_.push_back(0);
-      change.sheetsCreated.push_back(id);
-    } else {
-      const int32_t id = joins[ci][0];
-      const int32_t label = labels_[size_t(id)].front();
-      for (Slot t : comps[ci]) setLabel(t, label);
-      std::vector<Slot> run = comps[ci];
-      std::sort(run.begin(), run.end());
-      dual_.sheets[size_t(id)].slots.add(std::move(run));
-      propagateSigns(cx, comps[ci]);
-      sheetSlotsTouched_ += comps[ci].size();
-      changed.push_back(id);
-    }
+    for (Slot s : comps[ci]) born.push_back(s.hex);
+    if (joins[ci].empty())
+      formNewSheet(comps[ci], change);
+    else
+      joinOldSheet(comps[ci], joins[ci][0]);
   }
-  // Self-intersection counts for the new hexes (all three of their slots are new).
   std::sort(born.begin(), born.end());
   born.erase(std::unique(born.begin(), born.end()), born.end());
-  countSelfHexes(born, +1);
+  t.countSelfHexes(born, +1);
+}
+
+// Changed sheets: self-intersection, labels pruned; reported changed, or removed when emptied.
+void DualTracker::TopologyKept::reportChanges(DualChange& change) {
   std::sort(changed.begin(), changed.end());
   changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
   for (int32_t id : changed) {
-    Sheet& sh = dual_.sheets[size_t(id)];
-    sh.selfIntersecting = selfPairs_[size_t(id)] > 0;
-    pruneLabels(id);
+    Sheet& sh = t.dual_.sheets[size_t(id)];
+    sh.selfIntersecting = t.selfPairs_[size_t(id)] > 0;
+    t.pruneLabels(id);
     if (std::find(change.sheetsCreated.begin(), change.sheetsCreated.end(), id) != change.sheetsCreated.end()) continue;
     if (sh.slots.empty()) {
       sh.alive = false;
@@ -130,8 +179,7 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
       change.sheetsChanged.push_back(id);
     }
   }
-  for (int32_t id : change.sheetsCreated) dual_.sheets[size_t(id)].selfIntersecting = selfPairs_[size_t(id)] > 0;
-  return true;
+  for (int32_t id : change.sheetsCreated) t.dual_.sheets[size_t(id)].selfIntersecting = t.selfPairs_[size_t(id)] > 0;
 }
 
 }  // namespace hexdual
