@@ -84,6 +84,7 @@ class DualTracker {
   bool updateSheetsLockstep(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
+  struct ChordRejoin;  // one local chord update's state and steps (tracker/chord_rejoin.cpp)
   bool rejoinChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
                     DualChange& change);
   void rewalkChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
@@ -103,6 +104,7 @@ class DualTracker {
   void cutLabel(int32_t label, int32_t lo, int32_t hi, int32_t chord, bool add);
   void releaseLabels();
   void setChordPieces(int32_t id, std::vector<Piece> pieces);
+  void growChordIds(size_t n);  // room for chord ids below n in the per-chord arrays
   void settleChords() const;
   bool chordSelfIntersects(int32_t id) const;
   // Recomputes the smallest-incidence marks of the edges through the live touched hexes and the

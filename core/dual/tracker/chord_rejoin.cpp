@@ -4,25 +4,24 @@
 // slots no walk meets form chords of their own. Each new chord gets the id and slot order a
 // re-walk from its smallest touched slot gives; only the touched slots are written.
 // Owns nothing between updates; refuses, writing nothing, when the state is not one it can follow.
-#include "dual/dual_tracker.hpp"
-
 #include <algorithm>
 #include <numeric>
 
+#include "dual/dual_tracker.hpp"
 #include "dual/tracker/slots.hpp"
 
 namespace hexdual {
 using namespace tracker;
 
-// The changed chords rebuilt from what the edit left of them (TK03 §3.2: an edit changes chords
-// only through the edited hexes): their untouched stretches keep their labels and places, walks
-// through the touched hexes join the stretches' ends (a collapse joins two chords crosswise, TK03
-// §4.4), and touched slots no walk meets form chords of their own. Each new chord gets the id and
-// the slot order a re-walk from its smallest touched slot gives (relabel); only the touched slots
-// are written. False, writing nothing, when the state is not one it can follow.
-bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
-                               DualChange& change) {
-  auto inIds = [&](int32_t c) { return c >= 0 && std::binary_search(ids.begin(), ids.end(), c); };
+// One rejoin: the touched slots, the stretches, the walks joining them and the new chords, with
+// the steps of rejoinChords below in the order they run. A step returning false gives up (nothing
+// written yet: only commit writes).
+struct DualTracker::ChordRejoin {
+  DualTracker& tr;
+  const Complex& cx;
+  const std::vector<HexId>& touched;
+  const std::vector<int32_t>& ids;  // the changed chords, ascending
+
   // The touched slots, by slot (touched is sorted); a slot's old chord, run or own chord.
   struct Touched {
     Slot slot;
@@ -32,26 +31,7 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
     int32_t comp = -1;             // the new chord it lies in
   };
   std::vector<Touched> ts;
-  ts.reserve(3 * touched.size());
-  for (HexId h : touched)
-    for (int a = 0; a < 3; ++a) ts.push_back({{h, a}, dual_.chordAt(h, a), cx.isHex(h)});
-  auto indexOf = [&](Slot s) -> int32_t {
-    if (!std::binary_search(touched.begin(), touched.end(), s.hex)) return -1;
-    return int32_t(3 * size_t(std::lower_bound(touched.begin(), touched.end(), s.hex) - touched.begin()) +
-                   size_t(s.axis));
-  };
-  auto faceTo = [&](Slot s, Slot t) {  // the one face of s's hex along its axis glued to slot t, else -1
-    int found = -1, count = 0;
-    for (int f = 2 * s.axis; f < 2 * s.axis + 2; ++f) {
-      Gluing g = cx.gluing(s.hex, f);
-      if (!g.boundary() && Slot{g.hex, tables::axisOfFace(g.face)} == t) {
-        found = f;
-        ++count;
-      }
-    }
-    return count == 1 ? found : -1;
-  };
-  // ---- stretches: the untouched places of each old chord between touched ones ----
+  // The untouched places of each old chord between touched ones.
   struct Stretch {
     int32_t chord, a, b;  // places a..b (b >= length wraps round a closed chord)
     Slot end[2];
@@ -59,92 +39,15 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
     int32_t link[2] = {-1, -1};  // the walk from or to each end
   };
   std::vector<Stretch> stretches;
-  std::vector<int32_t> lengths(ids.size()), liveOld(ids.size(), 0);
-  std::vector<uint8_t> contiguous(ids.size(), 0);
-  for (size_t k = 0; k < ids.size(); ++k) {
-    const int32_t id = ids[k], len = chordLength(id);
-    const bool closed = dual_.chords[size_t(id)].closed;
-    lengths[k] = len;
-    std::vector<int32_t> at;
-    for (const Touched& t : ts)
-      if (t.old == id) {
-        const int32_t p = placeInChord(id, t.slot);
-        if (p < 0) return false;
-        at.push_back(p);
-        liveOld[k] += t.live;
-      }
-    if (at.empty()) return false;
-    std::sort(at.begin(), at.end());
-    contiguous[k] =
-        !closed && at.front() > 0 && at.back() + 1 < len && at.back() - at.front() + 1 == int32_t(at.size());
-    auto add = [&](int32_t a, int32_t b) {
-      Stretch st{id, a, b, {chordSlotAt(id, a % len), chordSlotAt(id, b % len)}};
-      for (int side = 0; side < 2; ++side) {
-        if (!closed && (side == 0 ? a == 0 : b == len - 1)) continue;  // the chord's boundary end
-        const Slot n = chordSlotAt(id, side == 0 ? (a - 1 + len) % len : (b + 1) % len);
-        st.face[side] = faceTo(st.end[side], n);
-        if (st.face[side] < 0) return false;
-      }
-      stretches.push_back(st);
-      return true;
-    };
-    bool ok = true;
-    if (!closed) {
-      if (at.front() > 0) ok = ok && add(0, at.front() - 1);
-      if (at.back() + 1 < len) ok = ok && add(at.back() + 1, len - 1);
-    }
-    for (size_t j = 0; ok && j < at.size(); ++j) {
-      if (j + 1 == at.size() && !closed) break;
-      const int32_t next = j + 1 < at.size() ? at[j + 1] : at[0] + len;
-      if (next > at[j] + 1) ok = add(at[j] + 1, next - 1);
-    }
-    if (!ok) return false;
-  }
-  slotsTouched_ += 2 * stretches.size();
-  // ---- walks through the touched slots from every stretch end ----
+  std::vector<int32_t> lengths, liveOld;  // per changed chord: its length, its live touched slots
+  std::vector<uint8_t> contiguous;        // per changed chord: touched in one run away from its ends
+  // Walks through the touched slots from stretch ends.
   struct Walk {
     std::vector<int32_t> slots;  // indices into ts, in walk order
     int32_t from, to;            // stretch ends (2 * stretch + side), -1 for the boundary
   };
   std::vector<Walk> walks;
-  auto endAt = [&](Slot s, int face) -> int32_t {
-    for (size_t r = 0; r < stretches.size(); ++r)
-      for (int side = 0; side < 2; ++side)
-        if (stretches[r].face[side] == face && stretches[r].end[side] == s) return int32_t(2 * r + size_t(side));
-    return -1;
-  };
-  for (size_t r = 0; r < stretches.size(); ++r)
-    for (int side = 0; side < 2; ++side) {
-      if (stretches[r].face[side] < 0 || stretches[r].link[side] >= 0) continue;
-      const int32_t w = int32_t(walks.size());
-      walks.push_back({{}, int32_t(2 * r + size_t(side)), -1});
-      stretches[r].link[side] = w;
-      Slot cur = stretches[r].end[side];
-      int exit = stretches[r].face[side];
-      for (;;) {
-        Gluing g = cx.gluing(cur.hex, exit);
-        if (g.boundary()) break;
-        const Slot n{g.hex, tables::axisOfFace(g.face)};
-        const int32_t k = indexOf(n);
-        if (k < 0) {
-          const int32_t e = endAt(n, g.face);
-          if (e < 0 || stretches[size_t(e / 2)].link[e % 2] >= 0) return false;
-          stretches[size_t(e / 2)].link[e % 2] = w;
-          walks[size_t(w)].to = e;
-          break;
-        }
-        Touched& t = ts[size_t(k)];
-        if (!t.live || t.run >= 0 || (t.old >= 0 && !inIds(t.old)) || walks[size_t(w)].slots.size() >= ts.size())
-          return false;
-        t.run = w;
-        t.entry = g.face;
-        walks[size_t(w)].slots.push_back(k);
-        cur = n;
-        exit = tables::oppositeFace(g.face);
-      }
-      slotsTouched_ += walks[size_t(w)].slots.size();
-    }
-  // ---- new chords: chains of stretches and walks, and chords of touched slots alone ----
+  // The new chords: items in order, each a stretch or one touched slot.
   struct Item {
     int32_t stretch = -1, slot = -1;  // a stretch (listed a..b when forward), or one touched slot (ts index)
     bool forward = true;
@@ -155,110 +58,311 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
     int32_t first = -1;  // its smallest touched slot (ts index)
   };
   std::vector<Comp> comps;
+  std::vector<size_t> order;  // comps by smallest touched slot
+  std::vector<int32_t> compId, taken;
+  int32_t fresh = 0;
+  std::vector<uint8_t> self;     // per comp: 0/1 self-intersecting, 2 left for the reader
+  std::vector<uint8_t> spliced;  // per comp: what an in-place splice of one old chord gives
+
+  ChordRejoin(DualTracker& tracker, const Complex& c, const std::vector<HexId>& hexes,
+              const std::vector<int32_t>& changed)
+      : tr(tracker), cx(c), touched(hexes), ids(changed) {}
+  bool inIds(int32_t c) const { return c >= 0 && std::binary_search(ids.begin(), ids.end(), c); }
+  int32_t indexOf(Slot s) const;
+  int faceTo(Slot s, Slot t) const;
+  void listTouched();
+  bool cutStretches();
+  bool cutStretchesOf(size_t k);
+  bool addStretch(int32_t id, int32_t a, int32_t b, int32_t len, bool closed);
+  int32_t endAt(Slot s, int face) const;
+  bool walkFromStretchEnds();
+  bool walkFrom(size_t r, int side);
+  void walkItems(int32_t w, bool forward, std::vector<Item>& out) const;
+  bool chainStretches();
+  bool chainFrom(size_t r0, std::vector<uint8_t>& inChain);
+  bool walkLoneChords();
+  bool walkLoneChord(size_t k);
+  bool listAsRewalk();
+  void chooseIds();
+  void markSelfIntersections();
+  bool splice(size_t ci) const;
+  void findSplices();
+  void commit(DualChange& change);
+  std::vector<Piece> piecesOf(const Comp& c, const std::vector<std::vector<Piece>>& stretchPieces);
+};
+
+bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
+                               DualChange& change) {
+  ChordRejoin rj(*this, cx, touched, ids);
+  rj.listTouched();
+  if (!rj.cutStretches() || !rj.walkFromStretchEnds() || !rj.chainStretches() || !rj.walkLoneChords() ||
+      !rj.listAsRewalk())
+    return false;
+  rj.chooseIds();
+  rj.markSelfIntersections();
+  rj.findSplices();
+  rj.commit(change);
+  return true;
+}
+
+// ---- the touched slots ----
+
+int32_t DualTracker::ChordRejoin::indexOf(Slot s) const {
+  if (!std::binary_search(touched.begin(), touched.end(), s.hex)) return -1;
+  return int32_t(3 * size_t(std::lower_bound(touched.begin(), touched.end(), s.hex) - touched.begin()) +
+                 size_t(s.axis));
+}
+
+// The one face of s's hex along its axis glued to slot t, else -1.
+int DualTracker::ChordRejoin::faceTo(Slot s, Slot t) const {
+  int found = -1, count = 0;
+  for (int f = 2 * s.axis; f < 2 * s.axis + 2; ++f) {
+    Gluing g = cx.gluing(s.hex, f);
+    if (!g.boundary() && Slot{g.hex, tables::axisOfFace(g.face)} == t) {
+      found = f;
+      ++count;
+    }
+  }
+  return count == 1 ? found : -1;
+}
+
+void DualTracker::ChordRejoin::listTouched() {
+  ts.reserve(3 * touched.size());
+  for (HexId h : touched)
+    for (int a = 0; a < 3; ++a) ts.push_back({{h, a}, tr.dual_.chordAt(h, a), cx.isHex(h)});
+}
+
+// ---- stretches: the untouched places of each old chord between touched ones ----
+
+bool DualTracker::ChordRejoin::cutStretches() {
+  lengths.assign(ids.size(), 0);
+  liveOld.assign(ids.size(), 0);
+  contiguous.assign(ids.size(), 0);
+  for (size_t k = 0; k < ids.size(); ++k)
+    if (!cutStretchesOf(k)) return false;
+  tr.slotsTouched_ += 2 * stretches.size();
+  return true;
+}
+
+// The stretch a..b of chord id, with the faces its ends leave through to the touched places beside them.
+bool DualTracker::ChordRejoin::addStretch(int32_t id, int32_t a, int32_t b, int32_t len, bool closed) {
+  Stretch st{id, a, b, {tr.chordSlotAt(id, a % len), tr.chordSlotAt(id, b % len)}};
+  for (int side = 0; side < 2; ++side) {
+    if (!closed && (side == 0 ? a == 0 : b == len - 1)) continue;  // the chord's boundary end
+    const Slot n = tr.chordSlotAt(id, side == 0 ? (a - 1 + len) % len : (b + 1) % len);
+    st.face[side] = faceTo(st.end[side], n);
+    if (st.face[side] < 0) return false;
+  }
+  stretches.push_back(st);
+  return true;
+}
+
+bool DualTracker::ChordRejoin::cutStretchesOf(size_t k) {
+  const int32_t id = ids[k], len = tr.chordLength(id);
+  const bool closed = tr.dual_.chords[size_t(id)].closed;
+  lengths[k] = len;
+  std::vector<int32_t> at;
+  for (const Touched& t : ts)
+    if (t.old == id) {
+      const int32_t p = tr.placeInChord(id, t.slot);
+      if (p < 0) return false;
+      at.push_back(p);
+      liveOld[k] += t.live;
+    }
+  if (at.empty()) return false;
+  std::sort(at.begin(), at.end());
+  contiguous[k] = !closed && at.front() > 0 && at.back() + 1 < len && at.back() - at.front() + 1 == int32_t(at.size());
+  bool ok = true;
+  if (!closed) {
+    if (at.front() > 0) ok = ok && addStretch(id, 0, at.front() - 1, len, closed);
+    if (at.back() + 1 < len) ok = ok && addStretch(id, at.back() + 1, len - 1, len, closed);
+  }
+  for (size_t j = 0; ok && j < at.size(); ++j) {
+    if (j + 1 == at.size() && !closed) break;
+    const int32_t next = j + 1 < at.size() ? at[j + 1] : at[0] + len;
+    if (next > at[j] + 1) ok = addStretch(id, at[j] + 1, next - 1, len, closed);
+  }
+  return ok;
+}
+
+// ---- walks through the touched slots from every stretch end ----
+
+// The stretch end (2 * stretch + side) at slot s leaving through face, else -1.
+int32_t DualTracker::ChordRejoin::endAt(Slot s, int face) const {
+  for (size_t r = 0; r < stretches.size(); ++r)
+    for (int side = 0; side < 2; ++side)
+      if (stretches[r].face[side] == face && stretches[r].end[side] == s) return int32_t(2 * r + size_t(side));
+  return -1;
+}
+
+bool DualTracker::ChordRejoin::walkFromStretchEnds() {
+  for (size_t r = 0; r < stretches.size(); ++r)
+    for (int side = 0; side < 2; ++side) {
+      if (stretches[r].face[side] < 0 || stretches[r].link[side] >= 0) continue;
+      if (!walkFrom(r, side)) return false;
+    }
+  return true;
+}
+
+// Walks from an end of stretch r through touched slots to the boundary or another stretch end.
+bool DualTracker::ChordRejoin::walkFrom(size_t r, int side) {
+  const int32_t w = int32_t(walks.size());
+  walks.push_back({{}, int32_t(2 * r + size_t(side)), -1});
+  stretches[r].link[side] = w;
+  Slot cur = stretches[r].end[side];
+  int exit = stretches[r].face[side];
+  for (;;) {
+    Gluing g = cx.gluing(cur.hex, exit);
+    if (g.boundary()) break;
+    const Slot n{g.hex, tables::axisOfFace(g.face)};
+    const int32_t k = indexOf(n);
+    if (k < 0) {
+      const int32_t e = endAt(n, g.face);
+      if (e < 0 || stretches[size_t(e / 2)].link[e % 2] >= 0) return false;
+      stretches[size_t(e / 2)].link[e % 2] = w;
+      walks[size_t(w)].to = e;
+      break;
+    }
+    Touched& t = ts[size_t(k)];
+    if (!t.live || t.run >= 0 || (t.old >= 0 && !inIds(t.old)) || walks[size_t(w)].slots.size() >= ts.size())
+      return false;
+    t.run = w;
+    t.entry = g.face;
+    walks[size_t(w)].slots.push_back(k);
+    cur = n;
+    exit = tables::oppositeFace(g.face);
+  }
+  tr.slotsTouched_ += walks[size_t(w)].slots.size();
+  return true;
+}
+
+// ---- new chords: chains of stretches and walks, and chords of touched slots alone ----
+
+void DualTracker::ChordRejoin::walkItems(int32_t w, bool forward, std::vector<Item>& out) const {
+  const auto& sl = walks[size_t(w)].slots;
+  if (forward)
+    for (int32_t k : sl) out.push_back({-1, k, true});
+  else
+    for (size_t i = sl.size(); i-- > 0;) out.push_back({-1, sl[i], false});
+}
+
+bool DualTracker::ChordRejoin::chainStretches() {
   std::vector<uint8_t> inChain(stretches.size(), 0);
-  auto walkItems = [&](int32_t w, bool forward, std::vector<Item>& out) {
-    const auto& sl = walks[size_t(w)].slots;
-    if (forward)
-      for (int32_t k : sl) out.push_back({-1, k, true});
-    else
-      for (size_t i = sl.size(); i-- > 0;) out.push_back({-1, sl[i], false});
-  };
   for (size_t r0 = 0; r0 < stretches.size(); ++r0) {
     if (inChain[r0]) continue;
-    inChain[r0] = 1;
-    Comp c;
-    // Rightwards from side 1, then leftwards from side 0 (listed reversed).
-    std::vector<Item> right, left;
-    int32_t end = int32_t(2 * r0 + 1);
-    for (;;) {
-      const int32_t w = stretches[size_t(end / 2)].link[end % 2];
-      if (w < 0) break;
-      const bool fwd = walks[size_t(w)].from == end;
-      walkItems(w, fwd, right);
-      const int32_t other = fwd ? walks[size_t(w)].to : walks[size_t(w)].from;
-      if (other < 0) break;
-      if (size_t(other / 2) == r0) {
-        if (other % 2 != 0) return false;
-        c.closed = true;
-        break;
-      }
-      if (inChain[size_t(other / 2)]) return false;
-      inChain[size_t(other / 2)] = 1;
-      right.push_back({other / 2, -1, other % 2 == 0});
-      end = other ^ 1;
-    }
-    end = int32_t(2 * r0);
-    while (!c.closed) {
-      const int32_t w = stretches[size_t(end / 2)].link[end % 2];
-      if (w < 0) break;
-      const bool fwd = walks[size_t(w)].from == end;
-      std::vector<Item> part;
-      walkItems(w, fwd, part);
-      for (const Item& it : part) left.push_back({-1, it.slot, !it.forward});  // listed right to left
-      const int32_t other = fwd ? walks[size_t(w)].to : walks[size_t(w)].from;
-      if (other < 0) break;
-      if (inChain[size_t(other / 2)]) return false;
-      inChain[size_t(other / 2)] = 1;
-      left.push_back({other / 2, -1, other % 2 == 1});
-      end = other ^ 1;
-    }
-    c.items.assign(left.rbegin(), left.rend());
-    c.items.push_back({int32_t(r0), -1, true});
-    c.items.insert(c.items.end(), right.begin(), right.end());
-    comps.push_back(std::move(c));
+    if (!chainFrom(r0, inChain)) return false;
   }
-  // Touched slots no walk met (old chords rebuilt here, or new slots) form chords of their own,
-  // walked as walkChord would from the smallest: back through its low face, then forward.
+  return true;
+}
+
+// The chain through stretch r0: rightwards from side 1, then leftwards from side 0 (listed reversed).
+bool DualTracker::ChordRejoin::chainFrom(size_t r0, std::vector<uint8_t>& inChain) {
+  inChain[r0] = 1;
+  Comp c;
+  std::vector<Item> right, left;
+  int32_t end = int32_t(2 * r0 + 1);
+  for (;;) {
+    const int32_t w = stretches[size_t(end / 2)].link[end % 2];
+    if (w < 0) break;
+    const bool fwd = walks[size_t(w)].from == end;
+    walkItems(w, fwd, right);
+    const int32_t other = fwd ? walks[size_t(w)].to : walks[size_t(w)].from;
+    if (other < 0) break;
+    if (size_t(other / 2) == r0) {
+      if (other % 2 != 0) return false;
+      c.closed = true;
+      break;
+    }
+    if (inChain[size_t(other / 2)]) return false;
+    inChain[size_t(other / 2)] = 1;
+    right.push_back({other / 2, -1, other % 2 == 0});
+    end = other ^ 1;
+  }
+  end = int32_t(2 * r0);
+  while (!c.closed) {
+    const int32_t w = stretches[size_t(end / 2)].link[end % 2];
+    if (w < 0) break;
+    const bool fwd = walks[size_t(w)].from == end;
+    std::vector<Item> part;
+    walkItems(w, fwd, part);
+    for (const Item& it : part) left.push_back({-1, it.slot, !it.forward});  // listed right to left
+    const int32_t other = fwd ? walks[size_t(w)].to : walks[size_t(w)].from;
+    if (other < 0) break;
+    if (inChain[size_t(other / 2)]) return false;
+    inChain[size_t(other / 2)] = 1;
+    left.push_back({other / 2, -1, other % 2 == 1});
+    end = other ^ 1;
+  }
+  c.items.assign(left.rbegin(), left.rend());
+  c.items.push_back({int32_t(r0), -1, true});
+  c.items.insert(c.items.end(), right.begin(), right.end());
+  comps.push_back(std::move(c));
+  return true;
+}
+
+// Touched slots no walk met (old chords rebuilt here, or new slots) form chords of their own.
+bool DualTracker::ChordRejoin::walkLoneChords() {
   for (size_t k = 0; k < ts.size(); ++k) {
-    Touched& t0 = ts[k];
+    const Touched& t0 = ts[k];
     if (!t0.live || t0.run >= 0 || t0.comp >= 0 || (t0.old >= 0 && !inIds(t0.old))) continue;
-    const Slot start = t0.slot;
-    Slot cur = start;
-    int back = 2 * start.axis;
-    bool closed = false;
-    for (size_t steps = 0;; ++steps) {
-      Gluing g = cx.gluing(cur.hex, back);
-      if (g.boundary()) break;
-      cur = {g.hex, tables::axisOfFace(g.face)};
-      back = tables::oppositeFace(g.face);
-      if (indexOf(cur) < 0 || steps > ts.size()) return false;
-      if (cur == start) {
-        if (back != 2 * start.axis) return false;  // a twisted return: the re-walk is the reference
-        closed = true;
-        break;
-      }
-    }
-    if (closed) cur = start;
-    Comp c;
-    c.closed = closed;
-    int exit = closed ? 2 * start.axis + 1 : tables::oppositeFace(back);
-    const int32_t ci = int32_t(comps.size());
-    bool returned = false;
-    for (;;) {
-      const int32_t i = indexOf(cur);
-      Touched& t = ts[size_t(i)];
-      if (!t.live || t.run >= 0 || t.comp >= 0 || (t.old >= 0 && !inIds(t.old))) return false;
-      t.comp = ci;
-      c.items.push_back({-1, i, true});
-      Gluing g = cx.gluing(cur.hex, exit);
-      if (g.boundary()) break;
-      cur = {g.hex, tables::axisOfFace(g.face)};
-      exit = tables::oppositeFace(g.face);
-      const int32_t next = indexOf(cur);
-      if (next < 0) return false;
-      if (ts[size_t(next)].comp == ci) {
-        if (!(cur == start)) return false;
-        returned = true;
-        break;
-      }
-    }
-    if (returned != closed) return false;
-    c.first = int32_t(k);
-    slotsTouched_ += c.items.size();
-    comps.push_back(std::move(c));
+    if (!walkLoneChord(k)) return false;
   }
-  // Each chain is listed as a re-walk from its smallest touched slot lists it: from the end its low
-  // face leads to, or (closed) starting there and leaving through its high face.
+  return true;
+}
+
+// The chord of touched slot k, walked as walkChord would from the smallest: back through its low
+// face to an end (or once round), then forward; every slot on it must be touched.
+bool DualTracker::ChordRejoin::walkLoneChord(size_t k) {
+  const Slot start = ts[k].slot;
+  Slot cur = start;
+  int back = 2 * start.axis;
+  bool closed = false;
+  for (size_t steps = 0;; ++steps) {
+    Gluing g = cx.gluing(cur.hex, back);
+    if (g.boundary()) break;
+    cur = {g.hex, tables::axisOfFace(g.face)};
+    back = tables::oppositeFace(g.face);
+    if (indexOf(cur) < 0 || steps > ts.size()) return false;
+    if (cur == start) {
+      if (back != 2 * start.axis) return false;  // a twisted return: the re-walk is the reference
+      closed = true;
+      break;
+    }
+  }
+  if (closed) cur = start;
+  Comp c;
+  c.closed = closed;
+  int exit = closed ? 2 * start.axis + 1 : tables::oppositeFace(back);
+  const int32_t ci = int32_t(comps.size());
+  bool returned = false;
+  for (;;) {
+    const int32_t i = indexOf(cur);
+    Touched& t = ts[size_t(i)];
+    if (!t.live || t.run >= 0 || t.comp >= 0 || (t.old >= 0 && !inIds(t.old))) return false;
+    t.comp = ci;
+    c.items.push_back({-1, i, true});
+    Gluing g = cx.gluing(cur.hex, exit);
+    if (g.boundary()) break;
+    cur = {g.hex, tables::axisOfFace(g.face)};
+    exit = tables::oppositeFace(g.face);
+    const int32_t next = indexOf(cur);
+    if (next < 0) return false;
+    if (ts[size_t(next)].comp == ci) {
+      if (!(cur == start)) return false;
+      returned = true;
+      break;
+    }
+  }
+  if (returned != closed) return false;
+  c.first = int32_t(k);
+  tr.slotsTouched_ += c.items.size();
+  comps.push_back(std::move(c));
+  return true;
+}
+
+// Each chain is listed as a re-walk from its smallest touched slot lists it: from the end its low
+// face leads to, or (closed) starting there and leaving through its high face.
+bool DualTracker::ChordRejoin::listAsRewalk() {
   for (size_t ci = 0; ci < comps.size(); ++ci) {
     Comp& c = comps[ci];
     if (c.first >= 0) continue;  // a chord of touched slots alone: walked in order
@@ -280,16 +384,20 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
     if (c.closed) std::rotate(c.items.begin(), c.items.begin() + std::ptrdiff_t(at), c.items.end());
     c.first = c.items[c.closed ? 0 : at].slot;
   }
-  // ---- ids: in the order of each new chord's smallest touched slot, the smallest old id it holds
-  // that no earlier one took, else a fresh one (relabel's rule) ----
-  std::vector<size_t> order(comps.size());
+  return true;
+}
+
+// ---- ids: in the order of each new chord's smallest touched slot, the smallest old id it holds
+// that no earlier one took, else a fresh one (relabel's rule) ----
+void DualTracker::ChordRejoin::chooseIds() {
+  order.resize(comps.size());
   std::iota(order.begin(), order.end(), size_t(0));
   std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return comps[x].first < comps[y].first; });
   auto oldOf = [&](const Item& it) {
     return it.stretch >= 0 ? stretches[size_t(it.stretch)].chord : ts[size_t(it.slot)].old;
   };
-  std::vector<int32_t> compId(comps.size(), -1), taken;
-  int32_t fresh = int32_t(dual_.chords.size());
+  compId.assign(comps.size(), -1);
+  fresh = int32_t(tr.dual_.chords.size());
   for (size_t ci : order) {
     int32_t best = -1;
     for (const Item& it : comps[ci].items) {
@@ -299,10 +407,13 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
     if (best >= 0) taken.push_back(best);
     compId[ci] = best >= 0 ? best : fresh++;
   }
-  // ---- self-intersection: a touched hex with two slots in one new chord; untouched hexes only
-  // matter when a chord joins stretches of several old chords (or of one that self-intersected):
-  // then it is left for the reader (settleChords) ----
-  std::vector<uint8_t> self(comps.size(), 0);
+}
+
+// ---- self-intersection: a touched hex with two slots in one new chord; untouched hexes only
+// matter when a chord joins stretches of several old chords (or of one that self-intersected):
+// then it is left for the reader (settleChords) ----
+void DualTracker::ChordRejoin::markSelfIntersections() {
+  self.assign(comps.size(), 0);
   for (size_t i = 0; i + 2 < ts.size(); i += 3)
     for (size_t a = 0; a < 3; ++a)
       for (size_t b = a + 1; b < 3; ++b)
@@ -316,82 +427,93 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
         several = several || (one >= 0 && o != one);
         one = o;
       }
-    if (!self[ci] && (several || (one >= 0 && chordSelf_[size_t(one)] != 0))) self[ci] = 2;
+    if (!self[ci] && (several || (one >= 0 && tr.chordSelf_[size_t(one)] != 0))) self[ci] = 2;
   }
-  // ---- which of them an in-place splice of one old chord would have given (listed first among the
-  // changed, as before) ----
-  auto splice = [&](size_t ci) {
-    const Comp& c = comps[ci];
-    const int32_t id = compId[ci];
-    const size_t k = size_t(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
-    if (c.closed || k == ids.size() || ids[k] != id || !contiguous[k] || c.items.size() < 3) return false;
-    const Item &head = c.items.front(), &tail = c.items.back();
-    if (head.stretch < 0 || tail.stretch < 0 || !head.forward || !tail.forward ||
-        stretches[size_t(head.stretch)].chord != id || stretches[size_t(head.stretch)].a != 0 ||
-        stretches[size_t(tail.stretch)].chord != id || stretches[size_t(tail.stretch)].b != lengths[k] - 1)
-      return false;
-    int32_t kept = 0;
-    for (size_t i = 1; i + 1 < c.items.size(); ++i) {
-      const Item& it = c.items[i];
-      if (it.slot < 0 || (ts[size_t(it.slot)].old != id && ts[size_t(it.slot)].old != -1)) return false;
-      kept += ts[size_t(it.slot)].old == id;
-    }
-    if (kept != liveOld[k] || c.items.size() - 2 >= 3 * touched.size()) return false;
-    return chordSelf_[size_t(id)] == 0 || (chordSelf_[size_t(id)] == 2 && !chordSelfIntersects(id));
-  };
-  std::vector<uint8_t> spliced(comps.size(), 0);
-  for (size_t ci = 0; ci < comps.size(); ++ci) spliced[ci] = splice(ci);
+}
 
-  // ---- commit: stretches keep their pieces, consecutive touched slots get new labels ----
+// ---- which of them an in-place splice of one old chord would have given (listed first among the
+// changed, as before) ----
+bool DualTracker::ChordRejoin::splice(size_t ci) const {
+  const Comp& c = comps[ci];
+  const int32_t id = compId[ci];
+  const size_t k = size_t(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
+  if (c.closed || k == ids.size() || ids[k] != id || !contiguous[k] || c.items.size() < 3) return false;
+  const Item &head = c.items.front(), &tail = c.items.back();
+  if (head.stretch < 0 || tail.stretch < 0 || !head.forward || !tail.forward ||
+      stretches[size_t(head.stretch)].chord != id || stretches[size_t(head.stretch)].a != 0 ||
+      stretches[size_t(tail.stretch)].chord != id || stretches[size_t(tail.stretch)].b != lengths[k] - 1)
+    return false;
+  int32_t kept = 0;
+  for (size_t i = 1; i + 1 < c.items.size(); ++i) {
+    const Item& it = c.items[i];
+    if (it.slot < 0 || (ts[size_t(it.slot)].old != id && ts[size_t(it.slot)].old != -1)) return false;
+    kept += ts[size_t(it.slot)].old == id;
+  }
+  if (kept != liveOld[k] || c.items.size() - 2 >= 3 * touched.size()) return false;
+  return tr.chordSelf_[size_t(id)] == 0 || (tr.chordSelf_[size_t(id)] == 2 && !tr.chordSelfIntersects(id));
+}
+
+void DualTracker::ChordRejoin::findSplices() {
+  spliced.assign(comps.size(), 0);
+  for (size_t ci = 0; ci < comps.size(); ++ci) spliced[ci] = splice(ci);
+}
+
+// ---- commit: stretches keep their pieces, consecutive touched slots get new labels ----
+
+// A new chord's pieces: its stretches' pieces (reversed when listed backwards), and a new label for
+// every run of consecutive touched slots.
+std::vector<DualTracker::Piece> DualTracker::ChordRejoin::piecesOf(
+    const Comp& c, const std::vector<std::vector<Piece>>& stretchPieces) {
+  std::vector<Piece> pieces;
+  std::vector<Slot> run;
+  auto flush = [&] {
+    if (run.empty()) return;
+    const int32_t len = int32_t(run.size());
+    tr.slotsTouched_ += run.size();
+    pieces.push_back({tr.newChordLabel(std::move(run)), 0, len, false});
+    run.clear();
+  };
+  for (const Item& it : c.items) {
+    if (it.slot >= 0) {
+      run.push_back(ts[size_t(it.slot)].slot);
+      continue;
+    }
+    flush();
+    const std::vector<Piece>& ps = stretchPieces[size_t(it.stretch)];
+    if (it.forward) {
+      pieces.insert(pieces.end(), ps.begin(), ps.end());
+    } else {
+      for (size_t i = ps.size(); i-- > 0;) pieces.push_back({ps[i].label, ps[i].lo, ps[i].hi, !ps[i].reversed});
+    }
+  }
+  flush();
+  return pieces;
+}
+
+void DualTracker::ChordRejoin::commit(DualChange& change) {
+  Dual& d = tr.dual_;
   std::vector<std::vector<Piece>> stretchPieces(stretches.size());
   for (size_t r = 0; r < stretches.size(); ++r) {
     const Stretch& st = stretches[r];
     const int32_t len = lengths[size_t(std::lower_bound(ids.begin(), ids.end(), st.chord) - ids.begin())];
-    sliceChord(st.chord, st.a, std::min(st.b, len - 1), stretchPieces[r]);
-    if (st.b >= len) sliceChord(st.chord, 0, st.b - len, stretchPieces[r]);
+    tr.sliceChord(st.chord, st.a, std::min(st.b, len - 1), stretchPieces[r]);
+    if (st.b >= len) tr.sliceChord(st.chord, 0, st.b - len, stretchPieces[r]);
   }
-  dropPieces(ids);
+  tr.dropPieces(ids);
   for (const Touched& t : ts)
-    if (!t.live) dual_.chordLabel[size_t(t.slot.hex)][size_t(t.slot.axis)] = -1;
-  const size_t n = size_t(fresh);
-  if (dual_.chords.size() < n) dual_.chords.resize(n);
-  pieces_.resize(std::max(pieces_.size(), n));
-  chordSelf_.resize(std::max(chordSelf_.size(), n), 0);
-  unsettledMark_.resize(std::max(unsettledMark_.size(), n), 0);
+    if (!t.live) d.chordLabel[size_t(t.slot.hex)][size_t(t.slot.axis)] = -1;
+  tr.growChordIds(size_t(fresh));
   std::vector<int32_t> splicedIds;
   for (size_t ci : order) {
-    const Comp& c = comps[ci];
-    std::vector<Piece> pieces;
-    std::vector<Slot> run;
-    auto flush = [&] {
-      if (run.empty()) return;
-      const int32_t len = int32_t(run.size());
-      slotsTouched_ += run.size();
-      pieces.push_back({newChordLabel(std::move(run)), 0, len, false});
-      run.clear();
-    };
-    for (const Item& it : c.items) {
-      if (it.slot >= 0) {
-        run.push_back(ts[size_t(it.slot)].slot);
-        continue;
-      }
-      flush();
-      const std::vector<Piece>& ps = stretchPieces[size_t(it.stretch)];
-      if (it.forward) {
-        pieces.insert(pieces.end(), ps.begin(), ps.end());
-      } else {
-        for (size_t i = ps.size(); i-- > 0;) pieces.push_back({ps[i].label, ps[i].lo, ps[i].hi, !ps[i].reversed});
-      }
-    }
-    flush();
+    std::vector<Piece> pieces = piecesOf(comps[ci], stretchPieces);
     const int32_t id = compId[ci];
-    Chord& ch = dual_.chords[size_t(id)];
+    Chord& ch = d.chords[size_t(id)];
     ch.id = id;
     ch.alive = true;
-    ch.closed = c.closed;
-    chordSelf_[size_t(id)] = self[ci];
+    ch.closed = comps[ci].closed;
+    tr.chordSelf_[size_t(id)] = self[ci];
     if (self[ci] != 2) ch.selfIntersecting = self[ci] != 0;
-    setChordPieces(id, std::move(pieces));
+    tr.setChordPieces(id, std::move(pieces));
     if (!std::binary_search(ids.begin(), ids.end(), id))
       change.chordsCreated.push_back(id);
     else if (spliced[ci])
@@ -403,14 +525,13 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
   change.chordsChanged.insert(change.chordsChanged.begin(), splicedIds.begin(), splicedIds.end());
   for (int32_t id : ids)
     if (std::find(taken.begin(), taken.end(), id) == taken.end()) {
-      Chord& ch = dual_.chords[size_t(id)];
+      Chord& ch = d.chords[size_t(id)];
       ch.alive = false;
       ch.slots.clear();
-      chordSelf_[size_t(id)] = 0;
+      tr.chordSelf_[size_t(id)] = 0;
       change.chordsRemoved.push_back(id);
     }
-  releaseLabels();
-  return true;
+  tr.releaseLabels();
 }
 
 }  // namespace hexdual

@@ -156,6 +156,13 @@ void DualTracker::setChordPieces(int32_t id, std::vector<Piece> pieces) {
   }
 }
 
+void DualTracker::growChordIds(size_t n) {
+  if (dual_.chords.size() < n) dual_.chords.resize(n);
+  pieces_.resize(std::max(pieces_.size(), n));
+  chordSelf_.resize(std::max(chordSelf_.size(), n), 0);
+  unsettledMark_.resize(std::max(unsettledMark_.size(), n), 0);
+}
+
 bool DualTracker::chordSelfIntersects(int32_t id) const {
   for (const Piece& p : pieces_[size_t(id)])
     for (int32_t i = p.lo; i < p.hi; ++i) {
