@@ -84,6 +84,8 @@ class DualTracker {
   bool updateSheetsLockstep(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
+  std::vector<int32_t> changedChords(const Complex& cx, const std::vector<HexId>& touched);
+  bool chordUnchanged(const Complex& cx, int32_t id, const std::vector<Slot>& own) const;
   struct ChordRejoin;  // one local chord update's state and steps (tracker/chord_rejoin.cpp)
   bool rejoinChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
                     DualChange& change);

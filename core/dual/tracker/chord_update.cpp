@@ -3,43 +3,29 @@
 // when the rejoin is not sure (or setLocalChords(false)), re-walked whole from the touched slots
 // (relabel): the reference the local update must equal (same ids, same slot order).
 // Owns chordsRewalked_; the re-walk gives every chord it walks one label run.
-#include "dual/dual_tracker.hpp"
-
 #include <algorithm>
 
+#include "dual/dual_tracker.hpp"
 #include "dual/tracker/relabel.hpp"
 #include "dual/tracker/slots.hpp"
 
 namespace hexdual {
 using namespace tracker;
 
+// The chords the edit changed are rebuilt locally, or re-walked when the rejoin gives up.
 void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change) {
-  // A chord whose touched slots still have the same neighbours along it is unchanged.
-  auto unchanged = [&](int32_t id, const std::vector<Slot>& own) {
-    const int32_t len = chordLength(id);
-    const bool closed = dual_.chords[size_t(id)].closed;
-    for (Slot s : own) {
-      const int32_t p = placeInChord(id, s);
-      if (!cx.isHex(s.hex) || p < 0) return false;
-      auto along = [&](int face, Slot& n) {
-        Gluing g = cx.gluing(s.hex, face);
-        if (g.boundary()) return false;
-        n = {g.hex, tables::axisOfFace(g.face)};
-        return true;
-      };
-      Slot lo, hi, prev, next;
-      const bool hasLo = along(2 * s.axis, lo), hasHi = along(2 * s.axis + 1, hi);
-      const bool hasPrev = p > 0 || closed, hasNext = p + 1 < len || closed;
-      if (hasPrev) prev = chordSlotAt(id, p > 0 ? p - 1 : len - 1);
-      if (hasNext) next = chordSlotAt(id, p + 1 < len ? p + 1 : 0);
-      auto same = [](bool x, Slot a, bool y, Slot b) { return x == y && (!x || a == b); };
-      if (!(same(hasLo, lo, hasPrev, prev) && same(hasHi, hi, hasNext, next)) &&
-          !(same(hasLo, lo, hasNext, next) && same(hasHi, hi, hasPrev, prev)))
-        return false;
-    }
-    return true;
-  };
-  // The touched slots grouped by chord, so each chord reads only its own.
+  const std::vector<int32_t> ids = changedChords(cx, touched);
+  const size_t before = slotsTouched_;
+  chordsRewalked_ = !localChords_ || !rejoinChords(cx, touched, ids, change);
+  if (chordsRewalked_) {
+    slotsTouched_ = before;  // a rejoin that gave up counts nothing: the re-walk is the work done
+    rewalkChords(cx, touched, ids, change);
+  }
+}
+
+// The chords through the touched slots that the edit changed, ascending. The touched slots are
+// grouped by chord, so each chord reads only its own.
+std::vector<int32_t> DualTracker::changedChords(const Complex& cx, const std::vector<HexId>& touched) {
   std::vector<std::pair<int32_t, Slot>> through;
   for (HexId h : touched)
     for (int a = 0; a < 3; ++a) {
@@ -54,14 +40,35 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
     own.clear();
     for (j = i; j < through.size() && through[j].first == id; ++j) own.push_back(through[j].second);
     slotsTouched_ += own.size();
-    if (!unchanged(id, own)) ids.push_back(id);
+    if (!chordUnchanged(cx, id, own)) ids.push_back(id);
   }
-  const size_t before = slotsTouched_;
-  chordsRewalked_ = !localChords_ || !rejoinChords(cx, touched, ids, change);
-  if (chordsRewalked_) {
-    slotsTouched_ = before;  // a rejoin that gave up counts nothing: the re-walk is the work done
-    rewalkChords(cx, touched, ids, change);
+  return ids;
+}
+
+// A chord whose touched slots (`own`) still have the same neighbours along it is unchanged.
+bool DualTracker::chordUnchanged(const Complex& cx, int32_t id, const std::vector<Slot>& own) const {
+  const int32_t len = chordLength(id);
+  const bool closed = dual_.chords[size_t(id)].closed;
+  for (Slot s : own) {
+    const int32_t p = placeInChord(id, s);
+    if (!cx.isHex(s.hex) || p < 0) return false;
+    auto along = [&](int face, Slot& n) {
+      Gluing g = cx.gluing(s.hex, face);
+      if (g.boundary()) return false;
+      n = {g.hex, tables::axisOfFace(g.face)};
+      return true;
+    };
+    Slot lo, hi, prev, next;
+    const bool hasLo = along(2 * s.axis, lo), hasHi = along(2 * s.axis + 1, hi);
+    const bool hasPrev = p > 0 || closed, hasNext = p + 1 < len || closed;
+    if (hasPrev) prev = chordSlotAt(id, p > 0 ? p - 1 : len - 1);
+    if (hasNext) next = chordSlotAt(id, p + 1 < len ? p + 1 : 0);
+    auto same = [](bool x, Slot a, bool y, Slot b) { return x == y && (!x || a == b); };
+    if (!(same(hasLo, lo, hasPrev, prev) && same(hasHi, hi, hasNext, next)) &&
+        !(same(hasLo, lo, hasNext, next) && same(hasHi, hi, hasPrev, prev)))
+      return false;
   }
+  return true;
 }
 
 // Re-walks the changed chords whole from the touched slots (relabel): the reference, and the way
