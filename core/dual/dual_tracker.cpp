@@ -10,8 +10,10 @@
 #include <algorithm>
 
 #include "complex/huge_pages.hpp"
+#include "dual/tracker/slots.hpp"
 
 namespace hexdual {
+using namespace tracker;
 
 std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
   std::vector<HexId> out;
@@ -131,7 +133,31 @@ DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bo
   }
   slotsTouched_ = sheetSlotsTouched_;
   updateChords(cx, touched, change);
+#ifdef HEXDUAL_CHECK_INVARIANTS
+  checkInvariants(cx);
+#endif
   return change;
+}
+
+// Each unit's invariants (their first lines state them), then the scratch state every update
+// leaves cleared. Linear in the mesh: the debug build's check after every update.
+void DualTracker::checkInvariants(const Complex& cx) const {
+  if (dual_.sheetLabel.size() < size_t(cx.hexCapacity()) || dual_.chordLabel.size() != dual_.sheetLabel.size() ||
+      edgeMarks_.size() != dual_.sheetLabel.size() || share_.size() != 3 * dual_.sheetLabel.size())
+    invariantBroken("the per-hex arrays do not hold the complex's " + std::to_string(cx.hexCapacity()) + " hexes");
+  checkSheetLabels(cx);
+  checkShares(cx);
+  checkChordRuns(cx);
+  checkScratchCleared();
+}
+
+// Scratch marks are cleared by the update that set them.
+void DualTracker::checkScratchCleared() const {
+  auto zero = [](const auto& v) { return std::all_of(v.begin(), v.end(), [](auto x) { return x == 0; }); };
+  if (!zero(front_)) invariantBroken("front_ marks left after an update");
+  if (!zero(walked_)) invariantBroken("walked_ marks left after an update");
+  if (!zero(delta_)) invariantBroken("delta_ (Euler changes) left after an update");
+  if (!dropped_.empty()) invariantBroken("dropped chord labels left after an update");
 }
 
 }  // namespace hexdual

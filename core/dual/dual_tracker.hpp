@@ -77,7 +77,15 @@ class DualTracker {
   // Whether the last update re-walked its changed chords whole (the local rejoin was not sure).
   bool lastChordsRewalked() const { return chordsRewalked_; }
 
+  // Checks the tracker's own state against cx: each unit's invariants (stated in its first lines,
+  // listed in docs/architecture.md: labels and their counts, orientations, shares and edge marks,
+  // pair counts, chord pieces and label cuts, scratch marks cleared). Throws Error naming the
+  // first one broken. Linear in the mesh; the debug build (HEXDUAL_CHECK_INVARIANTS) runs it after
+  // every update. validateDual checks the dual itself against the complex.
+  void checkInvariants(const Complex& cx) const;
+
  private:
+  friend struct DualTrackerTestAccess;  // tests break the state on purpose to see checkInvariants fail
   struct TopologyKept;  // one topology-kept update's state and steps (tracker/sheets_topology_kept.cpp)
   bool updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   struct Lockstep;  // one lockstep update's state and steps (tracker/sheets_interior_lockstep.cpp)
@@ -108,6 +116,8 @@ class DualTracker {
   void setChordPieces(int32_t id, std::vector<Piece> pieces);
   void growChordIds(size_t n);  // room for chord ids below n in the per-chord arrays
   void settleChords() const;
+  void checkChordRuns(const Complex& cx) const;
+  void checkLabelCuts() const;
   bool chordSelfIntersects(int32_t id) const;
   // Recomputes the smallest-incidence marks of the edges through the live touched hexes and the
   // mid-surface share of every slot whose share the edit changed, listing the changes when asked.
@@ -117,6 +127,7 @@ class DualTracker {
   };
   void refreshShares(const Complex& cx, const std::vector<HexId>& touched, std::vector<ShareChange>* changes);
   bool touchesBoundary(const Complex& cx, const std::vector<HexId>& touched) const;
+  void checkShares(const Complex& cx) const;
   void propagateSigns(const Complex& cx, const std::vector<Slot>& unsigned_);
   void countSelfHexes(const std::vector<HexId>& hexes, int sign);
   void countSelfHex(HexId h, int sign);
@@ -129,7 +140,12 @@ class DualTracker {
   void setSign(Slot t, int sign);
   void pruneLabels(int32_t id);  // drops the sheet's labels no slot carries any more
   void mergeSheet(int32_t x, int32_t keep, bool flip);
+  void checkSheetLabels(const Complex& cx) const;
+  void checkLabelsOf(const Complex& cx) const;
+  void checkOrientations(const Complex& cx) const;
+  void checkPairCounts(const Complex& cx) const;
   void growPerHexArrays(size_t cap);
+  void checkScratchCleared() const;
   mutable Dual dual_;  // dual() settles chord lists
   std::vector<std::vector<int32_t>> labels_;  // per sheet id: the labels naming it
   std::vector<int32_t> labelSlots_;           // per label: slots carrying it
@@ -141,8 +157,11 @@ class DualTracker {
   class PairCounts {
    public:
     void add(int32_t a, int32_t b, int32_t n);
-    int32_t take(int32_t a, int32_t b);  // the count, zeroed
+    int32_t take(int32_t a, int32_t b);                   // the count, zeroed
+    int32_t count(int32_t a, int32_t b) const;            // the count (checkInvariants)
+    std::vector<std::array<int32_t, 3>> entries() const;  // (a, b, count) of the non-zero counts
    private:
+  friend struct DualTrackerTestAccess;  // tests break the state on purpose to see checkInvariants fail
     size_t find(uint64_t key) const;
     std::vector<uint64_t> keys_;
     std::vector<int32_t> counts_;

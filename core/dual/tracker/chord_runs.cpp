@@ -187,4 +187,78 @@ void DualTracker::settleChords() const {
   unsettled_.clear();
 }
 
+// ---- invariants ----
+
+// Pieces and label cuts agree both ways; every place a piece lists holds a live slot carrying the
+// label at that place, whose chordAt is the chord; together the chords list every live slot once.
+void DualTracker::checkChordRuns(const Complex& cx) const {
+  const Dual& d = dual_;
+  const size_t chords = d.chords.size(), labels = runs_.size();
+  if (pieces_.size() != chords || chordSelf_.size() != chords || unsettledMark_.size() != chords ||
+      d.labelCuts.size() != labels || d.labelChord.size() != labels)
+    invariantBroken("the per-chord or per-label arrays disagree in size with " + std::to_string(chords) + " chords and " +
+                    std::to_string(labels) + " labels");
+  int64_t listed = 0;
+  for (int32_t id = 0; id < int32_t(chords); ++id) {
+    const std::string name = "chord " + std::to_string(id);
+    if (!d.chords[size_t(id)].alive) {
+      if (!pieces_[size_t(id)].empty()) invariantBroken("retired " + name + " keeps pieces");
+      continue;
+    }
+    if (pieces_[size_t(id)].empty() || pieces_[size_t(id)].size() > 16 || chordSelf_[size_t(id)] > 2)
+      invariantBroken(name + " has " + std::to_string(pieces_[size_t(id)].size()) + " pieces (1 to 16 allowed)");
+    for (const Piece& p : pieces_[size_t(id)]) {
+      const auto& cuts = d.labelCuts[size_t(p.label)];
+      if (p.lo < 0 || p.lo >= p.hi || size_t(p.hi) > runs_[size_t(p.label)].size() ||
+          std::none_of(cuts.begin(), cuts.end(), [&](const Dual::ChordCut& k) { return k.lo == p.lo && k.hi == p.hi && k.chord == id; }))
+        invariantBroken(name + " has a piece [" + std::to_string(p.lo) + ", " + std::to_string(p.hi) + ") of label " +
+                        std::to_string(p.label) + " that its label's cuts do not list");
+      for (int32_t i = p.lo; i < p.hi; ++i) {
+        const Slot s = runs_[size_t(p.label)][size_t(i)];
+        if (!cx.isHex(s.hex) || d.chordLabel[size_t(s.hex)][size_t(s.axis)] != p.label ||
+            d.chordPlace[slotIndex(s)] != i || d.chordAt(s.hex, s.axis) != id)
+          invariantBroken(name + " lists slot " + slotName(s) + " at place " + std::to_string(i) + " of label " +
+                          std::to_string(p.label) + ", which the slot does not carry");
+      }
+      listed += p.hi - p.lo;
+    }
+    if (!unsettledMark_[size_t(id)]) {
+      std::vector<Slot> slots;
+      appendSlots(pieces_[size_t(id)], slots);
+      if (slots != d.chords[size_t(id)].slots) invariantBroken(name + "'s settled slot list is not its pieces'");
+    }
+  }
+  if (listed != 3 * cx.numHexes())
+    invariantBroken("the chords list " + std::to_string(listed) + " slots, the complex has " +
+                    std::to_string(3 * cx.numHexes()));
+  checkLabelCuts();
+}
+
+// Every cut has its piece; labelChord names a label's one chord; free labels have no cuts; each
+// unsettled chord is listed once.
+void DualTracker::checkLabelCuts() const {
+  const Dual& d = dual_;
+  for (size_t l = 0; l < runs_.size(); ++l) {
+    int32_t one = d.labelCuts[l].empty() ? -1 : d.labelCuts[l][0].chord;
+    for (const Dual::ChordCut& k : d.labelCuts[l]) {
+      const auto& ps = pieces_[size_t(k.chord)];
+      if (std::none_of(ps.begin(), ps.end(), [&](const Piece& p) { return int32_t(l) == p.label && p.lo == k.lo && p.hi == k.hi; }))
+        invariantBroken("label " + std::to_string(l) + " has a cut in chord " + std::to_string(k.chord) +
+                        " that the chord's pieces do not list");
+      one = k.chord == one ? one : -1;
+    }
+    if (d.labelChord[l] != one)
+      invariantBroken("label " + std::to_string(l) + "'s chord is " + std::to_string(d.labelChord[l]) + ", its cuts give " +
+                      std::to_string(one));
+  }
+  for (int32_t l : freeChordLabels_)
+    if (!d.labelCuts[size_t(l)].empty()) invariantBroken("free chord label " + std::to_string(l) + " has cuts");
+  std::vector<uint8_t> listed(unsettledMark_.size(), 0);
+  for (int32_t id : unsettled_)
+    if (listed[size_t(id)]++ || !unsettledMark_[size_t(id)])
+      invariantBroken("chord " + std::to_string(id) + " is listed as unsettled twice or unmarked");
+  for (size_t id = 0; id < listed.size(); ++id)
+    if (unsettledMark_[id] && !listed[id]) invariantBroken("chord " + std::to_string(id) + " is marked unsettled but not listed");
+}
+
 }  // namespace hexdual

@@ -115,4 +115,42 @@ bool DualTracker::touchesBoundary(const Complex& cx, const std::vector<HexId>& t
   return false;
 }
 
+// ---- invariants ----
+
+// Every hex's edge marks and every slot's share recomputed from the complex; each alive sheet's
+// Euler characteristic is half its slots' shares and its topology named from it.
+void DualTracker::checkShares(const Complex& cx) const {
+  std::vector<EdgeRef> inc;
+  std::vector<int64_t> sum(dual_.sheets.size(), 0);
+  for (HexId h = 0; h < HexId(dual_.sheetLabel.size()); ++h) {
+    uint16_t marks = 0;
+    if (cx.isHex(h)) {
+      for (int e = 0; e < 12; ++e) {
+        const bool closed = edgeIncidences(cx, {h, e}, inc);
+        if (*std::min_element(inc.begin(), inc.end()) == EdgeRef{h, e}) marks |= uint16_t(1u << e);
+        if (!closed) marks |= kNearBoundary;
+      }
+    }
+    if (edgeMarks_[size_t(h)] != marks)
+      invariantBroken("hex " + std::to_string(h) + " has edge marks " + std::to_string(edgeMarks_[size_t(h)]) +
+                      ", the complex gives " + std::to_string(marks));
+    for (int a = 0; a < 3; ++a) {
+      const int share = cx.isHex(h) ? slotShare(cx, h, a, marks) : 0;
+      if (share_[slotIndex({h, a})] != share)
+        invariantBroken("slot " + slotName({h, a}) + " has share " + std::to_string(share_[slotIndex({h, a})]) +
+                        ", the complex gives " + std::to_string(share));
+      if (cx.isHex(h)) sum[size_t(dual_.sheetAt(h, a))] += share;
+    }
+  }
+  for (size_t id = 0; id < dual_.sheets.size(); ++id) {
+    const Sheet& sh = dual_.sheets[id];
+    if (!sh.alive) continue;
+    if (sum[id] != 2 * sh.euler)
+      invariantBroken("sheet " + std::to_string(id) + " has Euler characteristic " + std::to_string(sh.euler) +
+                      ", its slots' shares give " + std::to_string(sum[id]) + "/2");
+    if (sh.topology != classifySurface(sh.euler, sh.boundaryLoops, sh.orientable))
+      invariantBroken("sheet " + std::to_string(id) + " is named " + sh.topology + ", not what its Euler characteristic, loops and orientability give");
+  }
+}
+
 }  // namespace hexdual

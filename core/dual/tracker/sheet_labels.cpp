@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <map>
 
 #include "dual/tracker/slots.hpp"
 
@@ -61,6 +62,20 @@ void DualTracker::PairCounts::add(int32_t a, int32_t b, int32_t n) {
     ++used_;
   }
   counts_[i] += n;
+}
+
+int32_t DualTracker::PairCounts::count(int32_t a, int32_t b) const {
+  if (keys_.empty()) return 0;
+  const size_t i = find(pairKey(a, b));
+  return keys_[i] == kNoKey ? 0 : counts_[i];
+}
+
+std::vector<std::array<int32_t, 3>> DualTracker::PairCounts::entries() const {
+  std::vector<std::array<int32_t, 3>> out;
+  for (size_t i = 0; i < keys_.size(); ++i)
+    if (keys_[i] != kNoKey && counts_[i] != 0)
+      out.push_back({int32_t(uint32_t(keys_[i] >> 32)), int32_t(uint32_t(keys_[i])), counts_[i]});
+  return out;
 }
 
 int32_t DualTracker::PairCounts::take(int32_t a, int32_t b) {
@@ -178,6 +193,121 @@ void DualTracker::countSelfHex(HexId h, int sign) {
   countPair(l[0], l[1], sign);
   countPair(l[0], l[2], sign);
   countPair(l[1], l[2], sign);
+}
+
+// ---- invariants ----
+
+// Every label is in exactly one sheet's list (naming that sheet) or free; every slot carries a
+// label of an alive sheet exactly when its hex is live; labelSlots_ and the lists' sizes agree.
+void DualTracker::checkLabelsOf(const Complex& cx) const {
+  const Dual& d = dual_;
+  const size_t labels = d.labelSheet.size();
+  if (labelSlots_.size() != labels || labelFlip_.size() != labels)
+    invariantBroken("the per-label arrays have " + std::to_string(labelSlots_.size()) + " and " +
+                    std::to_string(labelFlip_.size()) + " entries for " + std::to_string(labels) + " labels");
+  std::vector<uint8_t> seen(labels, 0);
+  auto once = [&](int32_t l, const std::string& where) {
+    if (l < 0 || size_t(l) >= labels || seen[size_t(l)]++)
+      invariantBroken("label " + std::to_string(l) + " " + where + " is out of range or listed twice");
+  };
+  for (size_t id = 0; id < labels_.size(); ++id)
+    for (int32_t l : labels_[id]) {
+      once(l, "of sheet " + std::to_string(id));
+      if (d.labelSheet[size_t(l)] != int32_t(id))
+        invariantBroken("label " + std::to_string(l) + " is listed for sheet " + std::to_string(id) + " but names sheet " +
+                        std::to_string(d.labelSheet[size_t(l)]));
+    }
+  for (int32_t l : freeLabels_) once(l, "(free)");
+  for (size_t l = 0; l < labels; ++l)
+    if (!seen[l]) invariantBroken("label " + std::to_string(l) + " is neither a sheet's nor free");
+  std::vector<int32_t> carried(labels, 0), slots(d.sheets.size(), 0);
+  for (HexId h = 0; h < HexId(d.sheetLabel.size()); ++h)
+    for (int a = 0; a < 3; ++a) {
+      const int32_t l = d.sheetLabel[size_t(h)][size_t(a)];
+      if ((l >= 0) != cx.isHex(h))
+        invariantBroken("slot " + slotName({h, a}) + (l >= 0 ? " of a dead hex carries a label" : " carries no label"));
+      if (l < 0) continue;
+      const int32_t id = d.labelSheet[size_t(l)];
+      if (id < 0 || size_t(id) >= d.sheets.size() || !d.sheets[size_t(id)].alive)
+        invariantBroken("slot " + slotName({h, a}) + " carries label " + std::to_string(l) + " of no alive sheet");
+      ++carried[size_t(l)];
+      ++slots[size_t(id)];
+    }
+  for (size_t l = 0; l < labels; ++l)
+    if (carried[l] != labelSlots_[l])
+      invariantBroken("label " + std::to_string(l) + " is carried by " + std::to_string(carried[l]) +
+                      " slots, labelSlots_ says " + std::to_string(labelSlots_[l]));
+  for (size_t id = 0; id < d.sheets.size(); ++id)
+    if (d.sheets[id].alive ? d.sheets[id].id != int(id) || size_t(slots[id]) != d.sheets[id].slots.size()
+                           : slots[id] != 0 || (id < labels_.size() && !labels_[id].empty()))
+      invariantBroken("sheet " + std::to_string(id) + " (" + (d.sheets[id].alive ? "alive" : "retired") + ") lists " +
+                      std::to_string(d.sheets[id].slots.size()) + " slots; " + std::to_string(slots[id]) +
+                      " carry its labels");
+}
+
+// On an orientable sheet, slots glued across a parallel face agree in orientation up to the
+// crossing's flip; a dead slot has none.
+void DualTracker::checkOrientations(const Complex& cx) const {
+  const std::vector<int8_t>& signs = flooder_.signs();
+  for (HexId h = 0; h < HexId(dual_.sheetLabel.size()); ++h)
+    for (int a = 0; a < 3; ++a) {
+      const Slot s{h, a};
+      if (!cx.isHex(h)) {
+        if (signs[slotIndex(s)] != 0) invariantBroken("dead slot " + slotName(s) + " keeps an orientation");
+        continue;
+      }
+      if (!dual_.sheets[size_t(dual_.sheetAt(h, a))].orientable) continue;
+      if (signOf(s) != 1 && signOf(s) != -1) invariantBroken("slot " + slotName(s) + " of an orientable sheet has no orientation");
+      Slot n;
+      int flip;
+      for (int f : kParallelFaces[size_t(a)])
+        if (sheetNeighbour(cx, s, f, n, flip) && signOf(n) != signOf(s) * flip)
+          invariantBroken("slots " + slotName(s) + " and " + slotName(n) + " disagree in orientation across face " +
+                          std::to_string(f));
+    }
+}
+
+// selfPairs_ and pairs_ count the (hex, pair of axes) on one sheet and per pair of labels of two
+// sheets; each alive sheet's selfIntersecting says whether it has a pair.
+void DualTracker::checkPairCounts(const Complex& cx) const {
+  const Dual& d = dual_;
+  if (selfPairs_.size() != d.sheets.size())
+    invariantBroken("selfPairs_ has " + std::to_string(selfPairs_.size()) + " entries for " +
+                    std::to_string(d.sheets.size()) + " sheets");
+  std::vector<int32_t> self(d.sheets.size(), 0);
+  std::map<std::pair<int32_t, int32_t>, int32_t> across;
+  for (HexId h : cx.hexes()) {
+    const auto& l = d.sheetLabel[size_t(h)];
+    for (int a = 0; a < 3; ++a)
+      for (int b = a + 1; b < 3; ++b) {
+        const int32_t la = l[size_t(a)], lb = l[size_t(b)];
+        if (d.labelSheet[size_t(la)] == d.labelSheet[size_t(lb)])
+          ++self[size_t(d.labelSheet[size_t(la)])];
+        else
+          ++across[{std::min(la, lb), std::max(la, lb)}];
+      }
+  }
+  for (size_t id = 0; id < d.sheets.size(); ++id) {
+    if (self[id] != selfPairs_[id])
+      invariantBroken("sheet " + std::to_string(id) + " has " + std::to_string(self[id]) +
+                      " self-intersecting pairs of slots, selfPairs_ says " + std::to_string(selfPairs_[id]));
+    if (d.sheets[id].alive && d.sheets[id].selfIntersecting != (self[id] > 0))
+      invariantBroken("sheet " + std::to_string(id) + "'s selfIntersecting disagrees with its pairs of slots");
+  }
+  for (const auto& [la, lb, n] : pairs_.entries())
+    if (across.count({la, lb}) == 0)
+      invariantBroken("labels " + std::to_string(la) + " and " + std::to_string(lb) + " are counted " + std::to_string(n) +
+                      " pairs but share no hex");
+  for (const auto& [key, n] : across)
+    if (pairs_.count(key.first, key.second) != n)
+      invariantBroken("labels " + std::to_string(key.first) + " and " + std::to_string(key.second) + " share " +
+                      std::to_string(n) + " hexes, pairs_ says " + std::to_string(pairs_.count(key.first, key.second)));
+}
+
+void DualTracker::checkSheetLabels(const Complex& cx) const {
+  checkLabelsOf(cx);
+  checkOrientations(cx);
+  checkPairCounts(cx);
 }
 
 }  // namespace hexdual

@@ -1,7 +1,9 @@
 // Slots and their neighbours, shared by the tracker's units (tracker/*.cpp): a slot's index in the
-// per-slot arrays, the sheet slot across a face, the sheets through a set of hexes. Owns no state.
+// per-slot arrays, the sheet slot across a face, the sheets through a set of hexes; how the
+// invariant checks name a slot and fail. Owns no state.
 #pragma once
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include "complex/complex.hpp"
@@ -31,5 +33,9 @@ inline bool sheetNeighbour(const Complex& cx, Slot s, int f, Slot& n, int& flip)
   flip = c.sign;
   return true;
 }
+
+// For checkInvariants: a slot named as in messages, and the error naming a broken invariant.
+inline std::string slotName(Slot s) { return "h" + std::to_string(s.hex) + " axis " + std::to_string(s.axis); }
+[[noreturn]] inline void invariantBroken(const std::string& what) { throw Error("dual tracker invariant: " + what); }
 
 }  // namespace hexdual::tracker

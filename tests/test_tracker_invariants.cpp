@@ -1,0 +1,166 @@
+// DualTracker::checkInvariants: it holds after every kind of update (each sheet strategy, the local
+// and the re-walked chord update, undos), and it fails, naming the invariant, when the tracker's
+// state is broken on purpose through DualTrackerTestAccess (the friend the tracker declares for this).
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <random>
+
+#include "complex/builders.hpp"
+#include "dual/dual_tracker.hpp"
+#include "helpers.hpp"
+#include "ops/candidates.hpp"
+#include "ops/op_table.hpp"
+#include "ops/oplog.hpp"
+
+namespace hexdual {
+// Reaches into the tracker's private state to break one invariant at a time.
+struct DualTrackerTestAccess {
+  static std::vector<int8_t>& shares(DualTracker& t) { return t.share_; }
+  static std::vector<uint16_t>& edgeMarks(DualTracker& t) { return t.edgeMarks_; }
+  static std::vector<int32_t>& labelSlots(DualTracker& t) { return t.labelSlots_; }
+  static std::vector<int32_t>& freeLabels(DualTracker& t) { return t.freeLabels_; }
+  static std::vector<int8_t>& signs(DualTracker& t) { return t.flooder_.signs(); }
+  static std::vector<int32_t>& selfPairs(DualTracker& t) { return t.selfPairs_; }
+  static void addPair(DualTracker& t, int32_t a, int32_t b) { t.pairs_.add(a, b, 1); }
+  static std::vector<int32_t>& front(DualTracker& t) { return t.front_; }
+  static std::vector<int64_t>& delta(DualTracker& t) { return t.delta_; }
+  static int32_t& pieceHi(DualTracker& t, int32_t chord) { return t.pieces_[size_t(chord)][0].hi; }
+  static std::vector<int32_t>& labelChord(DualTracker& t) { return t.dual_.labelChord; }
+  static int64_t& euler(DualTracker& t, int32_t sheet) { return t.dual_.sheets[size_t(sheet)].euler; }
+  static std::vector<Slot>& chordSlots(DualTracker& t, int32_t chord) { return t.dual_.chords[size_t(chord)].slots; }
+};
+}  // namespace hexdual
+
+using namespace hexdual;
+using namespace hexdual::test;
+
+namespace {
+
+// Applies step text, updates the tracker (and a re-walking one) and checks both trackers' invariants.
+// reflood: the update is told the edit may re-shape sheets even when the operation keeps them.
+void step(Complex& cx, DualTracker& local, DualTracker& walked, const std::string& text, std::vector<OpResult>& done,
+          bool reflood = false) {
+  CAPTURE(text);
+  OpResult r = applyStep(cx, text);
+  local.update(cx, r.edits, keepsSheetTopology(r) && !reflood);
+  walked.update(cx, r.edits, keepsSheetTopology(r) && !reflood);
+  CHECK(errorOf([&] { local.checkInvariants(cx); }) == "");
+  CHECK(errorOf([&] { walked.checkInvariants(cx); }) == "");
+  done.push_back(std::move(r));
+}
+
+void undoAll(Complex& cx, DualTracker& local, DualTracker& walked, std::vector<OpResult>& done) {
+  for (auto it = done.rbegin(); it != done.rend(); ++it) {
+    cx.undo(it->edits);
+    local.update(cx, it->edits, keepsSheetTopology(*it));
+    walked.update(cx, it->edits, keepsSheetTopology(*it));
+    CHECK(errorOf([&] { local.checkInvariants(cx); }) == "");
+    CHECK(errorOf([&] { walked.checkInvariants(cx); }) == "");
+  }
+  done.clear();
+  local.releaseRetiredTail();
+  CHECK(errorOf([&] { local.checkInvariants(cx); }) == "");
+}
+
+}  // namespace
+
+TEST_CASE("dual tracker: checkInvariants holds after each sheet strategy, both chord updates and undos") {
+  Complex cx = makeGrid(7, 7, 7);  // centre hex 171 = (3,3,3), 178 = (3,4,3), 114 = (2,2,2)
+  DualTracker local(cx), walked(cx);
+  walked.setLocalChords(false);
+  CHECK(errorOf([&] { local.checkInvariants(cx); }) == "");
+  std::vector<OpResult> done;
+  // The lockstep flood (an interior face collapse merges two layer sheets), the topology-kept
+  // update (pillow, hex push), then the fallback reflood (an edit at the boundary that may re-shape sheets).
+  step(cx, local, walked, "facecollapse h171e11 h171f1 h178f1", done);
+  CHECK_FALSE(local.lastUpdateReflooded());
+  CHECK(local.mergedLabels() == 1);
+  CHECK_FALSE(local.lastChordsRewalked());
+  CHECK(walked.lastChordsRewalked());
+  step(cx, local, walked, "pillow h171f5", done);
+  step(cx, local, walked, "hexpush h114f1", done);
+  CHECK_FALSE(local.lastUpdateReflooded());
+  step(cx, local, walked, "pillow h0f1", done, true);
+  CHECK(local.lastUpdateReflooded());
+  undoAll(cx, local, walked, done);
+  // A ring collapse after a hex push (the lockstep again, chords joined crosswise).
+  const HexId first = cx.hexCapacity();
+  step(cx, local, walked, "hexpush h171f5", done);
+  std::string ring = "ringcollapse h" + std::to_string(first + 2) + "e";
+  const HexId ringHex = cx.hexCapacity() - 4;
+  for (int a = 0; a < 3; ++a)
+    if (local.dual().chords[size_t(local.dual().chordAt(ringHex, a))].closed) ring += std::to_string(4 * a);
+  step(cx, local, walked, ring, done);
+  CHECK_FALSE(local.lastUpdateReflooded());
+  undoAll(cx, local, walked, done);
+  compareDuals(cx, local.dual(), extractDual(cx));
+}
+
+// Random candidate steps (every one applies) on a grid and a ring; seeds fixed and printed.
+TEST_CASE("dual tracker: checkInvariants holds along random candidate sequences") {
+  const OpKind kinds[] = {OpKind::Pillow,       OpKind::HexPush,  OpKind::ChordPush, OpKind::FaceCollapse,
+                          OpKind::RingCollapse, OpKind::Unpillow, OpKind::HexPull};
+  int applied = 0;
+  for (uint32_t seed = 1; seed <= 6; ++seed) {
+    std::printf("tracker invariants: seed %u\n", seed);
+    CAPTURE(seed);
+    std::mt19937 rng(seed);
+    Complex cx = seed % 2 ? makeGrid(4, 4, 3) : makeRing(8, 2, 2);
+    DualTracker local(cx), walked(cx);
+    walked.setLocalChords(false);
+    std::vector<OpResult> done;
+    for (int k = 0; k < 8; ++k) {
+      const OpKind op = kinds[rng() % 7];
+      const std::vector<OpStep> steps = candidates(cx, op);
+      if (steps.empty()) continue;
+      step(cx, local, walked, formatOpStep(steps[rng() % steps.size()]), done);
+      ++applied;
+    }
+    undoAll(cx, local, walked, done);
+  }
+  CHECK(applied >= 30);
+}
+
+TEST_CASE("dual tracker: checkInvariants names the invariant a broken state breaks") {
+  using A = DualTrackerTestAccess;
+  Complex cx = makeGrid(4, 4, 4);
+  OpResult r = applyStep(cx, "facecollapse h21e11 h21f1 h25f1");  // an interior collapse: labels merged
+  auto fresh = [&] {
+    auto t = std::make_unique<DualTracker>(makeGrid(4, 4, 4));
+    t->update(cx, r.edits, keepsSheetTopology(r));
+    REQUIRE(errorOf([&] { t->checkInvariants(cx); }) == "");
+    return t;
+  };
+  auto broken = [&](const std::function<void(DualTracker&)>& harm) {
+    auto t = fresh();
+    harm(*t);
+    return errorOf([&] { t->checkInvariants(cx); });
+  };
+  const HexId h = 1;
+  const size_t s = 3 * size_t(h) + 2;  // slot (h1, axis 2)
+  CHECK(broken([&](DualTracker& t) { A::shares(t)[s] += 2; }) ==
+        "dual tracker invariant: slot h1 axis 2 has share " + std::to_string(A::shares(*fresh())[s] + 2) +
+            ", the complex gives " + std::to_string(A::shares(*fresh())[s]));
+  CHECK(contains(broken([&](DualTracker& t) { A::edgeMarks(t)[size_t(h)] ^= 1; }), "hex 1 has edge marks"));
+  CHECK(contains(broken([&](DualTracker& t) { ++A::labelSlots(t)[0]; }), "label 0 is carried by"));
+  CHECK(contains(broken([&](DualTracker& t) { A::freeLabels(t).push_back(0); }),
+                 "label 0 (free) is out of range or listed twice"));
+  CHECK(contains(broken([&](DualTracker& t) { A::signs(t)[s] = int8_t(-A::signs(t)[s]); }),
+                 "disagree in orientation across face"));
+  CHECK(contains(broken([&](DualTracker& t) { ++A::selfPairs(t)[0]; }),
+                 "sheet 0 has 0 self-intersecting pairs of slots, selfPairs_ says 1"));
+  CHECK(contains(broken([&](DualTracker& t) { A::addPair(t, 0, 1); }), "pairs_ says"));
+  CHECK(contains(broken([&](DualTracker& t) { A::euler(t, 0) += 1; }),
+                 "sheet 0 has Euler characteristic 2, its slots' shares give 2/2"));
+  CHECK(contains(broken([&](DualTracker& t) { --A::pieceHi(t, 0); }), "chord 0 has a piece [0, "));
+  CHECK(contains(broken([&](DualTracker& t) { A::labelChord(t)[0] = -1; }), "label 0's chord is -1, its cuts give 0"));
+  CHECK(contains(broken([&](DualTracker& t) { std::swap(A::chordSlots(t, 0)[0], A::chordSlots(t, 0)[1]); }),
+                 "chord 0's settled slot list is not its pieces'"));
+  CHECK(broken([&](DualTracker& t) { A::front(t)[s] = 1; }) ==
+        "dual tracker invariant: front_ marks left after an update");
+  CHECK(broken([&](DualTracker& t) { A::delta(t)[0] = 2; }) ==
+        "dual tracker invariant: delta_ (Euler changes) left after an update");
+}
