@@ -109,7 +109,8 @@ void DualTracker::releaseRetiredTail() {
   pieces_.resize(dual_.chords.size());
   chordSelf_.resize(dual_.chords.size());
   unsettledMark_.resize(dual_.chords.size());
-  unsettled_.erase(std::remove_if(unsettled_.begin(), unsettled_.end(), [&](int32_t id) { return size_t(id) >= dual_.chords.size(); }),
+  unsettled_.erase(std::remove_if(unsettled_.begin(), unsettled_.end(),
+                                  [&](int32_t id) { return size_t(id) >= dual_.chords.size(); }),
                    unsettled_.end());
 }
 

@@ -86,7 +86,7 @@ class DualTracker {
 
  private:
   friend struct DualTrackerTestAccess;  // tests break the state on purpose to see checkInvariants fail
-  struct TopologyKept;  // one topology-kept update's state and steps (tracker/sheets_topology_kept.cpp)
+  struct TopologyKept;                  // one topology-kept update's state and steps (tracker/sheets_topology_kept.cpp)
   bool updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   struct Lockstep;  // one lockstep update's state and steps (tracker/sheets_interior_lockstep.cpp)
   bool updateSheetsLockstep(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
@@ -146,7 +146,7 @@ class DualTracker {
   void checkPairCounts(const Complex& cx) const;
   void growPerHexArrays(size_t cap);
   void checkScratchCleared() const;
-  mutable Dual dual_;  // dual() settles chord lists
+  mutable Dual dual_;                         // dual() settles chord lists
   std::vector<std::vector<int32_t>> labels_;  // per sheet id: the labels naming it
   std::vector<int32_t> labelSlots_;           // per label: slots carrying it
   std::vector<uint8_t> labelFlip_;            // per label: its slots' stored orientations are flipped
@@ -161,7 +161,7 @@ class DualTracker {
     int32_t count(int32_t a, int32_t b) const;            // the count (checkInvariants)
     std::vector<std::array<int32_t, 3>> entries() const;  // (a, b, count) of the non-zero counts
    private:
-  friend struct DualTrackerTestAccess;  // tests break the state on purpose to see checkInvariants fail
+    friend struct DualTrackerTestAccess;  // tests break the state on purpose to see checkInvariants fail
     size_t find(uint64_t key) const;
     std::vector<uint64_t> keys_;
     std::vector<int32_t> counts_;
@@ -175,18 +175,18 @@ class DualTracker {
   // Per slot: twice its share of its sheet's Euler characteristic (2 - sides - boundary sides +
   // 2 x primal edges it holds the smallest incidence of); a sheet's Euler characteristic is half the sum.
   std::vector<int8_t> share_;
-  std::vector<int32_t> front_;     // per slot: lockstep front + 1 that reached it (0 outside an update)
-  std::vector<uint16_t> walked_;   // per hex: edges walked by the current refreshShares (0 outside it)
+  std::vector<int32_t> front_;    // per slot: lockstep front + 1 that reached it (0 outside an update)
+  std::vector<uint16_t> walked_;  // per hex: edges walked by the current refreshShares (0 outside it)
   // Chords: per label its run of slots (by place); per chord id its pieces; labels no slot carries.
   std::vector<std::vector<Slot>> runs_;
   std::vector<std::vector<Piece>> pieces_;
   std::vector<int32_t> freeChordLabels_;
-  std::vector<int32_t> dropped_;  // labels that lost places in this update (released after it)
+  std::vector<int32_t> dropped_;            // labels that lost places in this update (released after it)
   mutable std::vector<uint8_t> chordSelf_;  // per chord id: 0/1 self-intersecting, 2 not known until read
   mutable std::vector<int32_t> unsettled_;  // chord ids whose Chord::slots wait for the next dual()
   mutable std::vector<uint8_t> unsettledMark_;
   bool localChords_ = true, chordsRewalked_ = false;
-  std::vector<int64_t> delta_;     // per sheet id: change of twice its Euler characteristic (0 outside an update)
+  std::vector<int64_t> delta_;  // per sheet id: change of twice its Euler characteristic (0 outside an update)
   size_t slotsTouched_ = 0, sheetSlotsTouched_ = 0, mergedLabels_ = 0;
   bool reflooded_ = false;
 };

@@ -8,10 +8,9 @@
 // place a cut lists holds a slot carrying that label at that place (chordPlace), whose chordAt is
 // the cut's chord; a chord has at most 16 pieces; a free label has no cuts; a chord whose slot
 // list is not settled is listed in unsettled_ once.
-#include "dual/dual_tracker.hpp"
-
 #include <algorithm>
 
+#include "dual/dual_tracker.hpp"
 #include "dual/tracker/slots.hpp"
 
 namespace hexdual {
@@ -46,7 +45,8 @@ void DualTracker::dropPieces(const std::vector<int32_t>& ids) {
 // The slots of pieces, in order.
 void DualTracker::appendSlots(const std::vector<Piece>& pieces, std::vector<Slot>& out) const {
   for (const Piece& p : pieces)
-    for (int32_t k = 0; k < p.hi - p.lo; ++k) out.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
+    for (int32_t k = 0; k < p.hi - p.lo; ++k)
+      out.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
 }
 
 Slot DualTracker::chordSlotAt(int32_t id, int32_t q) const {
@@ -196,8 +196,8 @@ void DualTracker::checkChordRuns(const Complex& cx) const {
   const size_t chords = d.chords.size(), labels = runs_.size();
   if (pieces_.size() != chords || chordSelf_.size() != chords || unsettledMark_.size() != chords ||
       d.labelCuts.size() != labels || d.labelChord.size() != labels)
-    invariantBroken("the per-chord or per-label arrays disagree in size with " + std::to_string(chords) + " chords and " +
-                    std::to_string(labels) + " labels");
+    invariantBroken("the per-chord or per-label arrays disagree in size with " + std::to_string(chords) +
+                    " chords and " + std::to_string(labels) + " labels");
   int64_t listed = 0;
   for (int32_t id = 0; id < int32_t(chords); ++id) {
     const std::string name = "chord " + std::to_string(id);
@@ -210,7 +210,8 @@ void DualTracker::checkChordRuns(const Complex& cx) const {
     for (const Piece& p : pieces_[size_t(id)]) {
       const auto& cuts = d.labelCuts[size_t(p.label)];
       if (p.lo < 0 || p.lo >= p.hi || size_t(p.hi) > runs_[size_t(p.label)].size() ||
-          std::none_of(cuts.begin(), cuts.end(), [&](const Dual::ChordCut& k) { return k.lo == p.lo && k.hi == p.hi && k.chord == id; }))
+          std::none_of(cuts.begin(), cuts.end(),
+                       [&](const Dual::ChordCut& k) { return k.lo == p.lo && k.hi == p.hi && k.chord == id; }))
         invariantBroken(name + " has a piece [" + std::to_string(p.lo) + ", " + std::to_string(p.hi) + ") of label " +
                         std::to_string(p.label) + " that its label's cuts do not list");
       for (int32_t i = p.lo; i < p.hi; ++i) {
@@ -242,14 +243,15 @@ void DualTracker::checkLabelCuts() const {
     int32_t one = d.labelCuts[l].empty() ? -1 : d.labelCuts[l][0].chord;
     for (const Dual::ChordCut& k : d.labelCuts[l]) {
       const auto& ps = pieces_[size_t(k.chord)];
-      if (std::none_of(ps.begin(), ps.end(), [&](const Piece& p) { return int32_t(l) == p.label && p.lo == k.lo && p.hi == k.hi; }))
+      if (std::none_of(ps.begin(), ps.end(),
+                       [&](const Piece& p) { return int32_t(l) == p.label && p.lo == k.lo && p.hi == k.hi; }))
         invariantBroken("label " + std::to_string(l) + " has a cut in chord " + std::to_string(k.chord) +
                         " that the chord's pieces do not list");
       one = k.chord == one ? one : -1;
     }
     if (d.labelChord[l] != one)
-      invariantBroken("label " + std::to_string(l) + "'s chord is " + std::to_string(d.labelChord[l]) + ", its cuts give " +
-                      std::to_string(one));
+      invariantBroken("label " + std::to_string(l) + "'s chord is " + std::to_string(d.labelChord[l]) +
+                      ", its cuts give " + std::to_string(one));
   }
   for (int32_t l : freeChordLabels_)
     if (!d.labelCuts[size_t(l)].empty()) invariantBroken("free chord label " + std::to_string(l) + " has cuts");
@@ -258,7 +260,8 @@ void DualTracker::checkLabelCuts() const {
     if (listed[size_t(id)]++ || !unsettledMark_[size_t(id)])
       invariantBroken("chord " + std::to_string(id) + " is listed as unsettled twice or unmarked");
   for (size_t id = 0; id < listed.size(); ++id)
-    if (unsettledMark_[id] && !listed[id]) invariantBroken("chord " + std::to_string(id) + " is marked unsettled but not listed");
+    if (unsettledMark_[id] && !listed[id])
+      invariantBroken("chord " + std::to_string(id) + " is marked unsettled but not listed");
 }
 
 }  // namespace hexdual

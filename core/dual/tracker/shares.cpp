@@ -6,10 +6,9 @@
 // incidence, and kNearBoundary exactly when one of h's 12 edges reaches the boundary; every live
 // slot's share_ is slotShare() of its hex's marks, a dead slot's is 0; a sheet's Euler
 // characteristic is half the sum of its slots' shares; walked_ is 0 outside refreshShares.
-#include "dual/dual_tracker.hpp"
-
 #include <algorithm>
 
+#include "dual/dual_tracker.hpp"
 #include "dual/tracker/slots.hpp"
 
 namespace hexdual {
@@ -49,7 +48,8 @@ bool nearBoundary(const Complex& cx, HexId h) {
 
 }  // namespace
 
-void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& touched, std::vector<ShareChange>* changes) {
+void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& touched,
+                                std::vector<ShareChange>* changes) {
   auto onChange = [&](Slot t, int before, int after) {
     if (changes) changes->push_back({t, before, after});
   };
@@ -93,7 +93,8 @@ void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& tou
   // it when one of those is a fan now, or (when it was near before) one of its other edges is.
   if (fan || nearBefore)
     for (HexId m : met) {
-      const bool near = (walked_[size_t(m)] & kWalkedFan) || ((edgeMarks_[size_t(m)] & kNearBoundary) && nearBoundary(cx, m));
+      const bool near =
+          (walked_[size_t(m)] & kWalkedFan) || ((edgeMarks_[size_t(m)] & kNearBoundary) && nearBoundary(cx, m));
       edgeMarks_[size_t(m)] = uint16_t((edgeMarks_[size_t(m)] & ~kNearBoundary) | (near ? kNearBoundary : 0));
     }
   for (HexId m : met) walked_[size_t(m)] = 0;
@@ -149,7 +150,8 @@ void DualTracker::checkShares(const Complex& cx) const {
       invariantBroken("sheet " + std::to_string(id) + " has Euler characteristic " + std::to_string(sh.euler) +
                       ", its slots' shares give " + std::to_string(sum[id]) + "/2");
     if (sh.topology != classifySurface(sh.euler, sh.boundaryLoops, sh.orientable))
-      invariantBroken("sheet " + std::to_string(id) + " is named " + sh.topology + ", not what its Euler characteristic, loops and orientability give");
+      invariantBroken("sheet " + std::to_string(id) + " is named " + sh.topology +
+                      ", not what its Euler characteristic, loops and orientability give");
   }
 }
 

@@ -8,12 +8,11 @@
 // label is carried by no slot; on an orientable sheet, slots glued across a parallel face have
 // orientations (signOf) that agree up to the crossing's flip; selfPairs_[id] counts the (hex,
 // pair of axes) with both slots on sheet id, and pairs_ the same per pair of labels of two sheets.
-#include "dual/dual_tracker.hpp"
-
 #include <algorithm>
 #include <bit>
 #include <map>
 
+#include "dual/dual_tracker.hpp"
 #include "dual/tracker/slots.hpp"
 
 namespace hexdual {
@@ -214,8 +213,8 @@ void DualTracker::checkLabelsOf(const Complex& cx) const {
     for (int32_t l : labels_[id]) {
       once(l, "of sheet " + std::to_string(id));
       if (d.labelSheet[size_t(l)] != int32_t(id))
-        invariantBroken("label " + std::to_string(l) + " is listed for sheet " + std::to_string(id) + " but names sheet " +
-                        std::to_string(d.labelSheet[size_t(l)]));
+        invariantBroken("label " + std::to_string(l) + " is listed for sheet " + std::to_string(id) +
+                        " but names sheet " + std::to_string(d.labelSheet[size_t(l)]));
     }
   for (int32_t l : freeLabels_) once(l, "(free)");
   for (size_t l = 0; l < labels; ++l)
@@ -257,7 +256,8 @@ void DualTracker::checkOrientations(const Complex& cx) const {
         continue;
       }
       if (!dual_.sheets[size_t(dual_.sheetAt(h, a))].orientable) continue;
-      if (signOf(s) != 1 && signOf(s) != -1) invariantBroken("slot " + slotName(s) + " of an orientable sheet has no orientation");
+      if (signOf(s) != 1 && signOf(s) != -1)
+        invariantBroken("slot " + slotName(s) + " of an orientable sheet has no orientation");
       Slot n;
       int flip;
       for (int f : kParallelFaces[size_t(a)])
@@ -296,8 +296,8 @@ void DualTracker::checkPairCounts(const Complex& cx) const {
   }
   for (const auto& [la, lb, n] : pairs_.entries())
     if (across.count({la, lb}) == 0)
-      invariantBroken("labels " + std::to_string(la) + " and " + std::to_string(lb) + " are counted " + std::to_string(n) +
-                      " pairs but share no hex");
+      invariantBroken("labels " + std::to_string(la) + " and " + std::to_string(lb) + " are counted " +
+                      std::to_string(n) + " pairs but share no hex");
   for (const auto& [key, n] : across)
     if (pairs_.count(key.first, key.second) != n)
       invariantBroken("labels " + std::to_string(key.first) + " and " + std::to_string(key.second) + " share " +

@@ -3,10 +3,9 @@
 // the touched hexes is re-flooded whole (relabel), its labels freed and new ones given, ids kept
 // by the smallest-old-id rule. It costs the touched sheets whole; lastUpdateReflooded() says so.
 // Owns nothing between updates.
-#include "dual/dual_tracker.hpp"
-
 #include <algorithm>
 
+#include "dual/dual_tracker.hpp"
 #include "dual/tracker/relabel.hpp"
 #include "dual/tracker/slots.hpp"
 
@@ -43,8 +42,9 @@ void DualTracker::updateSheetsByFlood(const Complex& cx, const std::vector<HexId
     if (dual_.sheets.size() <= size_t(id)) selfPairs_.resize(size_t(id) + 1, 0);
     return newLabel(id);
   };
-  sheetSlotsTouched_ += relabel(cx, touched, dual_.sheetLabel, dual_.sheets, old, walk, change.sheetsCreated,
-                                change.sheetsChanged, change.sheetsRemoved, [](int) { return false; }, labelOf);
+  sheetSlotsTouched_ += relabel(
+      cx, touched, dual_.sheetLabel, dual_.sheets, old, walk, change.sheetsCreated, change.sheetsChanged,
+      change.sheetsRemoved, [](int) { return false; }, labelOf);
   for (HexId h : touched)
     if (!cx.isHex(h))
       for (int a = 0; a < 3; ++a) flooder_.signs()[3 * size_t(h) + size_t(a)] = 0;
