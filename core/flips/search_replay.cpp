@@ -1,13 +1,12 @@
 // Replay: steps translated between isomorphic regions (through their canonical labellings), and a
 // found decomposition replayed step by step in a host mesh and checked against the flip (or the
 // triple-chord push) applied there directly.
-#include "flips/search_parts.hpp"
-
 #include <algorithm>
 #include <map>
 
 #include "flips/flip.hpp"
 #include "flips/fourcube.hpp"
+#include "flips/search_parts.hpp"
 
 namespace hexdual::flipsearch {
 using namespace tables;
@@ -63,8 +62,6 @@ OpStep translateStep(OpStep st, const CanonicalLabelling& from, const CanonicalL
   return st;
 }
 
-// The region of `cx` as a complex whose vertex ids are renamed: ids in `rename` take their mapped
-// value (boundary vertices shared with the problem), all others get fresh ids from `fresh` on.
 // The vertex shared by all of `hexes` (the centre of a triple-chord push's 8 hexes), or -1.
 VertexId commonVertex(const Complex& cx, const std::vector<HexId>& hexes) {
   for (VertexId v : cx.hexVertices(hexes.at(0))) {
@@ -96,6 +93,8 @@ std::vector<Complex> tripleChordPushesAt(const Complex& cx, const std::vector<He
   return out;
 }
 
+// The region of `cx` as a complex whose vertex ids are renamed: ids in `rename` take their mapped
+// value (boundary vertices shared with the problem), all others get fresh ids from `fresh` on.
 Complex renamedRegion(const Complex& cx, const std::vector<HexId>& region, const std::map<VertexId, VertexId>& rename,
                       VertexId fresh, std::vector<HexId>& regionOrder) {
   std::map<VertexId, VertexId> ids = rename;
@@ -143,35 +142,58 @@ namespace hexdual {
 using namespace tables;
 using namespace flipsearch;
 
-std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector<OpStep>& steps, Complex& mesh,
-                                      const std::vector<HexId>& beforeHexes, const std::string& placeName) {
-  const std::string what = pb.name + " in " + placeName;
-  Embedding where{placeName, mesh, beforeHexes};
-  // Match the problem's before side (its region) with the embedding's before hexes: flipping both
-  // directly and comparing is the goal; the boundary vertex map comes from the region boundary.
-  std::vector<HexId> regionP = regionOf(pb.start, pb.host);
-  std::vector<HexId> hostE;
+namespace {
+
+// A problem's steps replayed in a host mesh: the problem's before side matched with the mesh's, the
+// vertex names both regions are labelled with, and each step carried over through the canonical
+// labellings of the two regions.
+struct Replay {
+  const SearchProblem& pb;
+  const std::string what;
+  const Embedding where;  // the mesh as it was: its host and before side
+  std::vector<HexId> regionP, hostP, hostE;
+  std::map<VertexId, VertexId> toProblem;  // embedding vertex -> problem vertex
+  std::map<VertexId, VertexId> idP, toProblemHost;
+  VertexId fresh = 0;
+
+  Replay(const SearchProblem& problem, const Complex& mesh, const std::vector<HexId>& beforeHexes,
+         const std::string& placeName);
+  void matchBeforeSides();
+  void nameVertices();
+  OpStep throughRegion(OpStep src, size_t k, const Complex& cp, std::vector<bool>& partner,
+                       std::vector<bool>& partner2) const;
+  OpStep place(const OpStep& step, size_t k, const Complex& cp, const Complex& ce) const;
+};
+
+Replay::Replay(const SearchProblem& problem, const Complex& mesh, const std::vector<HexId>& beforeHexes,
+               const std::string& placeName)
+    : pb(problem), what(problem.name + " in " + placeName), where{placeName, mesh, beforeHexes} {
+  regionP = regionOf(pb.start, pb.host);
   for (HexId h : where.mesh.hexes())
     if (std::find(where.before.begin(), where.before.end(), h) == where.before.end()) hostE.push_back(h);
-  // Boundary vertex map (problem -> embedding): the before sides are isomorphic with boundary kept,
-  // so match them by their canonical labellings with both boundaries left free.
+  matchBeforeSides();
+  hostP = pb.host;
+  std::sort(hostP.begin(), hostP.end());
+  std::sort(hostE.begin(), hostE.end());
+  nameVertices();
+}
+
+// Match the problem's before side (its region) with the embedding's before hexes: flipping both
+// directly and comparing is the goal; the boundary vertex map comes from the region boundary.
+// Boundary vertex map (problem -> embedding): the before sides are isomorphic with boundary kept,
+// so match them by their canonical labellings with both boundaries left free.
+void Replay::matchBeforeSides() {
   CanonicalLabelling lp = canonicalLabelling(subcomplex(pb.start, regionP), false);
   CanonicalLabelling le = canonicalLabelling(subcomplex(where.mesh, where.before), false);
   if (lp.form != le.form) throw Error(what + ": the hexes are not the before side");
-  std::map<VertexId, VertexId> toProblem;  // embedding vertex -> problem vertex
   for (size_t i = 0; i < lp.order.size(); ++i)
     for (int b = 0; b < 8; ++b)
       toProblem[where.mesh.vertex(le.order[i], le.frame[i][size_t(b)])] =
           pb.start.vertex(lp.order[i], lp.frame[i][size_t(b)]);
-  std::vector<HexId> hostP = pb.host;
-  std::sort(hostP.begin(), hostP.end());
-  std::sort(hostE.begin(), hostE.end());
-  HostSnapshot snapE = snapshot(where.mesh, hostE);
-  Complex cp = pb.start;
-  Complex& ce = mesh;
-  std::vector<OpStep> applied;
-  // Boundary (host) vertices keep shared names: problem ids on both sides; others get fresh ids.
-  std::map<VertexId, VertexId> idP, toProblemHost;
+}
+
+// Boundary (host) vertices keep shared names: problem ids on both sides; others get fresh ids.
+void Replay::nameVertices() {
   for (HexId h : hostP)
     for (VertexId v : pb.start.hexVertices(h)) idP[v] = v;
   // (and so do region vertices on the mesh boundary, which the embedding names through toProblem)
@@ -179,66 +201,88 @@ std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector
     for (VertexId v : pb.start.hexVertices(h)) idP[v] = v;
   for (HexId h : where.before)  // the before side's vertices, on the mesh boundary or not
     for (VertexId v : where.mesh.hexVertices(h)) toProblemHost[v] = toProblem[v];
-  const VertexId fresh = std::max(pb.start.vertexCapacity(), where.mesh.vertexCapacity()) + 64;
+  fresh = std::max(pb.start.vertexCapacity(), where.mesh.vertexCapacity()) + 64;
+}
+
+// Arguments named through a host hex are re-expressed through the region side of the same quad
+// or edge (host hexes may differ between hosts); `partner` remembers a side to swap back.
+OpStep Replay::throughRegion(OpStep src, size_t k, const Complex& cp, std::vector<bool>& partner,
+                             std::vector<bool>& partner2) const {
+  for (size_t i = 0; i < src.args.size(); ++i) {
+    OpArg& arg = src.args[i];
+    if (arg.kind == OpArg::Pair && isHost(hostP, arg.second.hex)) {
+      Gluing g = cp.gluing(arg.second);
+      if (g.boundary() || isHost(hostP, g.hex))
+        throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
+      arg.second = {g.hex, g.face};
+      partner2[i] = true;
+    }
+    if (!isHost(hostP, arg.hex)) continue;
+    if (arg.kind == OpArg::Quad || arg.kind == OpArg::Pair) {
+      Gluing g = cp.gluing(arg.hex, arg.local);
+      if (g.boundary() || isHost(hostP, g.hex))
+        throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
+      arg.hex = g.hex;
+      arg.local = g.face;
+      partner[i] = true;
+    } else if (arg.kind == OpArg::Edge) {
+      bool placed = false;
+      for (EdgeRef x : cp.edgeCycle({arg.hex, arg.local}))
+        if (!isHost(hostP, x.hex)) {
+          arg.hex = x.hex;
+          arg.local = x.edge;
+          placed = true;
+          break;
+        }
+      if (!placed) throw Error(what + ": step " + std::to_string(k + 1) + " names a host edge away from the region");
+    } else {
+      throw Error(what + ": step " + std::to_string(k + 1) + " names host hex " + std::to_string(arg.hex));
+    }
+  }
+  return src;
+}
+
+// Step k (of the problem, applied next to cp) as it applies to ce: the regions' labellings must
+// agree; the step is translated through them and its host sides swapped back.
+OpStep Replay::place(const OpStep& step, size_t k, const Complex& cp, const Complex& ce) const {
+  CanonicalLabelling a = labelRegion(cp, hostP, idP, fresh);
+  CanonicalLabelling b = labelRegion(ce, hostE, toProblemHost, fresh);
+  if (a.form != b.form) throw Error(what + ": before step " + std::to_string(k + 1) + " the regions differ");
+  std::vector<bool> partner(step.args.size(), false), partner2(step.args.size(), false);
+  OpStep st = translateStep(throughRegion(step, k, cp, partner, partner2), a, b, hostP);
+  for (size_t i = 0; i < st.args.size(); ++i) {
+    if (partner[i]) {
+      Gluing g = ce.gluing(st.args[i].hex, st.args[i].local);
+      st.args[i].hex = g.hex;
+      st.args[i].local = g.face;
+    }
+    if (partner2[i]) {
+      Gluing g = ce.gluing(st.args[i].second);
+      st.args[i].second = {g.hex, g.face};
+    }
+  }
+  return st;
+}
+
+}  // namespace
+
+std::vector<OpStep> replayInEmbedding(const SearchProblem& pb, const std::vector<OpStep>& steps, Complex& mesh,
+                                      const std::vector<HexId>& beforeHexes, const std::string& placeName) {
+  const Replay rp(pb, mesh, beforeHexes, placeName);
+  HostSnapshot snapE = snapshot(rp.where.mesh, rp.hostE);
+  Complex cp = pb.start;
+  Complex& ce = mesh;
+  std::vector<OpStep> applied;
   for (size_t k = 0; k < steps.size(); ++k) {
-    CanonicalLabelling a = labelRegion(cp, hostP, idP, fresh);
-    CanonicalLabelling b = labelRegion(ce, hostE, toProblemHost, fresh);
-    if (a.form != b.form) throw Error(what + ": before step " + std::to_string(k + 1) + " the regions differ");
-    // Arguments named through a host hex are re-expressed through the region side of the same
-    // quad or edge (host hexes may differ between hosts); `partner` remembers a side to swap back.
-    OpStep src = steps[k];
-    std::vector<bool> partner(src.args.size(), false), partner2(src.args.size(), false);
-    for (size_t i = 0; i < src.args.size(); ++i) {
-      OpArg& arg = src.args[i];
-      if (arg.kind == OpArg::Pair && isHost(hostP, arg.second.hex)) {
-        Gluing g = cp.gluing(arg.second);
-        if (g.boundary() || isHost(hostP, g.hex))
-          throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
-        arg.second = {g.hex, g.face};
-        partner2[i] = true;
-      }
-      if (!isHost(hostP, arg.hex)) continue;
-      if (arg.kind == OpArg::Quad || arg.kind == OpArg::Pair) {
-        Gluing g = cp.gluing(arg.hex, arg.local);
-        if (g.boundary() || isHost(hostP, g.hex))
-          throw Error(what + ": step " + std::to_string(k + 1) + " names a host quad");
-        arg.hex = g.hex;
-        arg.local = g.face;
-        partner[i] = true;
-      } else if (arg.kind == OpArg::Edge) {
-        bool placed = false;
-        for (EdgeRef x : cp.edgeCycle({arg.hex, arg.local}))
-          if (!isHost(hostP, x.hex)) {
-            arg.hex = x.hex;
-            arg.local = x.edge;
-            placed = true;
-            break;
-          }
-        if (!placed) throw Error(what + ": step " + std::to_string(k + 1) + " names a host edge away from the region");
-      } else {
-        throw Error(what + ": step " + std::to_string(k + 1) + " names host hex " + std::to_string(arg.hex));
-      }
-    }
-    OpStep st = translateStep(src, a, b, hostP);
-    for (size_t i = 0; i < st.args.size(); ++i) {
-      if (partner[i]) {
-        Gluing g = ce.gluing(st.args[i].hex, st.args[i].local);
-        st.args[i].hex = g.hex;
-        st.args[i].local = g.face;
-      }
-      if (partner2[i]) {
-        Gluing g = ce.gluing(st.args[i].second);
-        st.args[i].second = {g.hex, g.face};
-      }
-    }
+    OpStep st = rp.place(steps[k], k, cp, ce);
     try {
       applyStep(cp, steps[k]);
       applyStep(ce, st);
     } catch (const Error& e) {
-      throw Error(what + ": step " + std::to_string(k + 1) + " (" + formatOpStep(st) + "): " + e.what());
+      throw Error(rp.what + ": step " + std::to_string(k + 1) + " (" + formatOpStep(st) + "): " + e.what());
     }
     std::string why = localityViolation(ce, snapE);
-    if (!why.empty()) throw Error(what + ": step " + std::to_string(k + 1) + " is not local: " + why);
+    if (!why.empty()) throw Error(rp.what + ": step " + std::to_string(k + 1) + " is not local: " + why);
     applied.push_back(st);
   }
   return applied;
