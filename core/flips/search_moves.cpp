@@ -26,14 +26,7 @@ bool freshClosedStar(const Complex& cx, HexId h, int e, std::vector<EdgeRef>& se
 
 namespace {
 
-// v's neighbour in quad q other than `away`, -1 when v is not on q.
-VertexId neighbourInQuad(const Complex& cx, QuadSide q, VertexId v, VertexId away) {
-  std::array<VertexId, 4> fv;
-  for (int p = 0; p < 4; ++p) fv[size_t(p)] = cx.vertex(q.hex, kFaceCorners[size_t(q.face)][size_t(p)]);
-  for (int p = 0; p < 4; ++p)
-    if (fv[size_t(p)] == v) return fv[size_t((p + 1) & 3)] == away ? fv[size_t((p + 3) & 3)] : fv[size_t((p + 1) & 3)];
-  return VertexId(-1);
-}
+using ops::neighbourInQuad;
 
 // Ring splits generated forward (TK03 §4.4, the inverse of a ring collapse): every closed loop of
 // region edges, at most `maxLen` long, with two strips of quads along it — f_k and g_k share the

@@ -28,6 +28,14 @@ int orientByVertices(const Complex& cx, HexId a, int fa, HexId b, int fb);
 void glueByVertices(Complex& cx, HexId a, int fa, HexId b, int fb);
 // The sorted vertex ids of a face.
 std::array<VertexId, 4> faceVertexSet(const Complex& cx, HexId h, int f);
+// v's neighbour in quad q other than `away`, -1 when v is not on q.
+inline VertexId neighbourInQuad(const Complex& cx, QuadSide q, VertexId v, VertexId away) {
+  std::array<VertexId, 4> fv;
+  for (int p = 0; p < 4; ++p) fv[size_t(p)] = cx.vertex(q.hex, tables::kFaceCorners[size_t(q.face)][size_t(p)]);
+  for (int p = 0; p < 4; ++p)
+    if (fv[size_t(p)] == v) return fv[size_t((p + 1) & 3)] == away ? fv[size_t((p + 3) & 3)] : fv[size_t((p + 1) & 3)];
+  return VertexId(-1);
+}
 
 // The closed cycle of hexes and quads around an interior edge: incidence k, then quad k between
 // incidence k (its face exitFace[k]) and incidence k+1 (its face entryFace[k+1]).
