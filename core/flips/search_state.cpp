@@ -247,9 +247,63 @@ Key128 RegionEncoder::key(const Complex& cx, const std::vector<uint8_t>& isHost,
   return hashWords(minForm(cx, isHost));
 }
 
+namespace {
+
+// The frame of a start flag on boundary side f whose (mapped) corner vertices are v: canonical
+// corner 0 on the smallest vertex, x toward its smaller neighbour, z inward.
+int frameOf(const FrameTables& T, int f, const std::array<VertexId, 4>& v) {
+  int p0 = int(std::min_element(v.begin(), v.end()) - v.begin());
+  int pn = (p0 + 1) & 3, pp = (p0 + 3) & 3;
+  int p1 = v[size_t(pn)] < v[size_t(pp)] ? pn : pp, p2 = p1 == pn ? pp : pn;
+  int c0 = kFaceCorners[size_t(f)][size_t(p0)], c1 = kFaceCorners[size_t(f)][size_t(p1)],
+      c2 = kFaceCorners[size_t(f)][size_t(p2)];
+  std::array<int8_t, 8> F{};
+  for (int b = 0; b < 8; ++b) {
+    int bits[3] = {cornerBit(c0, 0), cornerBit(c0, 1), cornerBit(c0, 2)};
+    for (int x = 0; x < 3; ++x) {
+      if ((b & 1) && cornerBit(c1, x) != cornerBit(c0, x)) bits[x] ^= 1;
+      if ((b & 2) && cornerBit(c2, x) != cornerBit(c0, x)) bits[x] ^= 1;
+    }
+    if (b & 4) bits[axisOfFace(f)] ^= 1;
+    F[size_t(b)] = int8_t(cornerAt(bits[0], bits[1], bits[2]));
+  }
+  return T.indexOf(F);
+}
+
+// Four ids sorted by a 5-comparator network (this runs for every side under every map).
+std::array<VertexId, 4> sorted4(std::array<VertexId, 4> a) {
+  auto cs = [&](int i, int j) {
+    if (a[size_t(j)] < a[size_t(i)]) std::swap(a[size_t(i)], a[size_t(j)]);
+  };
+  cs(0, 1), cs(2, 3), cs(0, 2), cs(1, 3), cs(1, 2);
+  return a;
+}
+
+}  // namespace
+
 const std::vector<int64_t>& RegionEncoder::minForm(const Complex& cx, const std::vector<uint8_t>& isHost) {
-  const FrameTables& T = frameTables();
   relabel_ = nullptr;
+  reserveStamps(cx);
+  const HexId regionSize = collectBoundarySides(cx, isHost);
+  best_.clear();
+  if (regionSize == 0) return best_;
+  if (sides_.empty()) {
+    // A region without boundary (cut off from the host: never a local state): any encoding will do.
+    for (HexId h : cx.hexes())
+      if (!outside(isHost, h)) {
+        encodeFrom(cx, isHost, h, 0, best_, nullptr);
+        best_.push_back(-4);
+        return best_;
+      }
+  }
+  const Start best = smallestOverMaps(cx, isHost);
+  // A region in several pieces: the pieces not reached are appended.
+  if (best_.back() < int64_t(regionSize)) appendUnreachedPieces(cx, isHost, best);
+  return best_;
+}
+
+// The per-hex and per-vertex stamps sized for cx; a new generation of vertex keep-stamps.
+void RegionEncoder::reserveStamps(const Complex& cx) {
   size_t nh = size_t(cx.hexCapacity()), nv = size_t(cx.vertexCapacity());
   if (hexStamp_.size() < nh) {
     hexStamp_.resize(nh, 0);
@@ -265,8 +319,12 @@ const std::vector<int64_t>& RegionEncoder::minForm(const Complex& cx, const std:
     std::fill(keepStamp_.begin(), keepStamp_.end(), 0);
     keepGen_ = 1;
   }
-  // Region boundary sides (mesh boundary or glued outside the region): their vertices keep their
-  // ids; under each vertex map, the start flags are the sides with the smallest vertex set.
+}
+
+// Region boundary sides (mesh boundary or glued outside the region): their vertices keep their
+// ids; under each vertex map, the start flags are the sides with the smallest vertex set.
+// Returns the region's hex count.
+HexId RegionEncoder::collectBoundarySides(const Complex& cx, const std::vector<uint8_t>& isHost) {
   sides_.clear();
   HexId regionSize = 0;
   for (HexId h : cx.hexes()) {
@@ -283,47 +341,14 @@ const std::vector<int64_t>& RegionEncoder::minForm(const Complex& cx, const std:
       sides_.push_back(bs);
     }
   }
-  best_.clear();
-  if (regionSize == 0) return best_;
-  if (sides_.empty()) {
-    // A region without boundary (cut off from the host: never a local state): any encoding will do.
-    for (HexId h : cx.hexes())
-      if (!outside(isHost, h)) {
-        encodeFrom(cx, isHost, h, 0, best_, nullptr);
-        best_.push_back(-4);
-        return best_;
-      }
-  }
-  // Canonical corner 0 on the smallest (mapped) vertex, x toward its smaller neighbour, z inward.
-  auto frameOf = [&](const BoundarySide& bs, const std::array<VertexId, 4>& v) {
-    int p0 = int(std::min_element(v.begin(), v.end()) - v.begin());
-    int pn = (p0 + 1) & 3, pp = (p0 + 3) & 3;
-    int p1 = v[size_t(pn)] < v[size_t(pp)] ? pn : pp, p2 = p1 == pn ? pp : pn;
-    int c0 = kFaceCorners[size_t(bs.f)][size_t(p0)], c1 = kFaceCorners[size_t(bs.f)][size_t(p1)],
-        c2 = kFaceCorners[size_t(bs.f)][size_t(p2)];
-    std::array<int8_t, 8> F{};
-    for (int b = 0; b < 8; ++b) {
-      int bits[3] = {cornerBit(c0, 0), cornerBit(c0, 1), cornerBit(c0, 2)};
-      for (int x = 0; x < 3; ++x) {
-        if ((b & 1) && cornerBit(c1, x) != cornerBit(c0, x)) bits[x] ^= 1;
-        if ((b & 2) && cornerBit(c2, x) != cornerBit(c0, x)) bits[x] ^= 1;
-      }
-      if (b & 4) bits[axisOfFace(bs.f)] ^= 1;
-      F[size_t(b)] = int8_t(cornerAt(bits[0], bits[1], bits[2]));
-    }
-    return T.indexOf(F);
-  };
-  const std::vector<VertexId>* bestMap = nullptr;
-  size_t bestSide = 0;
-  int bestFrame = 0;
-  // Four ids sorted by a 5-comparator network (this runs for every side under every map).
-  auto sorted4 = [](std::array<VertexId, 4> a) {
-    auto cs = [&](int i, int j) {
-      if (a[size_t(j)] < a[size_t(i)]) std::swap(a[size_t(i)], a[size_t(j)]);
-    };
-    cs(0, 1), cs(2, 3), cs(0, 2), cs(1, 3), cs(1, 2);
-    return a;
-  };
+  return regionSize;
+}
+
+// The smallest encoding (into best_) over the vertex maps and, under each, the start flags on the
+// sides with the smallest mapped vertex set; returns where it starts.
+RegionEncoder::Start RegionEncoder::smallestOverMaps(const Complex& cx, const std::vector<uint8_t>& isHost) {
+  const FrameTables& T = frameTables();
+  Start best;
   mappedSides_.resize(sides_.size());
   for (const std::vector<VertexId>* m : maps_) {
     relabel_ = m;
@@ -336,32 +361,31 @@ const std::vector<int64_t>& RegionEncoder::minForm(const Complex& cx, const std:
     }
     for (size_t i = 0; i < sides_.size(); ++i) {
       if (mappedSides_[i].second != minSet) continue;
-      int fr = frameOf(sides_[i], mappedSides_[i].first);
+      int fr = frameOf(T, sides_[i].f, mappedSides_[i].first);
       if (encodeFrom(cx, isHost, sides_[i].h, fr, cur_, best_.empty() ? nullptr : &best_)) {
         best_.swap(cur_);
-        bestMap = m;
-        bestSide = i;
-        bestFrame = fr;
+        best = {m, i, fr};
       }
     }
   }
-  // A region in several pieces: the pieces not reached are appended from their first hex (not
-  // canonical, so such states may be stored twice, never merged wrongly).
-  if (best_.back() < int64_t(regionSize)) {
-    relabel_ = bestMap;
-    std::vector<uint8_t> reached(nh, 0);
-    encodeFrom(cx, isHost, sides_[bestSide].h, bestFrame, cur_, nullptr);  // marks what it reached
-    for (HexId h : cx.hexes())
-      if (!outside(isHost, h) && hexStamp_[size_t(h)] == stamp_) reached[size_t(h)] = 1;
-    for (HexId h : cx.hexes()) {
-      if (outside(isHost, h) || reached[size_t(h)]) continue;
-      encodeFrom(cx, isHost, h, 0, cur_, nullptr);
-      best_.push_back(-3);
-      for (int64_t w : cur_) best_.push_back(w);
-      for (HexId x : order_) reached[size_t(x)] = 1;
-    }
+  return best;
+}
+
+// The pieces of the region the best encoding did not reach, appended from their first hex (not
+// canonical, so such states may be stored twice, never merged wrongly).
+void RegionEncoder::appendUnreachedPieces(const Complex& cx, const std::vector<uint8_t>& isHost, const Start& best) {
+  relabel_ = best.map;
+  std::vector<uint8_t> reached(size_t(cx.hexCapacity()), 0);
+  encodeFrom(cx, isHost, sides_[best.side].h, best.frame, cur_, nullptr);  // marks what it reached
+  for (HexId h : cx.hexes())
+    if (!outside(isHost, h) && hexStamp_[size_t(h)] == stamp_) reached[size_t(h)] = 1;
+  for (HexId h : cx.hexes()) {
+    if (outside(isHost, h) || reached[size_t(h)]) continue;
+    encodeFrom(cx, isHost, h, 0, cur_, nullptr);
+    best_.push_back(-3);
+    for (int64_t w : cur_) best_.push_back(w);
+    for (HexId x : order_) reached[size_t(x)] = 1;
   }
-  return best_;
 }
 
 }  // namespace hexdual

@@ -74,6 +74,16 @@ class RegionEncoder {
                   std::vector<int64_t>& out, const std::vector<int64_t>* bound);
   // The smallest encoding over the vertex maps in maps_ (nullptr: the identity) and their start flags.
   const std::vector<int64_t>& minForm(const Complex& cx, const std::vector<uint8_t>& isHost);
+  // Where an encoding starts: a vertex map, a boundary side and the frame on it.
+  struct Start {
+    const std::vector<VertexId>* map = nullptr;
+    size_t side = 0;
+    int frame = 0;
+  };
+  void reserveStamps(const Complex& cx);
+  HexId collectBoundarySides(const Complex& cx, const std::vector<uint8_t>& isHost);
+  Start smallestOverMaps(const Complex& cx, const std::vector<uint8_t>& isHost);
+  void appendUnreachedPieces(const Complex& cx, const std::vector<uint8_t>& isHost, const Start& best);
   struct BoundarySide {
     HexId h;
     int f;
