@@ -12,7 +12,6 @@ using namespace ops;
 
 namespace {
 
-
 // A map of the region onto the pattern: hex -> pattern hex, and per hex local corner -> pattern corner.
 struct Match {
   std::map<HexId, HexId> hex;
@@ -130,7 +129,8 @@ OpResult flip(Complex& cx, const std::string& name, const std::vector<HexId>& he
   std::vector<VertexId> newPattern;
   for (HexId p : after)
     for (VertexId v : pattern.hexVertices(p))
-      if (!toMesh.count(v) && std::find(newPattern.begin(), newPattern.end(), v) == newPattern.end()) newPattern.push_back(v);
+      if (!toMesh.count(v) && std::find(newPattern.begin(), newPattern.end(), v) == newPattern.end())
+        newPattern.push_back(v);
   std::sort(newPattern.begin(), newPattern.end());
   for (VertexId v : newPattern) {
     // Halfway from the region's centre toward the boundary vertices it shares an edge with.
@@ -231,109 +231,162 @@ OpResult pillowRegion(Complex& cx, const std::vector<HexId>& hexes) {
   return res;
 }
 
-OpResult tripleChordPush(Complex& cx, HexId hex, int corner, QuadSide q1, QuadSide q2, QuadSide q3) {
-  const std::string op = "tripleChordPush";
-  if (!cx.isHex(hex)) reject(op, hexName(hex) + " does not exist");
-  if (corner < 0 || corner > 7) reject(op, "corner " + std::to_string(corner) + " is not 0..7");
-  const VertexId v = cx.vertex(hex, corner);
-  std::array<QuadSide, 3> q{q1, q2, q3};
-  std::array<std::array<VertexId, 4>, 3> qv;
+namespace {
+
+// A triple-chord push worked out before anything is edited (TK03 §4.5.1): vertex v at `corner` of
+// `hex` is split along three quads through it; two new hexes X (outside) and Y (inside) fill the
+// gap, corner 0 on v (X) or its copy (Y), their x, y, z edges along the quads' shared edges.
+class TripleChordPush {
+ public:
+  TripleChordPush(const Complex& cx, HexId hex, int corner, QuadSide q1, QuadSide q2, QuadSide q3);
+  OpResult apply(Complex& cx) const;
+
+ private:
+  void readQuads();
+  void findCorners();
+  void splitSides();
+  std::array<VertexId, 8> hexAt(VertexId origin, VertexId w) const;
+
+  const std::string op_ = "tripleChordPush";
+  const Complex& cx_;
+  VertexId v_ = -1;
+  std::array<QuadSide, 3> q_;
+  std::array<std::array<VertexId, 4>, 3> qv_;
+  VertexId p12_ = -1, p13_ = -1, p23_ = -1;      // the other end of the edge q_i and q_j share at v
+  VertexId d1_ = -1, d2_ = -1, d3_ = -1;         // the corner of q_i opposite v
+  std::vector<std::pair<HexId, int>> in_, all_;  // v's corners on q1's named side, and all of them
+  std::array<QuadSide, 3> inSide_, outSide_;
+};
+
+TripleChordPush::TripleChordPush(const Complex& cx, HexId hex, int corner, QuadSide q1, QuadSide q2, QuadSide q3)
+    : cx_(cx), q_{q1, q2, q3} {
+  if (!cx.isHex(hex)) reject(op_, hexName(hex) + " does not exist");
+  if (corner < 0 || corner > 7) reject(op_, "corner " + std::to_string(corner) + " is not 0..7");
+  v_ = cx.vertex(hex, corner);
+  readQuads();
+  findCorners();
+  splitSides();
+}
+
+// Three distinct interior quads through v.
+void TripleChordPush::readQuads() {
   for (int i = 0; i < 3; ++i) {
-    if (!cx.isHex(q[size_t(i)].hex) || q[size_t(i)].face < 0 || q[size_t(i)].face > 5)
-      reject(op, "quad " + entityName(q[size_t(i)]) + " does not exist");
-    if (cx.isBoundary(q[size_t(i)])) reject(op, "quad " + entityName(q[size_t(i)]) + " is on the boundary");
-    qv[size_t(i)] = faceVertexSet(cx, q[size_t(i)].hex, q[size_t(i)].face);
-    if (!std::binary_search(qv[size_t(i)].begin(), qv[size_t(i)].end(), v))
-      reject(op, "quad " + entityName(q[size_t(i)]) + " does not contain vertex " + std::to_string(v));
+    const QuadSide qi = q_[size_t(i)];
+    if (!cx_.isHex(qi.hex) || qi.face < 0 || qi.face > 5) reject(op_, "quad " + entityName(qi) + " does not exist");
+    if (cx_.isBoundary(qi)) reject(op_, "quad " + entityName(qi) + " is on the boundary");
+    qv_[size_t(i)] = faceVertexSet(cx_, qi.hex, qi.face);
+    if (!std::binary_search(qv_[size_t(i)].begin(), qv_[size_t(i)].end(), v_))
+      reject(op_, "quad " + entityName(qi) + " does not contain vertex " + std::to_string(v_));
   }
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < i; ++j)
-      if (cx.canonical(q[size_t(i)]) == cx.canonical(q[size_t(j)])) reject(op, "the three quads must be distinct");
-  // p_ij: the other end of the edge q_i and q_j share at v; d_i: the corner of q_i opposite v.
+      if (cx_.canonical(q_[size_t(i)]) == cx_.canonical(q_[size_t(j)])) reject(op_, "the three quads must be distinct");
+}
+
+// p_ij: the other end of the edge q_i and q_j share at v; d_i: the corner of q_i opposite v.
+void TripleChordPush::findCorners() {
   auto common = [&](int i, int j) {
     std::vector<VertexId> c;
-    for (VertexId x : qv[size_t(i)])
-      if (x != v && std::binary_search(qv[size_t(j)].begin(), qv[size_t(j)].end(), x)) c.push_back(x);
+    for (VertexId x : qv_[size_t(i)])
+      if (x != v_ && std::binary_search(qv_[size_t(j)].begin(), qv_[size_t(j)].end(), x)) c.push_back(x);
     if (c.size() != 1)
-      reject(op, "quads " + entityName(q[size_t(i)]) + " and " + entityName(q[size_t(j)]) + " must share exactly one edge at v");
+      reject(op_, "quads " + entityName(q_[size_t(i)]) + " and " + entityName(q_[size_t(j)]) +
+                      " must share exactly one edge at v");
     return c[0];
   };
-  VertexId p12 = common(0, 1), p13 = common(0, 2), p23 = common(1, 2);
+  p12_ = common(0, 1), p13_ = common(0, 2), p23_ = common(1, 2);
   auto opposite = [&](int i, VertexId a, VertexId b) {
-    for (VertexId x : qv[size_t(i)])
-      if (x != v && x != a && x != b) return x;
+    for (VertexId x : qv_[size_t(i)])
+      if (x != v_ && x != a && x != b) return x;
     return VertexId(-1);
   };
-  VertexId d1 = opposite(0, p12, p13), d2 = opposite(1, p12, p23), d3 = opposite(2, p13, p23);
-  // Split v along the three quads: the side of q1's named side gets a new vertex.
+  d1_ = opposite(0, p12_, p13_), d2_ = opposite(1, p12_, p23_), d3_ = opposite(2, p13_, p23_);
+}
+
+// Split v along the three quads: the side of q1's named side gets a new vertex. v must be
+// interior and cut into exactly two sides, each quad with one side on each.
+void TripleChordPush::splitSides() {
   std::vector<QuadSide> walls;
-  for (QuadSide s : q) {
+  for (QuadSide s : q_) {
     walls.push_back(s);
-    walls.push_back({cx.gluing(s).hex, cx.gluing(s).face});
+    walls.push_back({cx_.gluing(s).hex, cx_.gluing(s).face});
   }
   int c1 = -1;
   for (int c = 0; c < 8; ++c)
-    if (cx.vertex(q1.hex, c) == v) c1 = c;
-  auto in = cornersOnSide(cx, {q1.hex, c1}, walls);
-  auto all = cx.cornersOfVertex(q1.hex, c1);
-  for (auto [h, c] : all)
+    if (cx_.vertex(q_[0].hex, c) == v_) c1 = c;
+  in_ = cornersOnSide(cx_, {q_[0].hex, c1}, walls);
+  all_ = cx_.cornersOfVertex(q_[0].hex, c1);
+  for (auto [h, c] : all_)
     for (int f : facesOfCorner(c))
-      if (cx.gluing(h, f).boundary()) reject(op, "vertex " + std::to_string(v) + " is on the boundary");
-  if (in.size() == all.size()) reject(op, "the three quads do not cut vertex " + std::to_string(v) + " into two sides");
+      if (cx_.gluing(h, f).boundary()) reject(op_, "vertex " + std::to_string(v_) + " is on the boundary");
+  if (in_.size() == all_.size())
+    reject(op_, "the three quads do not cut vertex " + std::to_string(v_) + " into two sides");
   std::vector<std::pair<HexId, int>> out;
-  for (auto k : all)
-    if (std::find(in.begin(), in.end(), k) == in.end()) out.push_back(k);
-  if (cornersOnSide(cx, out[0], walls).size() != out.size())
-    reject(op, "the three quads cut vertex " + std::to_string(v) + " into more than two sides");
+  for (auto k : all_)
+    if (std::find(in_.begin(), in_.end(), k) == in_.end()) out.push_back(k);
+  if (cornersOnSide(cx_, out[0], walls).size() != out.size())
+    reject(op_, "the three quads cut vertex " + std::to_string(v_) + " into more than two sides");
   auto onIn = [&](QuadSide s) {
     for (int c = 0; c < 8; ++c)
-      if (cx.vertex(s.hex, c) == v) return std::find(in.begin(), in.end(), std::pair<HexId, int>{s.hex, c}) != in.end();
+      if (cx_.vertex(s.hex, c) == v_)
+        return std::find(in_.begin(), in_.end(), std::pair<HexId, int>{s.hex, c}) != in_.end();
     return false;
   };
-  std::array<QuadSide, 3> inSide, outSide;
   for (int i = 0; i < 3; ++i) {
-    QuadSide s = q[size_t(i)], t{cx.gluing(s).hex, cx.gluing(s).face};
-    inSide[size_t(i)] = onIn(s) ? s : t;
-    outSide[size_t(i)] = onIn(s) ? t : s;
-    if (onIn(outSide[size_t(i)]) || !onIn(inSide[size_t(i)])) reject(op, "the quads do not separate vertex " + std::to_string(v));
+    QuadSide s = q_[size_t(i)], t{cx_.gluing(s).hex, cx_.gluing(s).face};
+    inSide_[size_t(i)] = onIn(s) ? s : t;
+    outSide_[size_t(i)] = onIn(s) ? t : s;
+    if (onIn(outSide_[size_t(i)]) || !onIn(inSide_[size_t(i)]))
+      reject(op_, "the quads do not separate vertex " + std::to_string(v_));
   }
+}
+
+// X (outside): corner 0 = v, x -> p23, y -> p13, z -> p12; faces x=0,y=0,z=0 are q1,q2,q3. Y likewise on vIn.
+std::array<VertexId, 8> TripleChordPush::hexAt(VertexId origin, VertexId w) const {
+  std::array<VertexId, 8> a;
+  a[size_t(cornerAt(0, 0, 0))] = origin;
+  a[size_t(cornerAt(1, 0, 0))] = p23_;
+  a[size_t(cornerAt(0, 1, 0))] = p13_;
+  a[size_t(cornerAt(0, 0, 1))] = p12_;
+  a[size_t(cornerAt(0, 1, 1))] = d1_;
+  a[size_t(cornerAt(1, 0, 1))] = d2_;
+  a[size_t(cornerAt(1, 1, 0))] = d3_;
+  a[size_t(cornerAt(1, 1, 1))] = w;
+  return a;
+}
+
+// The inside corners take v's copy; X and Y are glued to the quads' two sides and to each other.
+OpResult TripleChordPush::apply(Complex& cx) const {
   Transaction tx(cx);
   OpResult res;
-  Vec3 cIn, cOut;
-  for (auto [h, c] : in) cIn = cIn + (1.0 / double(in.size())) * cx.hexCentroid(h);
-  Vec3 pv = cx.position(v);
+  Vec3 cIn;
+  for (auto [h, c] : in_) cIn = cIn + (1.0 / double(in_.size())) * cx.hexCentroid(h);
+  Vec3 pv = cx.position(v_);
   VertexId vIn = cx.addVertex(pv + 0.2 * (cIn - pv));
-  Vec3 mid = (1.0 / 3.0) * (cx.position(d1) + cx.position(d2) + cx.position(d3));
+  Vec3 mid = (1.0 / 3.0) * (cx.position(d1_) + cx.position(d2_) + cx.position(d3_));
   VertexId w = cx.addVertex(pv + 0.3 * (mid - pv) + 0.1 * (cIn - pv));
   res.createdVertices = {vIn, w};
-  for (QuadSide s : q) cx.unglue(s.hex, s.face);
-  for (auto [h, c] : in) cx.setCorner(h, c, vIn);
-  // X (outside): corner 0 = v, x -> p23, y -> p13, z -> p12; faces x=0,y=0,z=0 are q1,q2,q3. Y likewise on vIn.
-  auto make = [&](VertexId origin) {
-    std::array<VertexId, 8> a;
-    a[size_t(cornerAt(0, 0, 0))] = origin;
-    a[size_t(cornerAt(1, 0, 0))] = p23;
-    a[size_t(cornerAt(0, 1, 0))] = p13;
-    a[size_t(cornerAt(0, 0, 1))] = p12;
-    a[size_t(cornerAt(0, 1, 1))] = d1;
-    a[size_t(cornerAt(1, 0, 1))] = d2;
-    a[size_t(cornerAt(1, 1, 0))] = d3;
-    a[size_t(cornerAt(1, 1, 1))] = w;
-    return a;
-  };
-  HexId X = cx.addHex(make(v)), Y = cx.addHex(make(vIn));
+  for (QuadSide s : q_) cx.unglue(s.hex, s.face);
+  for (auto [h, c] : in_) cx.setCorner(h, c, vIn);
+  HexId X = cx.addHex(hexAt(v_, w)), Y = cx.addHex(hexAt(vIn, w));
   res.createdHexes = {X, Y};
   for (int i = 0; i < 3; ++i) {
     int face = 2 * i;  // q1 on x=0 (p12, p13, d1), q2 on y=0, q3 on z=0
-    glueByVertices(cx, X, face, outSide[size_t(i)].hex, outSide[size_t(i)].face);
-    glueByVertices(cx, Y, face, inSide[size_t(i)].hex, inSide[size_t(i)].face);
+    glueByVertices(cx, X, face, outSide_[size_t(i)].hex, outSide_[size_t(i)].face);
+    glueByVertices(cx, Y, face, inSide_[size_t(i)].hex, inSide_[size_t(i)].face);
     glueByVertices(cx, X, face + 1, Y, face + 1);
   }
   std::vector<HexId> touched{X, Y};
-  for (int i = 0; i < 3; ++i) touched.insert(touched.end(), {inSide[size_t(i)].hex, outSide[size_t(i)].hex});
-  for (auto [h, c] : all) touched.push_back(h);
-  tx.commitIfValid(res, touched, op, "the result would not be a valid complex");
+  for (int i = 0; i < 3; ++i) touched.insert(touched.end(), {inSide_[size_t(i)].hex, outSide_[size_t(i)].hex});
+  for (auto [h, c] : all_) touched.push_back(h);
+  tx.commitIfValid(res, touched, op_, "the result would not be a valid complex");
   return res;
+}
+
+}  // namespace
+
+OpResult tripleChordPush(Complex& cx, HexId hex, int corner, QuadSide q1, QuadSide q2, QuadSide q3) {
+  return TripleChordPush(cx, hex, corner, q1, q2, q3).apply(cx);
 }
 
 }  // namespace hexdual
