@@ -231,6 +231,99 @@ OpKind opNamed(const std::string& name, const std::string& context) {
 
 std::atomic<int> searchRequest{0};  // set by the signal handlers of `flip search --checkpoint`
 
+// hexdual flip verify --all: every stored decomposition checked in its problem and its host meshes.
+int runFlipVerify(const Args& a) {
+  if (!a.all) throw Error("flip verify needs --all");
+  io::JsonWriter w;
+  w.beginArray();
+  int failures = 0;
+  for (const StoredDecomposition& d : storedDecompositions()) {
+    if (!d.found) continue;
+    SearchProblem pb = problemFor(d.problem);
+    std::vector<std::string> places;
+    std::string error;
+    try {
+      verifyDecomposition(pb, d.steps);
+      places.push_back("search problem");
+      if (d.problem.find('/') == std::string::npos)
+        for (const Embedding& e : flipEmbeddings(d.problem)) {
+          verifyInEmbedding(pb, d.steps, e);
+          places.push_back(e.name);
+        }
+    } catch (const Error& e) {
+      error = e.what();
+    }
+    bool ok = error.empty() && places.size() >= 3;
+    if (error.empty() && places.size() < 3) error = "verified at " + std::to_string(places.size()) + " places only";
+    failures += !ok;
+    if (a.json) {
+      w.beginObject().key("name").value(d.problem).key("verified").value(ok).key("length").value(int64_t(d.steps.size()));
+      w.key("places").value(int64_t(places.size()));
+      if (!ok) w.key("error").value(error);
+      w.endObject();
+    } else {
+      std::cout << d.problem << ": " << (ok ? "verified" : "FAILED") << ", " << d.steps.size() << " steps, "
+                << places.size() << " places" << (ok ? "" : " (" + error + ")") << "\n";
+    }
+  }
+  w.endArray();
+  if (a.json) std::cout << w.str() << "\n";
+  return failures ? 1 : 0;
+}
+
+// The search options of hexdual flip search, from the command line (signals request checkpoints).
+SearchOptions flipSearchOptions(const Args& a) {
+  SearchOptions o;
+  o.maxDepth = a.maxDepth;
+  o.maxSeconds = a.maxSeconds;
+  o.maxStates = a.maxStates;
+  o.threads = a.threads;
+  o.maxMemoryMB = a.maxMemory;
+  o.maxRegionHexes = a.maxRegion;
+  o.symmetry = a.symmetry;
+  o.lookupLastLevel = a.lookupLast;
+  o.reversible = a.reversible;
+  o.ringSplitMax = a.ringSplit;
+  o.checkpointFile = a.checkpoint;
+  o.checkpointEvery = a.checkpointEvery;
+  o.resumeFile = a.resume;
+  if (a.checkpointEvery > 0 && a.checkpoint.empty()) throw Error("--checkpoint-every needs --checkpoint FILE");
+  if (!a.checkpoint.empty()) {
+    // SIGUSR1: write a checkpoint and go on; SIGINT, SIGTERM: write one and stop.
+    o.request = &searchRequest;
+    std::signal(SIGUSR1, [](int) { searchRequest = 1; });
+    std::signal(SIGINT, [](int) { searchRequest = 2; });
+    std::signal(SIGTERM, [](int) { searchRequest = 2; });
+  }
+  o.progress = [](const SearchLevel& l) {
+    std::cerr << "depth " << l.depth << (l.side ? " from the goal: " : " from the start: ")
+              << (l.lookedUp ? "looked up (not stored), " : std::to_string(l.newStates) + " new states, ")
+              << l.storedStates << " stored, " << l.movesApplied << " moves applied, " << l.seconds << " s\n";
+  };
+  for (const std::string& op : splitList(a.ops)) o.ops.push_back(opNamed(op, "flip search --ops"));
+  return o;
+}
+
+// hexdual flip search NAME: the record line on stdout, the summary on stderr.
+int runFlipSearch(const Args& a) {
+  need(a, 2, "flip search NAME");
+  const SearchOptions o = flipSearchOptions(a);
+  std::string name = a.positional[1];
+  SearchProblem pb = problemFor(name);
+  SearchResult r = searchDecomposition(pb, o);
+  if (r.found) verifyDecomposition(pb, r.steps);
+  std::string label = name + (a.ops == "chordpush,chordpull" ? "/chord-only" : "");
+  std::cout << formatDecomposition(label, r, o) << "\n";
+  std::cerr << (r.found ? "found " + std::to_string(r.steps.size()) + " steps (verified)" : "none found")
+            << "; stopped by " << r.stoppedBy << " after " << r.statesExplored << " states, " << r.movesApplied
+            << " moves applied, " << (r.memoryBytes >> 20) << " MB"
+            << (r.symmetries > 1 ? ", " + std::to_string(r.symmetries) + " symmetries" : "")
+            << (r.lookupKeys ? ", " + std::to_string(r.lookupKeys) + " image keys looked up" : "") << "\n";
+  if (!r.message.empty()) std::cerr << r.message << "\n";
+  if (r.checkpoints > 0) std::cerr << r.checkpoints << " checkpoint(s) written to " << o.checkpointFile << "\n";
+  return 0;
+}
+
 int runFlip(const Args& a) {
   if (a.positional.empty()) throw Error("flip needs a subcommand or a flip name (see --help)");
   const std::string sub = a.positional[0];
@@ -239,87 +332,8 @@ int runFlip(const Args& a) {
     std::cout << (a.json ? io::flipListJson(flips) + "\n" : io::flipListText(flips));
     return 0;
   }
-  if (sub == "verify") {
-    if (!a.all) throw Error("flip verify needs --all");
-    io::JsonWriter w;
-    w.beginArray();
-    int failures = 0;
-    for (const StoredDecomposition& d : storedDecompositions()) {
-      if (!d.found) continue;
-      SearchProblem pb = problemFor(d.problem);
-      std::vector<std::string> places;
-      std::string error;
-      try {
-        verifyDecomposition(pb, d.steps);
-        places.push_back("search problem");
-        if (d.problem.find('/') == std::string::npos)
-          for (const Embedding& e : flipEmbeddings(d.problem)) {
-            verifyInEmbedding(pb, d.steps, e);
-            places.push_back(e.name);
-          }
-      } catch (const Error& e) {
-        error = e.what();
-      }
-      bool ok = error.empty() && places.size() >= 3;
-      if (error.empty() && places.size() < 3) error = "verified at " + std::to_string(places.size()) + " places only";
-      failures += !ok;
-      if (a.json) {
-        w.beginObject().key("name").value(d.problem).key("verified").value(ok).key("length").value(int64_t(d.steps.size()));
-        w.key("places").value(int64_t(places.size()));
-        if (!ok) w.key("error").value(error);
-        w.endObject();
-      } else {
-        std::cout << d.problem << ": " << (ok ? "verified" : "FAILED") << ", " << d.steps.size() << " steps, " << places.size()
-                  << " places" << (ok ? "" : " (" + error + ")") << "\n";
-      }
-    }
-    w.endArray();
-    if (a.json) std::cout << w.str() << "\n";
-    return failures ? 1 : 0;
-  }
-  if (sub == "search") {
-    need(a, 2, "flip search NAME");
-    SearchOptions o;
-    o.maxDepth = a.maxDepth;
-    o.maxSeconds = a.maxSeconds;
-    o.maxStates = a.maxStates;
-    o.threads = a.threads;
-    o.maxMemoryMB = a.maxMemory;
-    o.maxRegionHexes = a.maxRegion;
-    o.symmetry = a.symmetry;
-    o.lookupLastLevel = a.lookupLast;
-    o.reversible = a.reversible;
-    o.ringSplitMax = a.ringSplit;
-    o.checkpointFile = a.checkpoint;
-    o.checkpointEvery = a.checkpointEvery;
-    o.resumeFile = a.resume;
-    if (a.checkpointEvery > 0 && a.checkpoint.empty()) throw Error("--checkpoint-every needs --checkpoint FILE");
-    if (!a.checkpoint.empty()) {
-      // SIGUSR1: write a checkpoint and go on; SIGINT, SIGTERM: write one and stop.
-      o.request = &searchRequest;
-      std::signal(SIGUSR1, [](int) { searchRequest = 1; });
-      std::signal(SIGINT, [](int) { searchRequest = 2; });
-      std::signal(SIGTERM, [](int) { searchRequest = 2; });
-    }
-    o.progress = [](const SearchLevel& l) {
-      std::cerr << "depth " << l.depth << (l.side ? " from the goal: " : " from the start: ")
-                << (l.lookedUp ? "looked up (not stored), " : std::to_string(l.newStates) + " new states, ") << l.storedStates << " stored, " << l.movesApplied << " moves applied, " << l.seconds << " s\n";
-    };
-    for (const std::string& op : splitList(a.ops)) o.ops.push_back(opNamed(op, "flip search --ops"));
-    std::string name = a.positional[1];
-    SearchProblem pb = problemFor(name);
-    SearchResult r = searchDecomposition(pb, o);
-    if (r.found) verifyDecomposition(pb, r.steps);
-    std::string label = name + (a.ops == "chordpush,chordpull" ? "/chord-only" : "");
-    std::cout << formatDecomposition(label, r, o) << "\n";
-    std::cerr << (r.found ? "found " + std::to_string(r.steps.size()) + " steps (verified)" : "none found") << "; stopped by "
-              << r.stoppedBy << " after " << r.statesExplored << " states, " << r.movesApplied << " moves applied, "
-              << (r.memoryBytes >> 20) << " MB" << (r.symmetries > 1 ? ", " + std::to_string(r.symmetries) + " symmetries" : "")
-              << (r.lookupKeys ? ", " + std::to_string(r.lookupKeys) + " image keys looked up" : "") << "\n";
-    if (!r.message.empty()) std::cerr << r.message << "\n";
-    if (r.checkpoints > 0) std::cerr << r.checkpoints << " checkpoint(s) written to " << o.checkpointFile << "\n";
-    return 0;
-  }
+  if (sub == "verify") return runFlipVerify(a);
+  if (sub == "search") return runFlipSearch(a);
   // hexdual flip NAME --at H1,H2 FILE -o OUT [--via-atomic]
   need(a, 2, "flip NAME --at H1,H2,... FILE -o OUT");
   if (a.at.empty()) throw Error("flip needs --at H1,H2,...");
@@ -335,7 +349,8 @@ int runFlip(const Args& a) {
     std::cout << formatOpLog({1, steps}) << "\n";
   } else {
     OpResult r = flip(cx, name, hexes);
-    std::cout << "flip " << name << ": hexes created " << io::idList(r.createdHexes) << " removed " << io::idList(r.removedHexes) << "\n";
+    std::cout << "flip " << name << ": hexes created " << io::idList(r.createdHexes) << " removed "
+              << io::idList(r.removedHexes) << "\n";
   }
   io::writeFile(cx, a.output, a.binary);
   return 0;
