@@ -171,6 +171,16 @@ class VtuReader {
     return v;
   }
   [[noreturn]] void fail(size_t at, const std::string& why) const { xml_.fail(at, why); }
+  // The arrays of the one Piece, as numbers.
+  struct Arrays {
+    int64_t numPoints = -1, numCells = -1;
+    std::vector<double> pts, conn, offs, types;
+  };
+  void findAppendedData();
+  void readElements(Arrays& a);
+  void readFileFormat(const Tag& t);
+  void readDataArray(const Tag& t, size_t pos, const std::string& section, Arrays& a);
+  CellSoup toSoup(const Arrays& a) const;
   // The raw bytes of a binary array, after its header (and decompression).
   std::string payload(std::string_view bytes, size_t at, const std::string& arrayName);
   std::vector<double> values(const Tag& t, size_t contentBegin, int64_t expected);
@@ -285,10 +295,33 @@ std::vector<double> VtuReader::values(const Tag& t, size_t contentBegin, int64_t
   return v;
 }
 
+// The VTK cell type ty (with its node count, for the polygon type 7) as a cell kind.
+static CellKind vtkCellKind(int64_t ty, int64_t nodes) {
+  switch (ty) {
+    case 1: case 2: return CellKind::Vertex;
+    case 3: case 4: return CellKind::Line;
+    case 5: case 6: return CellKind::Triangle;
+    case 7: return nodes == 4 ? CellKind::Quad : CellKind::Triangle;
+    case 8: case 9: return CellKind::Quad;
+    case 10: return CellKind::Tet;
+    case 11: case 12: return CellKind::Hex;
+    case 13: return CellKind::Prism;
+    case 14: return CellKind::Pyramid;
+    default: return CellKind::Unsupported;
+  }
+}
+
 Complex VtuReader::read(const ReadOptions& opt, ReadReport* rep) {
-  size_t pos = 0;
+  findAppendedData();
+  Arrays a;
+  readElements(a);
+  CellSoup soup = toSoup(a);
+  return assemble(soup, name_, opt, rep, std::string("vtu") + (compressed_ ? " zlib" : ""));
+}
+
+// Find the appended data first: arrays refer to it by offset.
+void VtuReader::findAppendedData() {
   Tag t;
-  // Find the appended data first: arrays refer to it by offset.
   if (size_t a = d_.find("<AppendedData"); a != std::string_view::npos) {
     size_t p = a;
     xml_.next(p, t);
@@ -297,9 +330,13 @@ Complex VtuReader::read(const ReadOptions& opt, ReadReport* rep) {
     if (u == std::string_view::npos) fail(a, "AppendedData without its '_' marker");
     appendedStart_ = u + 1;
   }
-  int64_t numPoints = -1, numCells = -1;
+}
+
+// The file's elements in order: VTKFile (format), Piece (counts), the Points and Cells arrays.
+void VtuReader::readElements(Arrays& a) {
+  size_t pos = 0;
+  Tag t;
   std::string section;
-  std::vector<double> pts, conn, offs, types;
   bool haveFile = false;
   int pieces = 0;
   while (xml_.next(pos, t)) {
@@ -310,77 +347,81 @@ Complex VtuReader::read(const ReadOptions& opt, ReadReport* rep) {
     if (t.name == "AppendedData") break;
     if (t.name == "VTKFile") {
       haveFile = true;
-      if (t.attr("type") != "UnstructuredGrid")
-        fail(0, "VTK XML type '" + Lexer::excerpt(t.attr("type")) + "' is not supported (UnstructuredGrid)");
-      bigEndian_ = t.attr("byte_order") == "BigEndian";
-      headerWidth_ = t.attr("header_type", "UInt32") == "UInt64" ? 8 : 4;
-      std::string comp = t.attr("compressor");
-      compressed_ = !comp.empty();
-      if (compressed_ && comp != "vtkZLibDataCompressor")
-        fail(0, "compressor '" + Lexer::excerpt(comp) + "' is not supported (vtkZLibDataCompressor only)");
+      readFileFormat(t);
     } else if (t.name == "Piece") {
       if (++pieces > 1) fail(t.end, "more than one Piece is not supported");
       std::string np = t.attr("NumberOfPoints", "x"), nc = t.attr("NumberOfCells", "x");
-      Lexer a(np, name_), b(nc, name_);
-      numPoints = a.count("NumberOfPoints", int64_t(1) << 40);
-      numCells = b.count("NumberOfCells", int64_t(1) << 40);
+      Lexer lp(np, name_), lc(nc, name_);
+      a.numPoints = lp.count("NumberOfPoints", int64_t(1) << 40);
+      a.numCells = lc.count("NumberOfCells", int64_t(1) << 40);
     } else if (t.name == "Points" || t.name == "Cells") {
       section = t.name;
     } else if (t.name == "DataArray" && !section.empty()) {
-      if (numPoints < 0) fail(t.end, "DataArray before Piece");
-      std::string n = t.attr("Name");
-      if (section == "Points") pts = values(t, t.end, 3 * numPoints);
-      else if (n == "offsets") offs = values(t, t.end, numCells);
-      else if (n == "types") types = values(t, t.end, numCells);
-      else if (n == "connectivity") {
-        if (offs.empty() && numCells > 0) {  // the size comes from the offsets: read them first
-          size_t p2 = pos;
-          Tag t2;
-          while (xml_.next(p2, t2) && !(t2.closing && t2.name == "Cells"))
-            if (t2.name == "DataArray" && t2.attr("Name") == "offsets") offs = values(t2, t2.end, numCells);
-        }
-        int64_t m = offs.empty() ? 0 : asIndex(offs.back());
-        if (m < 0) fail(t.end, "the last offset is not a non-negative integer");
-        conn = values(t, t.end, m);
-      }
+      readDataArray(t, pos, section, a);
     }
   }
   if (!haveFile) fail(0, "no VTKFile element");
-  if (numPoints < 0) fail(0, "no Piece element");
-  if (int64_t(pts.size()) != 3 * numPoints) fail(0, "no Points array");
-  if (int64_t(types.size()) != numCells || int64_t(offs.size()) != numCells) fail(0, "Cells needs offsets and types arrays");
-  CellSoup soup;
-  soup.points.resize(size_t(numPoints));
-  for (size_t i = 0; i < soup.points.size(); ++i) soup.points[i] = {pts[3 * i], pts[3 * i + 1], pts[3 * i + 2]};
-  static constexpr int kVoxelToHex[8] = {0, 1, 3, 2, 4, 5, 7, 6};
-  for (size_t c = 0; c < types.size(); ++c) {
-    int64_t b = c ? asIndex(offs[c - 1]) : 0, e = asIndex(offs[c]);
-    if (b < 0 || e < b || e > int64_t(conn.size())) fail(0, "offsets of cell " + std::to_string(c) + " are out of order or range");
-    int64_t ty = asIndex(types[c]);
-    CellKind k = CellKind::Unsupported;
-    switch (ty) {
-      case 1: case 2: k = CellKind::Vertex; break;
-      case 3: case 4: k = CellKind::Line; break;
-      case 5: case 6: k = CellKind::Triangle; break;
-      case 7: k = e - b == 4 ? CellKind::Quad : CellKind::Triangle; break;
-      case 8: case 9: k = CellKind::Quad; break;
-      case 10: k = CellKind::Tet; break;
-      case 11: case 12: k = CellKind::Hex; break;
-      case 13: k = CellKind::Prism; break;
-      case 14: k = CellKind::Pyramid; break;
-      default: break;
+  if (a.numPoints < 0) fail(0, "no Piece element");
+  if (int64_t(a.pts.size()) != 3 * a.numPoints) fail(0, "no Points array");
+  if (int64_t(a.types.size()) != a.numCells || int64_t(a.offs.size()) != a.numCells)
+    fail(0, "Cells needs offsets and types arrays");
+}
+
+// The VTKFile element: an unstructured grid; byte order, header width and compressor.
+void VtuReader::readFileFormat(const Tag& t) {
+  if (t.attr("type") != "UnstructuredGrid")
+    fail(0, "VTK XML type '" + Lexer::excerpt(t.attr("type")) + "' is not supported (UnstructuredGrid)");
+  bigEndian_ = t.attr("byte_order") == "BigEndian";
+  headerWidth_ = t.attr("header_type", "UInt32") == "UInt64" ? 8 : 4;
+  std::string comp = t.attr("compressor");
+  compressed_ = !comp.empty();
+  if (compressed_ && comp != "vtkZLibDataCompressor")
+    fail(0, "compressor '" + Lexer::excerpt(comp) + "' is not supported (vtkZLibDataCompressor only)");
+}
+
+// A DataArray of the Points or Cells section (the element ends at `pos`).
+void VtuReader::readDataArray(const Tag& t, size_t pos, const std::string& section, Arrays& a) {
+  if (a.numPoints < 0) fail(t.end, "DataArray before Piece");
+  std::string n = t.attr("Name");
+  if (section == "Points") a.pts = values(t, t.end, 3 * a.numPoints);
+  else if (n == "offsets") a.offs = values(t, t.end, a.numCells);
+  else if (n == "types") a.types = values(t, t.end, a.numCells);
+  else if (n == "connectivity") {
+    if (a.offs.empty() && a.numCells > 0) {  // the size comes from the offsets: read them first
+      size_t p2 = pos;
+      Tag t2;
+      while (xml_.next(p2, t2) && !(t2.closing && t2.name == "Cells"))
+        if (t2.name == "DataArray" && t2.attr("Name") == "offsets") a.offs = values(t2, t2.end, a.numCells);
     }
+    int64_t m = a.offs.empty() ? 0 : asIndex(a.offs.back());
+    if (m < 0) fail(t.end, "the last offset is not a non-negative integer");
+    a.conn = values(t, t.end, m);
+  }
+}
+
+// The points and cells as a cell soup (voxels reordered as hexes).
+CellSoup VtuReader::toSoup(const Arrays& a) const {
+  CellSoup soup;
+  soup.points.resize(size_t(a.numPoints));
+  for (size_t i = 0; i < soup.points.size(); ++i) soup.points[i] = {a.pts[3 * i], a.pts[3 * i + 1], a.pts[3 * i + 2]};
+  static constexpr int kVoxelToHex[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+  for (size_t c = 0; c < a.types.size(); ++c) {
+    int64_t b = c ? asIndex(a.offs[c - 1]) : 0, e = asIndex(a.offs[c]);
+    if (b < 0 || e < b || e > int64_t(a.conn.size()))
+      fail(0, "offsets of cell " + std::to_string(c) + " are out of order or range");
+    int64_t ty = asIndex(a.types[c]);
+    CellKind k = vtkCellKind(ty, e - b);
     if (ty != 2 && ty != 4 && ty != 6 && ty != 7)
       checkNodeCount(name_, "cell " + std::to_string(c) + " (VTK type " + std::to_string(ty) + ")", k, e - b);
     if (k == CellKind::Hex) {
       std::array<int64_t, 8> v;
-      for (int i = 0; i < 8; ++i) v[size_t(i)] = asIndex(conn[size_t(b + (ty == 11 ? kVoxelToHex[i] : i))]);
+      for (int i = 0; i < 8; ++i) v[size_t(i)] = asIndex(a.conn[size_t(b + (ty == 11 ? kVoxelToHex[i] : i))]);
       soup.hexes.push_back(v);
       soup.hexCell.push_back(int64_t(c));
     }
     soup.count(k, int64_t(c), "VTK cell type " + std::to_string(ty));
   }
-  return assemble(soup, name_, opt, rep, std::string("vtu") + (compressed_ ? " zlib" : ""));
+  return soup;
 }
 
 }  // namespace
