@@ -236,6 +236,9 @@ class Complex {
     int64_t edges = 0, boundarySides = 0;
   };
   void walkStar(HexId h, int corner, VertexStar& star) const;
+  static size_t sizeStar(VertexStar& st, size_t refs);
+  static void growStar(VertexStar& st, size_t& room);
+  static void rehashStar(VertexStar& st, size_t n);
   std::vector<VertexId> verticesWithEditedStars() const;
 
   std::vector<std::array<VertexId, 8>> verts_;

@@ -314,16 +314,40 @@ std::vector<VertexId> Complex::verticesWithEditedStars() const {
 // The star of a vertex by walking gluings from one corner: its corners, its boundary sides, and its
 // edges as classes of (corner, edge) incidences joined across glued faces (each edge's cycle or fan
 // round the vertex), without walking whole edge cycles or allocating once warm.
-void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
-  // A valid star has refs_[v] corners: the arrays are sized for that once (grown if ever exceeded)
-  // and written through local pointers, counted by n; the index holds at least twice as many.
-  size_t room = std::max<size_t>(1, size_t(refs_[size_t(verts_[size_t(h0)][size_t(c0)])]));
+// A valid star has refs corners: the arrays are sized for that once (grown if ever exceeded); the
+// index holds at least twice as many. Returns the room for corners.
+size_t Complex::sizeStar(VertexStar& st, size_t refs) {
+  size_t room = std::max<size_t>(1, refs);
   if (st.corners.size() < room) st.corners.resize(room);
   if (st.link.size() < 3 * room) st.link.resize(3 * room);
-  room = st.corners.size();
+  st.index.assign(tableSize(st.corners.size()), 0);
+  return st.corners.size();
+}
+
+// More corners than the vertex has (an inconsistent gluing elsewhere): twice the room.
+void Complex::growStar(VertexStar& st, size_t& room) {
+  room *= 2;
+  st.corners.resize(room);
+  st.link.resize(3 * room);
+}
+
+// The index doubled, its first n corners placed again.
+void Complex::rehashStar(VertexStar& st, size_t n) {
+  st.index.assign(2 * st.index.size(), 0);
+  const size_t mask = st.index.size() - 1;
+  for (size_t q = 0; q < n; ++q) {
+    const uint64_t kq = uint64_t(uint32_t(st.corners[q].first)) << 3 | uint64_t(st.corners[q].second & 7);
+    size_t i = slotOf(kq, mask + 1);
+    while (st.index[i] && (st.index[i] >> 32) != kq) i = (i + 1) & mask;
+    st.index[i] = kq << 32 | (q + 1);
+  }
+}
+
+void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
+  // The arrays are written through local pointers, counted by n.
+  size_t room = sizeStar(st, size_t(refs_[size_t(verts_[size_t(h0)][size_t(c0)])]));
   std::pair<HexId, int>* corners = st.corners.data();
   int* link = st.link.data();
-  st.index.assign(tableSize(room), 0);
   uint64_t* index = st.index.data();
   size_t mask = st.index.size() - 1;
   auto key = [](HexId h, int c) { return uint64_t(uint32_t(h)) << 3 | uint64_t(c); };
@@ -360,22 +384,16 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
       const int arrivedBy = 8 << (((g >> 3) & 7) >> 1);  // the axis of the face the step enters by
       if (!index[at]) {  // a new corner j
         const size_t j = n++;
-        if (n > room) {  // more corners than the vertex has: an inconsistent gluing elsewhere
-          room *= 2;
-          st.corners.resize(room);
-          st.link.resize(3 * room);
+        if (n > room) {
+          growStar(st, room);
           corners = st.corners.data();
           link = st.link.data();
         }
         corners[j] = {HexId(g >> 6), step.corner | arrivedBy};
         if (2 * n > mask + 1) {
-          st.index.assign(2 * (mask + 1), 0);
+          rehashStar(st, n);
           index = st.index.data();
           mask = st.index.size() - 1;
-          for (size_t q = 0; q < n; ++q) {
-            const uint64_t kq = key(corners[q].first, corners[q].second & 7);
-            index[probe(kq)] = kq << 32 | (q + 1);
-          }
         } else {
           index[at] = k2 << 32 | (j + 1);
         }
