@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 
+#include "bindings_common.hpp"
 #include "dual/dual.hpp"
 #include "flips/decompositions.hpp"
 #include "flips/flip.hpp"
@@ -23,10 +24,7 @@ using namespace hexdual;
 
 namespace {
 
-template <class T>
-val copyOut(const char* type, const std::vector<T>& v) {
-  return val::global(type).new_(val(typed_memory_view(v.size(), v.data())));
-}
+using hexdual::wasm::copyOut;
 
 const Complex& complexAt(double address) { return *reinterpret_cast<const Complex*>(uintptr_t(address)); }
 const Dual& dualAt(double address) { return *reinterpret_cast<const Dual*>(uintptr_t(address)); }
