@@ -136,4 +136,21 @@ void requireRepresentableByVertices(const Complex& cx, const char* format) {
   }
 }
 
+// VTK cell type numbers (legacy and XML alike).
+CellKind kindOfVtkType(int64_t t, int64_t nodes) {
+  switch (t) {
+    case 1: case 2: return CellKind::Vertex;
+    case 3: case 4: return CellKind::Line;
+    case 5: case 6: return CellKind::Triangle;
+    case 7: return nodes == 4 ? CellKind::Quad : CellKind::Triangle;  // polygon
+    case 8: case 9: return CellKind::Quad;
+    case 10: return CellKind::Tet;
+    case 11: case 12: return CellKind::Hex;
+    case 13: return CellKind::Prism;
+    case 14: return CellKind::Pyramid;
+    default: return CellKind::Unsupported;
+  }
+}
+bool vtkPolyType(int64_t t) { return t == 2 || t == 4 || t == 6 || t == 7; }
+
 }  // namespace hexdual::io

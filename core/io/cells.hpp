@@ -26,6 +26,10 @@ struct CellSoup {
 // Corners a kind has (vertex 1, line 2, triangle 3, quad 4, tet 4, hex 8, prism 6, pyramid 5).
 int cornerCount(CellKind k);
 const char* kindName(CellKind k);
+// The kind of VTK cell type t listing `nodes` nodes (a polygon, type 7, of 4 nodes is a quad); whether
+// t is a poly type (poly-vertex, poly-line, triangle strip, polygon: any node count).
+CellKind kindOfVtkType(int64_t t, int64_t nodes);
+bool vtkPolyType(int64_t t);
 // A clear error when a cell's listed node count contradicts its type (a mislabelled cell).
 void checkNodeCount(const std::string& name, const std::string& cell, CellKind k, int64_t listed);
 // Refuses a declared element count that the remaining bytes cannot hold (before any allocation):

@@ -244,21 +244,6 @@ void VtkReader::readCellTypes() {
   haveTypes_ = true;
 }
 
-CellKind kindOfVtkType(int64_t t, int64_t nodes) {
-  switch (t) {
-    case 1: case 2: return CellKind::Vertex;
-    case 3: case 4: return CellKind::Line;
-    case 5: case 6: return CellKind::Triangle;
-    case 7: return nodes == 4 ? CellKind::Quad : CellKind::Triangle;  // polygon
-    case 8: case 9: return CellKind::Quad;
-    case 10: return CellKind::Tet;
-    case 11: case 12: return CellKind::Hex;
-    case 13: return CellKind::Prism;
-    case 14: return CellKind::Pyramid;
-    default: return CellKind::Unsupported;
-  }
-}
-bool polyType(int64_t t) { return t == 2 || t == 4 || t == 6 || t == 7; }
 
 Complex VtkReader::read(const ReadOptions& opt, ReadReport* rep) {
   auto header = lx_.restOfLine();
@@ -301,7 +286,7 @@ Complex VtkReader::read(const ReadOptions& opt, ReadReport* rep) {
     int64_t b = c ? offsets_[c - 1] : 0, n = offsets_[c] - b;
     CellKind k = kindOfVtkType(types_[c], n);
     std::string cell = "cell " + std::to_string(c);
-    if (!polyType(types_[c])) checkNodeCount(name_, cell + " (VTK type " + std::to_string(types_[c]) + ")", k, n);
+    if (!vtkPolyType(types_[c])) checkNodeCount(name_, cell + " (VTK type " + std::to_string(types_[c]) + ")", k, n);
     if (k == CellKind::Hex) {
       std::array<int64_t, 8> v;
       for (int i = 0; i < 8; ++i) v[size_t(i)] = conn_[size_t(b + (types_[c] == 11 ? kVoxelToHex[i] : i))];

@@ -295,22 +295,6 @@ std::vector<double> VtuReader::values(const Tag& t, size_t contentBegin, int64_t
   return v;
 }
 
-// The VTK cell type ty (with its node count, for the polygon type 7) as a cell kind.
-static CellKind vtkCellKind(int64_t ty, int64_t nodes) {
-  switch (ty) {
-    case 1: case 2: return CellKind::Vertex;
-    case 3: case 4: return CellKind::Line;
-    case 5: case 6: return CellKind::Triangle;
-    case 7: return nodes == 4 ? CellKind::Quad : CellKind::Triangle;
-    case 8: case 9: return CellKind::Quad;
-    case 10: return CellKind::Tet;
-    case 11: case 12: return CellKind::Hex;
-    case 13: return CellKind::Prism;
-    case 14: return CellKind::Pyramid;
-    default: return CellKind::Unsupported;
-  }
-}
-
 Complex VtuReader::read(const ReadOptions& opt, ReadReport* rep) {
   findAppendedData();
   Arrays a;
@@ -410,8 +394,8 @@ CellSoup VtuReader::toSoup(const Arrays& a) const {
     if (b < 0 || e < b || e > int64_t(a.conn.size()))
       fail(0, "offsets of cell " + std::to_string(c) + " are out of order or range");
     int64_t ty = asIndex(a.types[c]);
-    CellKind k = vtkCellKind(ty, e - b);
-    if (ty != 2 && ty != 4 && ty != 6 && ty != 7)
+    CellKind k = kindOfVtkType(ty, e - b);
+    if (!vtkPolyType(ty))
       checkNodeCount(name_, "cell " + std::to_string(c) + " (VTK type " + std::to_string(ty) + ")", k, e - b);
     if (k == CellKind::Hex) {
       std::array<int64_t, 8> v;
