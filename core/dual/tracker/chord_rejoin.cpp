@@ -68,13 +68,35 @@ struct DualTracker::ChordRejoin {
               const std::vector<int32_t>& changed)
       : tr(tracker), cx(c), touched(hexes), ids(changed) {}
   bool inIds(int32_t c) const { return c >= 0 && std::binary_search(ids.begin(), ids.end(), c); }
-  int32_t indexOf(Slot s) const;
-  int faceTo(Slot s, Slot t) const;
+  // Small helpers of the hot walks, defined here (inline).
+  int32_t indexOf(Slot s) const {
+    if (!std::binary_search(touched.begin(), touched.end(), s.hex)) return -1;
+    return int32_t(3 * size_t(std::lower_bound(touched.begin(), touched.end(), s.hex) - touched.begin()) +
+                   size_t(s.axis));
+  }
+  // The one face of s's hex along its axis glued to slot t, else -1.
+  int faceTo(Slot s, Slot t) const {
+    int found = -1, count = 0;
+    for (int f = 2 * s.axis; f < 2 * s.axis + 2; ++f) {
+      Gluing g = cx.gluing(s.hex, f);
+      if (!g.boundary() && Slot{g.hex, tables::axisOfFace(g.face)} == t) {
+        found = f;
+        ++count;
+      }
+    }
+    return count == 1 ? found : -1;
+  }
   void listTouched();
   bool cutStretches();
   bool cutStretchesOf(size_t k);
   bool addStretch(int32_t id, int32_t a, int32_t b, int32_t len, bool closed);
-  int32_t endAt(Slot s, int face) const;
+  // The stretch end (2 * stretch + side) at slot s leaving through face, else -1.
+  int32_t endAt(Slot s, int face) const {
+    for (size_t r = 0; r < stretches.size(); ++r)
+      for (int side = 0; side < 2; ++side)
+        if (stretches[r].face[side] == face && stretches[r].end[side] == s) return int32_t(2 * r + size_t(side));
+    return -1;
+  }
   bool walkFromStretchEnds();
   bool walkFrom(size_t r, int side);
   void walkItems(int32_t w, bool forward, std::vector<Item>& out) const;
@@ -105,26 +127,7 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
   return true;
 }
 
-// ---- the touched slots ----
-
-int32_t DualTracker::ChordRejoin::indexOf(Slot s) const {
-  if (!std::binary_search(touched.begin(), touched.end(), s.hex)) return -1;
-  return int32_t(3 * size_t(std::lower_bound(touched.begin(), touched.end(), s.hex) - touched.begin()) +
-                 size_t(s.axis));
-}
-
-// The one face of s's hex along its axis glued to slot t, else -1.
-int DualTracker::ChordRejoin::faceTo(Slot s, Slot t) const {
-  int found = -1, count = 0;
-  for (int f = 2 * s.axis; f < 2 * s.axis + 2; ++f) {
-    Gluing g = cx.gluing(s.hex, f);
-    if (!g.boundary() && Slot{g.hex, tables::axisOfFace(g.face)} == t) {
-      found = f;
-      ++count;
-    }
-  }
-  return count == 1 ? found : -1;
-}
+// ---- the touched slots, by slot (touched is sorted) ----
 
 void DualTracker::ChordRejoin::listTouched() {
   ts.reserve(3 * touched.size());
@@ -186,14 +189,6 @@ bool DualTracker::ChordRejoin::cutStretchesOf(size_t k) {
 }
 
 // ---- walks through the touched slots from every stretch end ----
-
-// The stretch end (2 * stretch + side) at slot s leaving through face, else -1.
-int32_t DualTracker::ChordRejoin::endAt(Slot s, int face) const {
-  for (size_t r = 0; r < stretches.size(); ++r)
-    for (int side = 0; side < 2; ++side)
-      if (stretches[r].face[side] == face && stretches[r].end[side] == s) return int32_t(2 * r + size_t(side));
-  return -1;
-}
 
 bool DualTracker::ChordRejoin::walkFromStretchEnds() {
   for (size_t r = 0; r < stretches.size(); ++r)

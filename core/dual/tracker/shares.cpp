@@ -127,7 +127,8 @@ void DualTracker::checkShares(const Complex& cx) const {
     uint16_t marks = 0;
     if (cx.isHex(h)) {
       for (int e = 0; e < 12; ++e) {
-        const bool closed = edgeIncidences(cx, {h, e}, inc);
+        bool closed = false;
+        inc = cx.edgeCycle({h, e}, &closed);  // (not edgeIncidences: refreshShares stays its one caller, inlined)
         if (*std::min_element(inc.begin(), inc.end()) == EdgeRef{h, e}) marks |= uint16_t(1u << e);
         if (!closed) marks |= kNearBoundary;
       }

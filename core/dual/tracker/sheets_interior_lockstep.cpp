@@ -45,8 +45,20 @@ struct DualTracker::Lockstep {
   bool applies() const;
   void startFronts();
   void floodUntilSettled();
-  int32_t find(int32_t x);
-  void reach(Slot s, int32_t f);
+  // The flood's hot steps, defined here (inline): a group's root; front f reaches slot s.
+  int32_t find(int32_t x) {
+    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+    return x;
+  }
+  void reach(Slot s, int32_t f) {
+    t.front_[slotIndex(s)] = f + 1;
+    reached.push_back({s, label(s), f});
+    queue[size_t(f)].push_back(s);
+    const int32_t id = label(s);
+    if (id >= 0 && !std::binary_search(old.begin(), old.end(), id)) foreign = true;  // an edit not logged whole
+    auto& m = meets[size_t(find(f))];
+    if (id >= 0 && std::find(m.begin(), m.end(), id) == m.end()) m.push_back(id);
+  }
   void unite(int32_t a, int32_t b);
   void advance(size_t f);
   bool settled();
@@ -132,21 +144,6 @@ bool DualTracker::Lockstep::applies() const {
   for (int32_t id : old)
     if (!t.dual_.sheets[size_t(id)].orientable) return false;
   return !t.touchesBoundary(cx, touched);
-}
-
-int32_t DualTracker::Lockstep::find(int32_t x) {
-  while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-  return x;
-}
-
-void DualTracker::Lockstep::reach(Slot s, int32_t f) {
-  t.front_[slotIndex(s)] = f + 1;
-  reached.push_back({s, label(s), f});
-  queue[size_t(f)].push_back(s);
-  const int32_t id = label(s);
-  if (id >= 0 && !std::binary_search(old.begin(), old.end(), id)) foreign = true;  // an edit not logged whole
-  auto& m = meets[size_t(find(f))];
-  if (id >= 0 && std::find(m.begin(), m.end(), id) == m.end()) m.push_back(id);
 }
 
 void DualTracker::Lockstep::unite(int32_t a, int32_t b) {
