@@ -86,19 +86,25 @@ class DualTracker {
 
  private:
   friend struct DualTrackerTestAccess;  // tests break the state on purpose to see checkInvariants fail
-  struct TopologyKept;                  // one topology-kept update's state and steps (tracker/sheets_topology_kept.cpp)
+
+  // ---- sheet update strategies, one unit each; update() runs the first that accepts the edit ----
+  struct TopologyKept;  // state and steps of the topology-kept update (tracker/sheets_topology_kept.cpp)
+  struct Lockstep;      // state and steps of the lockstep flood (tracker/sheets_interior_lockstep.cpp)
   bool updateSheetsLocally(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
-  struct Lockstep;  // one lockstep update's state and steps (tracker/sheets_interior_lockstep.cpp)
   bool updateSheetsLockstep(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   void updateSheetsByFlood(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
+
+  // ---- chord updates (tracker/chord_update.cpp, tracker/chord_rejoin.cpp) ----
+  struct ChordRejoin;  // state and steps of the local chord update
   void updateChords(const Complex& cx, const std::vector<HexId>& touched, DualChange& change);
   std::vector<int32_t> changedChords(const Complex& cx, const std::vector<HexId>& touched);
   bool chordUnchanged(const Complex& cx, int32_t id, const std::vector<Slot>& own) const;
-  struct ChordRejoin;  // one local chord update's state and steps (tracker/chord_rejoin.cpp)
   bool rejoinChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
                     DualChange& change);
   void rewalkChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
                     DualChange& change);
+
+  // ---- chord runs (tracker/chord_runs.cpp) ----
   // Chord pieces: places [lo, hi) of a label's run, listed forward or reversed.
   struct Piece {
     int32_t label, lo, hi;
@@ -116,9 +122,11 @@ class DualTracker {
   void setChordPieces(int32_t id, std::vector<Piece> pieces);
   void growChordIds(size_t n);  // room for chord ids below n in the per-chord arrays
   void settleChords() const;
+  bool chordSelfIntersects(int32_t id) const;
   void checkChordRuns(const Complex& cx) const;
   void checkLabelCuts() const;
-  bool chordSelfIntersects(int32_t id) const;
+
+  // ---- shares (tracker/shares.cpp) ----
   // Recomputes the smallest-incidence marks of the edges through the live touched hexes and the
   // mid-surface share of every slot whose share the edit changed, listing the changes when asked.
   struct ShareChange {
@@ -128,6 +136,8 @@ class DualTracker {
   void refreshShares(const Complex& cx, const std::vector<HexId>& touched, std::vector<ShareChange>* changes);
   bool touchesBoundary(const Complex& cx, const std::vector<HexId>& touched) const;
   void checkShares(const Complex& cx) const;
+
+  // ---- sheet labels, orientations and pair counts (tracker/sheet_labels.cpp) ----
   void propagateSigns(const Complex& cx, const std::vector<Slot>& unsigned_);
   void countSelfHexes(const std::vector<HexId>& hexes, int sign);
   void countSelfHex(HexId h, int sign);
@@ -144,8 +154,12 @@ class DualTracker {
   void checkLabelsOf(const Complex& cx) const;
   void checkOrientations(const Complex& cx) const;
   void checkPairCounts(const Complex& cx) const;
+
+  // ---- the frame (dual_tracker.cpp) ----
   void growPerHexArrays(size_t cap);
   void checkScratchCleared() const;
+
+  // ---- state (each unit's first lines say which it owns) ----
   mutable Dual dual_;                         // dual() settles chord lists
   std::vector<std::vector<int32_t>> labels_;  // per sheet id: the labels naming it
   std::vector<int32_t> labelSlots_;           // per label: slots carrying it
@@ -161,7 +175,6 @@ class DualTracker {
     int32_t count(int32_t a, int32_t b) const;            // the count (checkInvariants)
     std::vector<std::array<int32_t, 3>> entries() const;  // (a, b, count) of the non-zero counts
    private:
-    friend struct DualTrackerTestAccess;  // tests break the state on purpose to see checkInvariants fail
     size_t find(uint64_t key) const;
     std::vector<uint64_t> keys_;
     std::vector<int32_t> counts_;
