@@ -1,0 +1,115 @@
+// SlotList: a sheet's sorted slot list with edits that wait for the next read (runs handed over by
+// a merge, a few additions, removals), merged in one linear pass when read (dual/dual.hpp).
+#include <algorithm>
+
+#include "dual/dual.hpp"
+
+namespace hexdual {
+
+SlotList& SlotList::operator=(std::vector<Slot> sorted) {
+  list_ = std::move(sorted);
+  runs_.clear();
+  adds_.clear();
+  gone_.clear();
+  size_ = list_.size();
+  return *this;
+}
+
+void SlotList::clear() {
+  list_.clear();
+  runs_.clear();
+  adds_.clear();
+  gone_.clear();
+  size_ = 0;
+}
+
+namespace {
+// Pending runs, additions and removals kept before a list is merged without being read: few runs,
+// and additions or removals up to an eighth of the list, so that merging them stays linear in it.
+constexpr size_t kMaxRuns = 16;
+bool tooMany(size_t pending, size_t size) { return pending > 64 + size / 8; }
+
+// Merges sorted `run` into sorted `base` in place, from the back (no second buffer).
+void mergeInto(std::vector<Slot>& base, const std::vector<Slot>& run) {
+  size_t i = base.size(), j = run.size(), k = i + j;
+  base.resize(k);
+  while (j > 0) base[--k] = i > 0 && run[j - 1] < base[i - 1] ? base[--i] : run[--j];
+}
+}  // namespace
+
+void SlotList::add(std::vector<Slot> sorted) {
+  if (sorted.empty()) return;
+  size_ += sorted.size();
+  if (list_.empty() && runs_.empty() && adds_.empty() && gone_.empty()) {
+    list_ = std::move(sorted);
+    return;
+  }
+  mergeInto(adds_, sorted);
+  if (tooMany(adds_.size(), size_)) settle();
+}
+
+void SlotList::absorb(SlotList&& other) {
+  if (other.size_ == 0 && other.gone_.empty()) return;
+  if (size_ == 0 && runs_.empty() && adds_.empty() && gone_.empty()) {
+    *this = std::move(other);
+    other.clear();
+    return;
+  }
+  size_ += other.size_;
+  if (!other.list_.empty()) runs_.push_back(std::move(other.list_));
+  for (auto& r : other.runs_) runs_.push_back(std::move(r));
+  if (!other.adds_.empty()) runs_.push_back(std::move(other.adds_));
+  gone_.insert(gone_.end(), other.gone_.begin(), other.gone_.end());
+  other.clear();
+  if (runs_.size() > kMaxRuns || tooMany(gone_.size(), size_)) settle();
+}
+
+void SlotList::remove(std::vector<Slot> listed) {
+  if (listed.empty()) return;
+  size_ -= listed.size();
+  gone_.insert(gone_.end(), listed.begin(), listed.end());
+  if (tooMany(gone_.size(), size_)) settle();
+}
+
+// Merges the pending runs into the longest list (the smaller ones first, then once into it from
+// the back, in place), then the pending additions, and drops the pending removals in one pass
+// (one listed copy per removal). The pending buffers keep their capacity.
+void SlotList::settle() const {
+  if (!runs_.empty()) {
+    runs_.push_back(std::move(list_));
+    std::sort(runs_.begin(), runs_.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    std::vector<Slot> base = std::move(runs_[0]), rest;
+    for (size_t r = runs_.size(); r-- > 1;) {
+      if (rest.empty()) {
+        rest = std::move(runs_[r]);
+        continue;
+      }
+      std::vector<Slot> both(rest.size() + runs_[r].size());
+      std::merge(rest.begin(), rest.end(), runs_[r].begin(), runs_[r].end(), both.begin());
+      rest = std::move(both);
+    }
+    mergeInto(base, rest);
+    list_ = std::move(base);
+    runs_.clear();
+  }
+  if (!adds_.empty()) {
+    mergeInto(list_, adds_);
+    adds_.clear();
+  }
+  if (!gone_.empty()) {
+    std::sort(gone_.begin(), gone_.end());
+    size_t w = 0, g = 0;
+    for (size_t r = 0; r < list_.size(); ++r) {
+      while (g < gone_.size() && gone_[g] < list_[r]) ++g;
+      if (g < gone_.size() && gone_[g] == list_[r]) {
+        ++g;
+        continue;
+      }
+      list_[w++] = list_[r];
+    }
+    list_.resize(w);
+    gone_.clear();
+  }
+}
+
+}  // namespace hexdual
