@@ -142,7 +142,8 @@ export type XY = [number, number];
 export interface DiagramHeader {
   sheet: number;
   topology: SheetTopology;
-  method: 'disk' | 'annulus' | 'sphere' | 'polygon' | 'local';
+  /** How the sheet was drawn: always whole ('local' only when a local diagram was asked for). */
+  method: 'disk' | 'annulus' | 'holes' | 'sphere' | 'polygon' | 'local';
   local: boolean;
   note: string;
   radius: number;

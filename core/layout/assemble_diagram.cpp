@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "layout/boundary_loops.hpp"
 
 namespace hexdual {
 using namespace tables;
@@ -185,15 +184,16 @@ SheetDiagram assembleDiagram(const Dual& dual, int sheet, const MidSurface& s, c
         d.chords.push_back(std::move(pieces[k]));
       }
     }
-  // Boundary loops (outer first) as polygons of the placed corners.
-  std::vector<BoundaryEdge> edges = boundaryEdges(s, pl.opened);
-  std::vector<std::vector<int>> loops;
-  chainLoops(edges, loops);
-  std::sort(loops.begin(), loops.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
-  for (const auto& l : loops) {
+  // Boundary loops as polygons of their corners and mid-edges, the one on the circle first.
+  const Triangulation& t = pl.tri;
+  for (size_t j = 0; j < t.loopEdges.size(); ++j) {
+    size_t k = j == 0 ? t.outer : j == t.outer ? 0 : j;
     std::vector<Point2> poly;
-    for (int v : loopCorners(edges, l)) poly.push_back(pl.pos[size_t(v)]);
-    d.loops.push_back(poly);
+    for (int e : t.loopEdges[k]) {
+      poly.push_back(pl.pos[size_t(t.edges[size_t(e)].from)]);
+      poly.push_back(edgeMid(t.edges[size_t(e)].slot, t.edges[size_t(e)].face));
+    }
+    d.loops.push_back(std::move(poly));
   }
   return d;
 }
