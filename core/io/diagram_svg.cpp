@@ -110,6 +110,9 @@ std::string diagramSvg(const SheetDiagram& d) {
   cv.S = std::clamp(14 / even, 200.0, 2400.0);
   const double px = even * cv.S, marker = std::clamp(0.3 * px, 1.5, 4.5), stroke = std::clamp(0.15 * px, 0.6, 2.2);
   const std::vector<double> near = nearestCrossing(d, 24 / cv.S);
+  char sw[16];
+  std::snprintf(sw, sizeof sw, "%.3g", stroke);
+  const std::string strokeWidth = sw;
   const double S = cv.S, M = cv.M;
   char buf[256];
   std::string out;
@@ -138,7 +141,7 @@ std::string diagramSvg(const SheetDiagram& d) {
   for (const auto& a : d.arcs) out += seamSvg(cv, a);
   for (const auto& c : d.chords)
     out += "<polyline points=\"" + cv.points(c.points) + "\" fill=\"none\" stroke=\"" + palette::chordColor(c.chord) +
-           "\" stroke-width=\"" + std::to_string(stroke).substr(0, 4) + "\"><title>chord " + std::to_string(c.chord) + " (with sheet " +
+           "\" stroke-width=\"" + strokeWidth + "\"><title>chord " + std::to_string(c.chord) + " (with sheet " +
            std::to_string(c.otherSheet) + ")</title></polyline>\n";
   for (const auto& b : d.boundary) {
     std::snprintf(buf, sizeof buf, "<rect x=\"%.1f\" y=\"%.1f\" width=\"5\" height=\"5\" fill=\"#222\"/>\n",

@@ -45,7 +45,7 @@ std::vector<double> evenAngles(const MidSurface& s, const Triangulation& t, size
 int holeRings(size_t n) { return int(double(n) / (2 * kPi)); }
 
 // ARAP rounds: most drawings settle in a few; a lens or a blind chord opens up within a dozen.
-constexpr int kRelaxIterations = 16;
+constexpr int kRelaxIterations = 8;
 
 // Tutte's drawing (planar by construction), turned counter-clockwise, relaxed towards square
 // quads without flipping a triangle; then the certificate, and the mid vertices a 4-triangle fan

@@ -19,7 +19,9 @@ SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
   // Tutte embeddings of a triangulated disk, planar by construction: checkDiagram confirms it.
   Placement pl;
   SheetDiagram d;
-  bool whole = placeSurface(s, pl);
+  // A sphere opened at one face squeezes its far side by about its size: past a thousand hexes
+  // that is never readable, so such a sphere is cut open straight away.
+  bool whole = !(sh.topology == "sphere" && sh.slots.size() > 1000) && placeSurface(s, pl);
   if (whole) d = assembleDiagram(dual, sheet, s, pl, false);
   if (!whole || (sh.topology != "disk" && diagramSpread(d) < kReadableSpread)) {
     SheetDiagram cut = layoutPolygon(dual, sheet, s);
