@@ -118,9 +118,7 @@ bool placeSurface(const MidSurface& s, Placement& pl, std::string* why) {
   } else {
     pl.method = loops.size() == 1 ? "disk" : loops.size() == 2 ? "annulus" : "holes";
     pl.tri = triangulate(s, -1);
-    size_t& outer = pl.tri.outer;
-    for (size_t k = 1; k < pl.tri.loops.size(); ++k)
-      if (pl.tri.loops[k].size() > pl.tri.loops[outer].size()) outer = k;
+    const size_t outer = pl.tri.outer;
     for (size_t k = 0; k < pl.tri.loops.size(); ++k)
       if (k != outer) fillHole(pl.tri, k, holeRings(pl.tri.loops[k].size()));
     start(pl, fixed);

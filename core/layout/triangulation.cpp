@@ -86,20 +86,24 @@ std::array<Point2, 3> fanReference(double au, double av) {
           Point2{k * cv * std::cos(tv), k * cv * std::sin(tv)}};
 }
 
-// Per corner: the angle each of its quads should take there.
-std::vector<double> cornerShares(const MidSurface& s, int skipSlot, const std::vector<BoundaryEdge>& boundary) {
+// Per corner: the angle each of its quads should take there. Round an inner corner, 2 pi; on the
+// outer loop (drawn as a convex polygon of n corners), pi - 2 pi / n; on a hole's loop (the
+// outside of such a polygon), pi + 2 pi / n; shared by the corner's quads.
+std::vector<double> cornerShares(const MidSurface& s, int skipSlot, const Triangulation& t) {
   const double pi = std::acos(-1.0);
   std::vector<int> quads(size_t(s.nCorner), 0);
-  std::vector<bool> onBoundary(size_t(s.nCorner), false);
+  std::vector<double> around(size_t(s.nCorner), 2 * pi);
   for (size_t i = 0; i < s.slots.size(); ++i)
     if (int(i) != skipSlot)
       for (int v : s.quad[i]) ++quads[size_t(v)];
-  for (const BoundaryEdge& e : boundary) onBoundary[size_t(e.from)] = onBoundary[size_t(e.to)] = true;
-  std::vector<double> share(size_t(s.nCorner), 0.5 * pi);
-  for (int v = 0; v < s.nCorner; ++v) {
-    const int k = quads[size_t(v)] * (onBoundary[size_t(v)] ? 2 : 1);
-    if (k > 0 && k != 4) share[size_t(v)] = 2 * pi / k;  // a regular corner keeps exactly pi / 2
+  for (size_t k = 0; k < t.loopEdges.size(); ++k) {
+    const double n = double(t.loopEdges[k].size());
+    for (int e : t.loopEdges[k]) around[size_t(t.edges[size_t(e)].from)] = k == t.outer ? pi - 2 * pi / n : pi + 2 * pi / n;
   }
+  std::vector<double> share(size_t(s.nCorner), 0.5 * pi);
+  for (int v = 0; v < s.nCorner; ++v)
+    if (quads[size_t(v)] > 0 && !(quads[size_t(v)] == 4 && around[size_t(v)] == 2 * pi))  // a regular corner: exactly pi / 2
+      share[size_t(v)] = around[size_t(v)] / quads[size_t(v)];
   return share;
 }
 
@@ -114,7 +118,9 @@ Triangulation triangulate(const MidSurface& s, int skipSlot) {
   }
   if (!boundaryLoops(s, skipSlot, t.edges, t.loopEdges))
     throw Error("sheet diagram: the boundary does not chain into loops");
-  const std::vector<double> share = cornerShares(s, skipSlot, t.edges);
+  for (size_t k = 1; k < t.loopEdges.size(); ++k)  // the longest loop goes outside
+    if (t.loopEdges[k].size() > t.loopEdges[t.outer].size()) t.outer = k;
+  const std::vector<double> share = cornerShares(s, skipSlot, t);
   t.vertices = t.firstVirtual = s.total();
   t.centre.assign(size_t(t.vertices), false);
   for (size_t i = 0; i < s.slots.size(); ++i) {

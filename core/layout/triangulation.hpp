@@ -30,7 +30,7 @@ struct Triangulation {
   // Per loop: its boundary edges (indices into `edges`), and the edges themselves.
   std::vector<std::vector<int>> loopEdges;
   std::vector<BoundaryEdge> edges;
-  size_t outer = 0;  // the loop drawn on the circle (the others are holes)
+  size_t outer = 0;  // the loop drawn on the circle, the longest (the others are holes)
   std::vector<bool> centre;  // per vertex: a quad's centre (adjacent to no other centre)
 };
 
