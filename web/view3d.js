@@ -10,7 +10,7 @@ import { createScene } from './view3d/scene.js';
 import { createHexLayers, hiddenBySlice, SHELL_MIN_HEXES, EDGE_LINES_MAX_HEXES } from './view3d/meshBuffers.js';
 import { pickRay, classifyHit } from './view3d/picking.js';
 import { clearGroup, drawMarks, drawDualOverlay, ACCENT, HOVER } from './view3d/overlays.js';
-import { showGhosts } from './view3d/animation.js';
+import { showGhosts, animateStep } from './view3d/animation.js';
 
 export { SHELL_MIN_HEXES };
 
@@ -99,6 +99,7 @@ export function createView3d(container, options = {}) {
     const drawn = { slice: shell ? state.slice : null, always: shell && report ? report.created : null };
     const key = `${state.meshKey}|${state.shrink}${shell && state.slice ? `|${state.slice.axis}:${state.slice.at}` : ''}`;
     if (geomKey === key) return false;
+    motion?.cancel();
     const t0 = performance.now();
     const sameMesh = geomKey && geomKey.split('|')[0] === state.meshKey;
     const sameStart = geomKey && startOf(geomKey.split('|')[0]) === startOf(state.meshKey);
@@ -112,8 +113,18 @@ export function createView3d(container, options = {}) {
     }
     if (!sameMesh) showGhosts(ghosts, state.ghosts && report ? prevRb : null, report?.removed, sc.requestRender);
     if (!state.ghosts) clearGroup(ghosts);
+    // A step (or a move in time) on a mesh drawn whole: animated once the colours are painted.
+    pendingMotion = !sameMesh && prevRb && !shell ? { prevRb, created: report?.created ?? [] } : null;
     view.lastBuildMs = performance.now() - t0;
     return true;
+  }
+
+  let pendingMotion = null, motion = null;
+  function startMotion() {
+    motion?.cancel();
+    const m = pendingMotion;
+    pendingMotion = null;
+    motion = m && animateStep(layers, m.prevRb, { created: m.created, requestRender: sc.requestRender });
   }
 
   const view = {
@@ -165,7 +176,12 @@ export function createView3d(container, options = {}) {
         view.sliceKey = sliceKey;
         view.setSlice(state.slice);
       }
+      if (pendingMotion) startMotion();
       if (dirty) sc.requestRender();
+    },
+    /** Whether a step animation is running (tests wait for the end). */
+    get animating() {
+      return !!motion?.running;
     },
     setHover(hover) {
       lastHover = hover;

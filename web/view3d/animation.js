@@ -1,11 +1,57 @@
-// Motion in a 3D view: removed hexes as red ghosts taken from the previous buffers, fading to
-// faint. Frames are requested only while something moves.
+// Motion in a 3D view: a step's hexes move from where they were drawn before to where they are
+// now while the created ones fade in, and removed hexes show as red ghosts taken from the previous
+// buffers. Frames are requested only while something moves; prefers-reduced-motion shows the end.
 import * as THREE from 'three';
 import { clearGroup } from './overlays.js';
+import { tween, STEP_MS, prefersReducedMotion } from '../motion.js';
 
-/** Whether the user asked for less motion (then every change is shown at once). */
-export function prefersReducedMotion() {
-  return typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
+export { prefersReducedMotion };
+
+// Hex id -> buffer slot of a render buffer (12 triangles per hex).
+function slotsById(rb) {
+  const th = rb.triangleHex;
+  const slot = new Map();
+  for (let k = 0; k < th.length / 12; k++) slot.set(th[12 * k], k);
+  return slot;
+}
+
+/**
+ * Animates the step from `prevRb` to the layers' buffers: hexes drawn in both move from their old
+ * 24 vertices to their new ones, hexes in `created` fade in. `requestRender` draws a frame,
+ * `onDone` runs at the end. Returns { cancel() } (jumps to the end), or null when nothing moves.
+ */
+export function animateStep(layers, prevRb, { created = [], requestRender, onDone, ms = STEP_MS }) {
+  if (!prevRb || !layers.rb || prefersReducedMotion()) return null;
+  const end = layers.rb.positions, start = new Float32Array(end);
+  const before = slotsById(prevRb), th = layers.rb.triangleHex;
+  let moves = false;
+  for (let k = 0; k < layers.hexCount; k++) {
+    const old = before.get(th[12 * k]);
+    if (old === undefined) continue;
+    start.set(prevRb.positions.subarray(72 * old, 72 * old + 72), 72 * k);
+    for (let i = 72 * k; i < 72 * k + 72 && !moves; i++) moves = start[i] !== end[i];
+  }
+  const fading = created.filter((h) => layers.slotOf(h) >= 0);
+  if (!moves && !fading.length) return null;
+  const cur = new Float32Array(start);
+  const attr = layers.setDrawnPositions(cur);
+  layers.holdBack(fading);
+  // Edge lines stay where the hexes end, and the x-ray layer would show created hexes at once.
+  const shown = { edges: layers.edgeLines.visible, fresh: layers.fresh.visible };
+  layers.edgeLines.visible = layers.fresh.visible = false;
+  return tween(ms, (t) => {
+    for (let i = 0; i < end.length; i++) cur[i] = start[i] + (end[i] - start[i]) * t;
+    attr.needsUpdate = true;
+    layers.appear.material.opacity = t;
+    requestRender();
+  }, () => {
+    layers.setDrawnPositions(null);
+    layers.holdBack(null);
+    layers.edgeLines.visible = shown.edges;
+    layers.fresh.visible = shown.fresh;
+    requestRender();
+    onDone?.();
+  });
 }
 
 // The triangles of the `removed` hexes in the previous buffers, as a flat position array.

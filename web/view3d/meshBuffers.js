@@ -72,9 +72,28 @@ export function createHexLayers() {
   fresh.renderOrder = 2.5;
   fresh.visible = false;
   const edgeLines = new THREE.LineSegments(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0x44506a, transparent: true, opacity: 0.45 }));
+  // Hexes held back from the other layers while they fade in (a step animation).
+  const appear = new THREE.Mesh(
+    new THREE.BufferGeometry(),
+    new THREE.MeshLambertMaterial({ vertexColors: true, transparent: true, depthWrite: false, opacity: 0 }),
+  );
+  appear.renderOrder = 2.2;
+  appear.visible = false;
+  // Animation frames move vertices outside the bounding spheres three.js computed once.
+  for (const m of [solid, faint, fresh, appear]) m.frustumCulled = false;
+  // A geometry over the solid's attributes with only these slots' triangles.
+  const subset = (slots) => {
+    const src = layers.rb.indices;
+    const idx = new Uint32Array(36 * slots.length);
+    slots.forEach((k, i) => idx.set(src.subarray(36 * k, 36 * k + 36), 36 * i));
+    const g = new THREE.BufferGeometry();
+    for (const name of ['position', 'normal', 'color']) g.setAttribute(name, solid.geometry.getAttribute(name));
+    g.setIndex(new THREE.BufferAttribute(idx, 1));
+    return g;
+  };
   const layers = {
-    solid, faint, fresh, edgeLines,
-    objects: [solid, faint, fresh, edgeLines],
+    solid, faint, fresh, edgeLines, appear,
+    objects: [solid, faint, fresh, edgeLines, appear],
     rb: null, hexSlot: null, centres: null, radii: null, hexCount: 0, hasFaint: false,
 
     /** Takes new render buffers (edge lines when `edges` and the buffers have them). */
@@ -117,14 +136,33 @@ export function createHexLayers() {
     showFresh(created) {
       const ks = (created || []).map(layers.slotOf).filter((k) => k >= 0);
       fresh.visible = ks.length > 0;
-      if (!fresh.visible) return;
-      const src = layers.rb.indices;
-      const idx = new Uint32Array(36 * ks.length);
-      ks.forEach((k, i) => idx.set(src.subarray(36 * k, 36 * k + 36), 36 * i));
-      const g = new THREE.BufferGeometry();
-      for (const name of ['position', 'normal', 'color']) g.setAttribute(name, solid.geometry.getAttribute(name));
-      g.setIndex(new THREE.BufferAttribute(idx, 1));
-      fresh.geometry = g;
+      if (fresh.visible) fresh.geometry = subset(ks);
+    },
+
+    /**
+     * Takes these hex ids out of the solid and faint layers and draws them in the `appear` layer,
+     * whose opacity an animation raises; `holdBack(null)` puts them back.
+     */
+    holdBack(ids) {
+      const held = new Set((ids || []).map(layers.slotOf).filter((k) => k >= 0));
+      appear.visible = held.size > 0;
+      if (!held.size) {
+        solid.geometry.setIndex(new THREE.BufferAttribute(layers.rb.indices, 1));
+        return;
+      }
+      appear.geometry = subset([...held]);
+      const rest = [...Array(layers.hexCount).keys()].filter((k) => !held.has(k));
+      solid.geometry.setIndex(subset(rest).index);
+    },
+
+    /**
+     * Draws from `array` instead of the buffers' positions (an animation writes its frames there and
+     * sets the returned attribute's needsUpdate); null restores the buffers' own.
+     */
+    setDrawnPositions(array) {
+      const attr = new THREE.BufferAttribute(array ?? layers.rb.positions, 3);
+      for (const g of new Set([solid.geometry, fresh.geometry, appear.geometry])) if (g.getAttribute('position')) g.setAttribute('position', attr);
+      return attr;
     },
 
     /** The buffer slot of a hex id, or -1 when it is not drawn. */

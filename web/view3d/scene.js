@@ -6,9 +6,10 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 
 /**
  * A renderer in `container`. `options.onCamera()` fires after the user moved the camera;
- * `options.antialias` (default false: SwiftShader spends its frame on fragments).
+ * `options.antialias` (default false: SwiftShader spends its frame on fragments); `options.headlight`
+ * adds a light that moves with the camera.
  */
-export function createScene(container, { antialias = false, fov = 40, onCamera } = {}) {
+export function createScene(container, { antialias = false, fov = 40, onCamera, headlight = false } = {}) {
   const renderer = new THREE.WebGLRenderer({ antialias, preserveDrawingBuffer: true });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
   renderer.setClearColor(0xffffff);
@@ -24,6 +25,13 @@ export function createScene(container, { antialias = false, fov = 40, onCamera }
   const sun = new THREE.DirectionalLight(0xffffff, 1.4);
   sun.position.set(3, 5, 4);
   scene.add(sun);
+  // A light at the camera: faces turned toward the viewer are lit from any side (tutorial figures).
+  if (headlight) {
+    const head = new THREE.DirectionalLight(0xffffff, 0.9);
+    head.position.set(0, 0, 1);
+    camera.add(head);
+    scene.add(camera);
+  }
   const stats = { frames: 0, lastFrameMs: 0 };
   const beforeFrame = new Set();
 
