@@ -23,7 +23,8 @@ export function explorerPage(page, server) {
   // The step animation (if any) has ended and two more frames are drawn: the view shows the state.
   const settle = () => page.evaluate(async () => {
     const frame = () => new Promise((r) => requestAnimationFrame(r));
-    while (window.hexdual?.view?.animating) await frame();
+    const diagramsMove = () => [...(window.hexdual?.diagrams?.panels.values() ?? [])].some((p) => p.animating);
+    while (window.hexdual?.view?.animating || diagramsMove()) await frame();
     await frame();
     await frame();
   });

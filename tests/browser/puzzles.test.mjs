@@ -199,3 +199,91 @@ test('every puzzle is solved by pointer clicks, reaching its goal and the shorte
   assert.equal(await page.locator('.puzzle-chip', { hasText: '✓' }).count(), all.length);
   assert.deepEqual(problems, []);
 });
+
+test('progress: solved marks and the steps in play survive a reload; a shared link opens the same steps; start again', async () => {
+  await openPuzzle('blind-chord');
+  // The previous test solved every puzzle: the list says so after a reload (localStorage).
+  await page.reload();
+  await page.waitForFunction(() => window.tutorial?.ready === true);
+  assert.equal(await page.locator('.puzzle-chip', { hasText: '✓' }).count(), (await page.evaluate(() => window.tutorial.puzzle.puzzles.length)));
+  // Steps in play are kept per puzzle (here: the sphere's, from the previous test) …
+  await page.locator('.puzzle-chip[data-puzzle="sphere"]').click();
+  assert.deepEqual((await puzzle()).steps, ['pillow h0f1']);
+  assert.equal(await page.locator('#puzzle').getAttribute('data-solved'), 'true');
+  // … and the link carries them: another tab opens the same state.
+  const link = await page.locator('#puzzle-share').getAttribute('href');
+  assert.equal(decodeURIComponent(link), '#p=sphere&steps=v1;pillow h0f1');
+  const other = await context.newPage();
+  await other.goto(`${server.url}tutorials/puzzles.html${link}`);
+  await other.waitForFunction(() => window.tutorial?.ready === true);
+  assert.deepEqual(await other.evaluate(() => window.tutorial.puzzle.steps), ['pillow h0f1']);
+  assert.equal(await other.locator('#puzzle-log li').count(), 1);
+  assert.match(await other.locator('#puzzle-log li').textContent(), /^Pillow face 1 \(local \+x\) of hex 0: two new hexes and a sphere sheet around it — \+2 hexes \(4, 5\); sheets: new 5$/);
+  await other.close();
+  // Undo and start again, by their buttons.
+  await page.locator('#puzzle-undo').click();
+  assert.deepEqual((await puzzle()).steps, []);
+  assert.equal(await page.locator('#puzzle').getAttribute('data-solved'), 'false');
+  assert.match(decodeURIComponent(new URL(page.url()).hash), /^#p=sphere$/);
+  assert.deepEqual(problems, []);
+});
+
+test('hints and the next step: the figure marks where to pick; typed steps still work and refused ones say why', async () => {
+  await openPuzzle('one-seven', 1280, { steps: '&steps=v1' });
+  await page.locator('#puzzle-hint').click();
+  await page.locator('#puzzle-hint').click();
+  assert.equal(await page.locator('#puzzle-hints li').count(), 2);
+  await page.locator('#puzzle-next').click();
+  assert.match(await page.locator('#puzzle-next-text').textContent(), /^Next: Pillow face 5 \(local \+z\) of hex 0: .* \(pillow h0f5\)\.$/);
+  await page.locator('.typing summary').click();
+  await page.locator('#puzzle-typed').fill('pillow h0f5\nhexpush h0f9');
+  await page.locator('#puzzle-apply-typed').click();
+  assert.match(await page.locator('#puzzle-typed-result').textContent(), /^applied 1; hexpush h0f9: /);
+  assert.deepEqual((await puzzle()).steps, ['pillow h0f5']);
+  await page.locator('#puzzle-typed').fill('hexpush h0f5');
+  await page.locator('#puzzle-apply-typed').click();
+  await settle();
+  assert.equal(await page.locator('#puzzle').getAttribute('data-solved'), 'true');
+  // Off the known answer: the hint says where it left it.
+  await page.locator('#puzzle-reset').click();
+  await page.locator('#puzzle-typed').fill('hexpush h0f5');
+  await page.locator('#puzzle-apply-typed').click();
+  await page.locator('#puzzle-next').click();
+  assert.equal(await page.locator('#puzzle-next-text').textContent(), 'Your steps leave the known answer at step 1: undo back to the start to follow it.');
+  assert.deepEqual(problems, []);
+});
+
+test('a step animates in 3D and in the diagram, and not with prefers-reduced-motion', async () => {
+  for (const motion of ['no-preference', 'reduce']) {
+    await openPuzzle('sphere', 1280, { steps: '&steps=v1', motion });
+    const seen = await page.evaluate(() => {
+      const fig = window.tutorial.puzzle.figure;
+      fig.setStages([...fig.stages, { ops: ['pillow h0f1'], label: 'pillow h0f1' }]);
+      return { view: fig.view.animating, diagram: fig.diagramView.animating };
+    });
+    await settle();
+    const after = await page.evaluate(() => window.tutorial.puzzle.figure.animating);
+    if (motion === 'reduce') assert.deepEqual(seen, { view: false, diagram: false });
+    else assert.equal(seen.view, true, 'the 3D view animates the step');
+    assert.equal(after, false);
+  }
+});
+
+test('phone and desktop: no sideways scroll, screenshots of a puzzle in play', async () => {
+  for (const width of [1280, 390]) {
+    await openPuzzle('ring-collapse', width, { steps: '&steps=v1;hexpush%20h13f5' });
+    const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+    assert.ok(overflow <= 1, `puzzles fits ${width} px (overflow ${overflow} px)`);
+    await page.locator('input[name=pick][value=quad]').check();
+    const at = await findPick('hexpush h4f5', true);
+    assert.ok(at, 'the second push is pickable');
+    await page.mouse.click(at.x, at.y);
+    await page.locator('#candidates button.cand[data-step="hexpush h4f5"]').hover();
+    await settle();
+    await page.screenshot({ path: join(screenshotDir, `puzzles-play-${width}.png`), fullPage: true });
+  }
+  await openPuzzle('four-four-v', 390, { steps: '&steps=v1;hexpush%20h0f0' });
+  assert.ok(await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth) <= 1);
+  await page.screenshot({ path: join(screenshotDir, 'puzzles-four-four-v-390.png'), fullPage: true });
+  assert.deepEqual(problems, []);
+});

@@ -227,7 +227,7 @@ export function createFigure(root, opts) {
       shrink: opts.shrink,
       animate: animate && change ? change : null,
       marks,
-      labels: opts.hexLabels?.(api),
+      labels: opts.hexLabels ? () => opts.hexLabels(api) : null, // after the layout is made
     });
     opts.onDraw3d?.(api);
   }
@@ -264,7 +264,8 @@ export function createFigure(root, opts) {
     dom.toggle.textContent = state.stage === last ? 'show before' : 'show after';
     dom.toggle.setAttribute('aria-pressed', String(state.stage === last));
     const st = stages[state.stage];
-    dom.stageLabel.textContent = last > 0 ? `${state.stage}/${last}: ${st.label}` : st.label || '';
+    const label = last > 0 ? `${state.stage}/${last}: ${st.label}` : st.label || '';
+    dom.stageLabel.textContent = state.preview ? `preview: ${state.preview[state.preview.length - 1]}` : label;
     const hash = api.hash();
     dom.link.hidden = hash === null;
     if (hash !== null) dom.link.href = `../index.html${hash}`;

@@ -117,7 +117,8 @@ function apply(step, quiet = false) {
     S.steps = [...keep, step];
     S.reports = [...S.reports.slice(0, keep.length), report];
   } catch (e) {
-    $('puzzle-check').textContent = `${step}: ${e.message}`;
+    S.error = `${step}: ${e.message}`;
+    $('puzzle-check').textContent = S.error;
     return false;
   } finally {
     m.delete();
@@ -223,6 +224,9 @@ function listPuzzles() {
       return b;
     }),
   );
+  // On a phone the list is one scrolling row: bring the current puzzle into it.
+  const list = $('puzzle-list'), current = list.querySelector('[aria-current=true]');
+  if (current && list.scrollWidth > list.clientWidth) list.scrollLeft = current.offsetLeft - list.offsetLeft - 12;
 }
 
 /** Opens a puzzle with steps (from the URL or storage); steps the engine refuses are dropped. */
@@ -254,7 +258,7 @@ function applyTyped() {
   for (const s of steps) {
     if (!apply(s, true)) {
       refresh();
-      return void (out.textContent = `applied ${n}; ${$('puzzle-check').textContent}`);
+      return void (out.textContent = `applied ${n}; ${S.error}`);
     }
     n++;
   }

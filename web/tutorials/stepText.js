@@ -1,16 +1,18 @@
 // Operation-log steps read out for a student: "pillow h0f1" -> "Pillow the +x face of hex 0", with
 // what the step did (from the engine's step report). Faces are 2*axis + side (docs/oplog.md).
 
-const FACE = ['−x', '+x', '−y', '+y', 'bottom (−z)', 'top (+z)'];
+// A hex's local axes (x, y, z of its corner numbering) are the grid's axes in a grid; elsewhere
+// (the 4-cube) they are only local, hence "local".
+const FACE = ['−x', '+x', '−y', '+y', '−z', '+z'];
 const AXIS = ['x', 'y', 'z'];
 
-/** "the +x face of hex 0" for h0f1. */
+/** "face 1 (local +x) of hex 0" for h0f1. */
 export function quadText(hex, face) {
-  return `the ${FACE[face]} face of hex ${hex}`;
+  return `face ${face} (local ${FACE[face]}) of hex ${hex}`;
 }
-/** "edge 11 of hex 0 (along z)" for h0e11. */
+/** "edge 11 (local z) of hex 0" for h0e11. */
 export function edgeText(hex, edge) {
-  return `edge ${edge} of hex ${hex} (along ${AXIS[edge >> 2]})`;
+  return `edge ${edge} (local ${AXIS[edge >> 2]}) of hex ${hex}`;
 }
 
 /** A pick ({ kind, hex, face | edge }) in words. */

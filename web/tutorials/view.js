@@ -72,6 +72,16 @@ export function createView(container, { onHover, onPick, pickMode = () => 'hex' 
       return { ...l, el: e };
     });
   }
+  // The highest drawn corner of a hex that lies inside the view (a label for an enclosing shell).
+  function cornerInView(k, r) {
+    let best = null;
+    for (let v = 0; v < 24; v++) {
+      const p = sc.toPage(layers.vertexAt(24 * k + v));
+      const inside = p.x > r.left + 30 && p.x < r.right - 30 && p.y > r.top + 12 && p.y < r.bottom - 12;
+      if (inside && (!best || p.y < best.y)) best = p;
+    }
+    return best ?? sc.toPage(layers.centreOf(k));
+  }
   sc.onFrame(() => {
     if (!labels.length) return;
     const r = container.getBoundingClientRect();
@@ -79,7 +89,7 @@ export function createView(container, { onHover, onPick, pickMode = () => 'hex' 
       const k = layers.slotOf(l.hex);
       l.el.hidden = k < 0;
       if (k < 0) continue;
-      const p = sc.toPage(l.anchor === 'corner' ? layers.vertexAt(24 * k) : layers.centreOf(k));
+      const p = l.anchor === 'corner' ? cornerInView(k, r) : sc.toPage(layers.centreOf(k));
       l.el.style.transform = `translate(${(p.x - r.left).toFixed(1)}px, ${(p.y - r.top).toFixed(1)}px) translate(-50%, -50%)`;
     }
   });
@@ -162,7 +172,7 @@ export function createView(container, { onHover, onPick, pickMode = () => 'hex' 
     layers.setBuffers(rb, true);
     if (fittedKey !== o.fitKey) {
       fittedKey = o.fitKey;
-      sc.fit(fitPositions(rb), [1.3, -2.4, 1.5], 2.9);
+      sc.fit(fitPositions(rb), [1.3, -2.4, 1.5], 3.2);
     }
     return o.animate ? prevRb : null;
   }
@@ -190,17 +200,19 @@ export function createView(container, { onHover, onPick, pickMode = () => 'hex' 
      * gives a CSS colour for emphasised hexes or null for the faint rest (`faintAlpha`, 0..255);
      * `chords` are { hexes (ids), color, closed }; `fitKey` refits the camera when it changes;
      * `layout(mesh)` gives a per-hex transform; `animate` = { created, removed } animates from the
-     * previous drawing; `marks` = [[pick, color, opacity]].
+     * previous drawing; `marks` = [[pick, color, opacity]]; `labels` (or a function giving them) =
+     * [{ hex, text, cls, title, anchor }] over the canvas.
      */
     draw(mesh, o) {
       let prevRb = null;
+      sc.resize(); // the camera's aspect before a first fit
       if (geomKey !== o.key) {
         prevRb = rebuild(mesh, o);
         geomKey = o.key;
       }
       paint(o.colorOf, o.faintAlpha ?? 56);
       labelBox.replaceChildren();
-      setLabels(o.labels || []);
+      setLabels((typeof o.labels === 'function' ? o.labels() : o.labels) || []);
       drawChords(o.chords || []);
       if (o.dualVertices) drawDualVertices();
       drawMarks(marks, layers, tables, o.marks || []);

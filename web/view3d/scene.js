@@ -66,8 +66,11 @@ export function createScene(container, { antialias = false, fov = 40, onCamera, 
     const box = new THREE.Box3().setFromArray(positions);
     const center = box.getCenter(new THREE.Vector3());
     const radius = box.getSize(new THREE.Vector3()).length() / 2 || 1;
+    // A view taller than wide (a phone) sees less across than up: back off so the box fits across.
+    const half = (camera.fov * Math.PI) / 360, across = Math.atan(Math.tan(half) * camera.aspect);
+    const portrait = camera.aspect < 1 ? Math.sin(half) / Math.sin(across) : 1;
     controls.target.copy(center);
-    camera.position.copy(center).add(new THREE.Vector3(...direction).normalize().multiplyScalar(radius * distance));
+    camera.position.copy(center).add(new THREE.Vector3(...direction).normalize().multiplyScalar(radius * distance * portrait));
     camera.near = radius / 100;
     camera.far = radius * 100;
     camera.updateProjectionMatrix();
