@@ -281,6 +281,7 @@ test('phone and desktop: no sideways scroll, screenshots of a puzzle in play', a
     await page.locator('#candidates button.cand[data-step="hexpush h4f5"]').hover();
     await settle();
     await page.screenshot({ path: join(screenshotDir, `puzzles-play-${width}.png`), fullPage: true });
+    await page.locator('#fig-puzzle').screenshot({ path: join(screenshotDir, `puzzles-board-${width}.png`) });
   }
   await openPuzzle('four-four-v', 390, { steps: '&steps=v1;hexpush%20h0f0' });
   assert.ok(await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth) <= 1);

@@ -60,3 +60,23 @@ test('a refused step names the step and the engine\'s rule', () => {
   assert.equal(v.ok, false);
   assert.match(v.message, /^step 1 \(pillow h0f0\) was refused: pillow: /);
 });
+
+test('the numbers in the goals are the engine\'s: hexes a flip makes, the blue hexes named', () => {
+  const words = { two: 2, four: 4, five: 5, six: 6, seven: 7, eight: 8, one: 1 };
+  for (const p of PUZZLES.filter((x) => x.flip)) {
+    // "… by N hexes" / "… into two" / "… back into two": the hexes where the before side was.
+    const m = /(?:by|into|Make them) (one|two|four|five|six|seven)\b/.exec(p.goal);
+    assert.ok(m, `${p.id}: ${p.goal}`);
+    const start = eng.build(p.mesh, p.pre);
+    const host = start.counts.hexes - p.flip.before.length;
+    start.flip(p.flip.name, p.flip.before);
+    assert.equal(start.counts.hexes - host, words[m[1]], `${p.id}: ${p.goal}`);
+    start.delete();
+  }
+  const tcp = PUZZLES.find((x) => x.id === 'triple-chord');
+  assert.match(tcp.goal, /the eight blue hexes/);
+  assert.equal(tcp.focus.length, 8);
+  const col = PUZZLES.find((x) => x.id === 'ring-collapse');
+  assert.match(col.goal, new RegExp(`hexes ${col.focus.join(', ')}`));
+  assert.match(PUZZLES.find((x) => x.id === 'blind-chord').goal, /a closed chord of just 2 hexes/);
+});
