@@ -1,11 +1,12 @@
 // Engine facts the tutorials show: every stored decomposition record (found or not, with its
 // search bounds), so no page types a step count or a "none of at most k" by hand; and the ring
 // splits through a picked edge (candidates() does not enumerate ring splits). Its own
-// EMSCRIPTEN_BINDINGS block; it reads a mesh through WasmMesh::complexAddress like bindings_view.cpp.
+// EMSCRIPTEN_BINDINGS block; it reads a mesh through WasmMesh::complexAddress (addressed.hpp).
 #include <emscripten/bind.h>
 
 #include <string>
 
+#include "addressed.hpp"
 #include "flips/decompositions.hpp"
 #include "ops/oplog.hpp"
 #include "ops/ring_splits.hpp"
@@ -15,18 +16,8 @@ using namespace hexdual;
 
 namespace {
 
-const Complex& complexAt(double address) { return *reinterpret_cast<const Complex*>(uintptr_t(address)); }
-
-template <class F>
-val guardedObject(F&& f) {
-  try {
-    return f();
-  } catch (const std::exception& e) {
-    val out = val::object();
-    out.set("error", std::string(e.what()));
-    return out;
-  }
-}
+using wasm::complexAt;
+using wasm::guardedObject;
 
 val stepList(const std::vector<OpStep>& steps) {
   val out = val::array();

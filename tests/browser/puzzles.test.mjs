@@ -5,23 +5,11 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { startServer, startBrowser, screenshotDir } from './harness.mjs';
+import { pageSession, screenshotDir } from './harness.mjs';
 
 let server, context, page;
+const { problems } = pageSession(before, after, (s) => ({ server, context, page } = s));
 let viaDiagram = 0;
-const problems = [];
-
-before(async () => {
-  server = await startServer();
-  context = await startBrowser();
-  page = await context.newPage();
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));
-});
-after(async () => {
-  await context?.close();
-  server?.stop();
-});
 
 async function openPuzzle(id, width = 1280, { steps = '', motion = 'reduce' } = {}) {
   await page.emulateMedia({ reducedMotion: motion });
@@ -278,8 +266,13 @@ test('phone and desktop: no sideways scroll, screenshots of a puzzle in play', a
     const at = await findPick('hexpush h4f5', true);
     assert.ok(at, 'the second push is pickable');
     await page.mouse.click(at.x, at.y);
-    await page.locator('#candidates button.cand[data-step="hexpush h4f5"]').hover();
-    await settle();
+    // Point at the second push (hovering may scroll the list under the pointer: point again then).
+    const label = page.locator('#fig-puzzle .stage-label');
+    for (let k = 0; k < 3 && (await label.textContent()) !== 'preview: hexpush h4f5'; k++) {
+      await page.locator('#candidates button.cand[data-step="hexpush h4f5"]').hover();
+      await settle();
+    }
+    assert.equal(await label.textContent(), 'preview: hexpush h4f5');
     await page.screenshot({ path: join(screenshotDir, `puzzles-play-${width}.png`), fullPage: true });
     await page.locator('#fig-puzzle').screenshot({ path: join(screenshotDir, `puzzles-board-${width}.png`) });
   }

@@ -6,7 +6,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { writeFileSync } from 'node:fs';
-import { startServer, startBrowser, screenshotDir } from './harness.mjs';
+import { pageSession, screenshotDir } from './harness.mjs';
 import { init, Mesh, flips, decompositions } from 'hexdual';
 
 await init();
@@ -14,19 +14,7 @@ const record = (problem) => decompositions().find((r) => r.problem === problem);
 
 const PAGES = ['dual', 'diagrams', 'simple', 'pillow', 'push', 'collapse', 'flips', 'puzzles'];
 let server, context, page;
-const problems = [];
-
-before(async () => {
-  server = await startServer();
-  context = await startBrowser();
-  page = await context.newPage();
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));
-});
-after(async () => {
-  await context?.close();
-  server?.stop();
-});
+const { problems } = pageSession(before, after, (s) => ({ server, context, page } = s));
 
 async function open(name, width = 1280, motion = 'reduce') {
   await page.emulateMedia({ reducedMotion: motion });

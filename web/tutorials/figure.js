@@ -118,7 +118,7 @@ export function createFigure(root, opts) {
   let stages = opts.stages || stagesFromSteps(opts.steps || [], opts.labels);
   const dom = figureDom(root, opts);
   const state = { stage: opts.startAfter ? stages.length - 1 : opts.start || 0, sheet: null, hot: -1, picked: opts.picked ?? null, mesh: null, preview: null, ids: [] };
-  let startCounts = null, startMaxId = -1, dual = null, model = null, change = null, marks = [];
+  let startCounts = null, startMaxId = -1, dual = null, model = null, change = null, marks = [], drawnKey = 0;
 
   // The 3D view (a WebGL context) is made when the figure first scrolls into sight: pages with
   // several figures become interactive sooner.
@@ -164,6 +164,7 @@ export function createFigure(root, opts) {
     state.mesh = meshAfter(spec, ops);
     const ids = liveHexIds(state.mesh);
     change = old ? idChange(state.ids, ids) : null;
+    drawnKey++; // a new mesh: the 3D view rebuilds (animated or not)
     state.ids = ids;
     if (old) old.delete();
     dual = hexSheets(state.mesh);
@@ -214,7 +215,6 @@ export function createFigure(root, opts) {
     }
   }
 
-  let drawnKey = 0;
   function draw3d(animate) {
     if (!view) return;
     view.draw(state.mesh, {
@@ -269,7 +269,6 @@ export function createFigure(root, opts) {
     const hash = api.hash();
     dom.link.hidden = hash === null;
     if (hash !== null) dom.link.href = `../index.html${hash}`;
-    if (animate) drawnKey++;
     drawChips();
     drawDiagram(animate);
     draw3d(animate);

@@ -83,6 +83,12 @@ export function showGhosts(group, prevRb, removed, requestRender, { from = 0.6, 
   const m = new THREE.Mesh(g, mat);
   m.renderOrder = 3;
   group.add(m);
+  if (prefersReducedMotion()) {
+    mat.opacity = to;
+    if (to <= 0) clearGroup(group);
+    requestRender();
+    return group.children.length ? m : null;
+  }
   const start = performance.now();
   const fade = () => {
     const f = Math.min(1, (performance.now() - start) / ms);
