@@ -171,6 +171,12 @@ test('live numbers: the paper\'s counts match the engine', async () => {
     ['+2', '+6', '+6', '+2', 'the engine agrees with the paper ✓']);
   assert.equal(await page.locator('[data-live="hp-check"]').textContent(), 'the engine agrees with the paper ✓');
   assert.equal(await page.locator('[data-live="cp-blind"]').textContent(), '1');
+  // The chord-push figure (TK03 Fig. 2) draws a pushed sheet whole, with the blind chord: a closed
+  // chord through exactly the two new hexes.
+  const cpDiagram = page.locator('#fig-chordpush .diagram svg');
+  assert.equal(await cpDiagram.getAttribute('data-method'), 'disk');
+  assert.equal(await page.locator('#fig-chordpush .diagram-note').count(), 0, 'no note: the whole sheet is drawn');
+  assert.deepEqual(await cpDiagram.locator('polyline[data-closed="1"]').evaluateAll((ls) => ls.map((l) => l.dataset.hexes.split(' ').map(Number).sort((a, b) => a - b).join(' '))), ['27 28']);
   await open('pillow');
   assert.equal(await page.locator('[data-live="delta"]').first().textContent(), '(+4, +8, +6, +2)');
   // The README's picture (docs/images/tutorial.png is a copy of this file).

@@ -32,7 +32,7 @@ function drawFrame(g, d) {
   }
   const chords = el('g', { class: 'chords' }, g);
   for (const c of d.chords) {
-    el('polyline', { points: points(c.points), fill: 'none', stroke: chordColor(c.id), 'stroke-width': 0.026, 'data-chord': c.id, 'stroke-linejoin': 'round' }, chords);
+    el('polyline', { points: points(c.points), fill: 'none', stroke: chordColor(c.id), 'stroke-width': 0.026, 'data-chord': c.id, 'data-closed': c.closed ? 1 : 0, 'data-hexes': c.hexes.join(' '), 'stroke-linejoin': 'round' }, chords);
   }
   for (const b of d.boundary) el('rect', { x: b.x - 0.018, y: b.y - 0.018, width: 0.036, height: 0.036, fill: '#222' }, g);
   return chords;
@@ -76,7 +76,7 @@ export function createDiagram(container, { onHover, onPick } = {}) {
     box.replaceChildren();
     shown = d;
     const m = d.openedHex !== null && d.openedHex !== undefined ? 1.6 : 1.15;
-    svg = el('svg', { viewBox: `${-m} ${-m} ${2 * m} ${2 * m}`, role: 'img', 'data-sheet': d.sheet }, box);
+    svg = el('svg', { viewBox: `${-m} ${-m} ${2 * m} ${2 * m}`, role: 'img', 'data-sheet': d.sheet, 'data-method': d.method }, box);
     el('title', {}, svg).textContent = title || `sheet ${d.sheet}: ${d.topology}`;
     if (old?.g) svg.appendChild(old.g).classList.add('ghost');
     const g = el('g', { transform: 'scale(1,-1)', class: 'drawing' }, svg);

@@ -47,9 +47,9 @@ startPage(() => {
     mesh: spec,
     steps: [CHORD_PUSH],
     startAfter: true,
-    sheet: (f) => sheetWith(f.mesh, [4, 10, 16, 22]), // the sheet of edge e (x = 1): it gets the blind chord
+    sheet: (f) => sheetWith(f.mesh, [6, 7, 8, 15]), // a pushed sheet (the y = 2 layer): it gets the blind chord
     sheetChips: true,
-    caption: 'TK03 Figs. 2–3. New hexes in orange. The diagram shows the sheet of the edge e: after the push, the blind chord is the small loop through the two new crossings.',
+    caption: 'TK03 Figs. 2–3. New hexes in orange. The diagram shows one of the two sheets pushed through each other: after the push, the blind chord is the small loop through the two new crossings. Pick the sheet of the edge e (the x = 1 layer) above to see its two chords now cross twice, at the same two hexes.',
   });
   createFigure(document.getElementById('fig-hexpush'), {
     title: 'hex push',
