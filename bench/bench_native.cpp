@@ -16,6 +16,7 @@
 #include "complex/builders.hpp"
 #include "dual/dual.hpp"
 #include "dual/dual_tracker.hpp"
+#include "io/io.hpp"
 #include "layout/sheet_diagram.hpp"
 #include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
@@ -201,12 +202,36 @@ static int benchLayout(int n, int reps) {
   return 0;
 }
 
+// Layout of every sheet of a mesh file (the development set): total CPU ms, minimum of REPS.
+static int benchLayoutFile(const char* file, int reps) {
+  Complex cx = io::readFile(file);
+  Dual d = extractDual(cx);
+  double best = 1e300;
+  size_t sheets = 0, slots = 0;
+  for (int r = 0; r < reps; ++r) {
+    sheets = slots = 0;
+    auto t0 = Clock::now();
+    for (const Sheet& s : d.sheets) {
+      if (!s.alive) continue;
+      SheetDiagram dg = layoutSheet(cx, d, s.id);
+      ++sheets;
+      slots += dg.crossings.size();
+    }
+    best = std::min(best, ms(Clock::now() - t0));
+  }
+  const char* base = std::strrchr(file, '/');
+  std::printf("{\"bench\":\"layoutFile\",\"mesh\":\"%s\",\"sheets\":%zu,\"slots\":%zu,\"ms\":%.3f,\"usPerSheet\":%.1f}\n",
+              base ? base + 1 : file, sheets, slots, best, 1000 * best / double(sheets));
+  return 0;
+}
+
 int main(int argc, char** argv) {
+  if (argc >= 3 && !std::strcmp(argv[1], "layout-file")) return benchLayoutFile(argv[2], argc > 3 ? std::atoi(argv[3]) : 3);
   if (argc >= 3 && !std::strcmp(argv[1], "layout")) return benchLayout(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "build")) return benchBuild(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "ops")) return benchOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 21);
   if (argc >= 3 && !std::strcmp(argv[1], "throughput"))
     return benchThroughput(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 20000);
-  std::fprintf(stderr, "usage: hexdual_bench build N [REPS] | ops N [REPS] | throughput N [STEPS] | layout N [REPS]\n");
+  std::fprintf(stderr, "usage: hexdual_bench build N [REPS] | ops N [REPS] | throughput N [STEPS] | layout N [REPS] | layout-file MESH [REPS]\n");
   return 2;
 }

@@ -122,6 +122,25 @@ for n in 10 30 100; do
 done
 
 echo
+MESHES=${HEXDUAL_MESHES:-../shared/meshes}
+if [ -d "$MESHES" ]; then
+  echo "### Sheet diagram layout per sheet on the development set (every sheet of each mesh; CPU ms, minimum of 3)"
+  echo
+  echo "| mesh | sheets | crossings | layout ms | µs per sheet |"
+  echo "| --- | --- | --- | --- | --- |"
+  tmpm=$(mktemp -d)
+  for gz in "$MESHES"/*.gz; do
+    name=$(basename "$gz" .gz)
+    gzip -dc "$gz" > "$tmpm/$name"
+    if r=$(build/native/hexdual_bench layout-file "$tmpm/$name" 3 2>/dev/null); then
+      echo "$r" >>"$RESULTS"
+      node -e 'const a = JSON.parse(process.argv[1]); console.log(`| ${a.mesh} | ${a.sheets} | ${a.slots} | ${a.ms.toFixed(1)} | ${a.usPerSheet.toFixed(0)} |`);' "$r"
+    fi
+    rm -f "$tmpm/$name"
+  done
+  rm -rf "$tmpm"
+  echo
+fi
 echo "### The npm package's size"
 echo
 wasm=wasm/dist/hexdual.wasm

@@ -19,24 +19,24 @@ $H grid 3x3x3 -o "$T/g3.hxd"
 $H grid 5x5x5 -o "$T/g5.hxd"
 $H ring 8x3x3 -o "$T/ring.hxd"
 $H apply "$T/g3.hxd" --ops 'v1;pillow h13f5' -o "$T/pillow.hxd" >/dev/null
-$H apply "$T/g5.hxd" --ops 'v1;chordpush h62e11 h62f1 h67f1' -o "$T/chordpush.hxd" >/dev/null
-$H apply "$T/g5.hxd" --ops 'v1;hexpush h62f5' -o "$T/hexpush.hxd" >/dev/null
+$H apply "$T/g3.hxd" --ops 'v1;chordpush h13e3 h13f3 h16f5' -o "$T/chordpush.hxd" >/dev/null
+$H apply "$T/g3.hxd" --ops 'v1;hexpush h13f5' -o "$T/hexpush.hxd" >/dev/null
 $H flip 1-7 --at 62 "$T/g5.hxd" -o "$T/flip17.hxd" >/dev/null
 fig grid-sheet "$T/g3.hxd" 0                                   # Fig. 1: a sheet of a 3x3x3 grid
 fig ring-annulus "$T/ring.hxd" 0                               # an annulus sheet of an O-grid
 fig pillow-sphere "$T/pillow.hxd" 9                            # Fig. 6: the new sphere sheet
-fig pillow-crossed "$T/pillow.hxd" 5 --local 27,28 --rings 1    # Fig. 6: a sheet the pillow crosses
-fig chordpush-pushed "$T/chordpush.hxd" 12 --local 125,126 --rings 1   # Fig. 2: two pushed sheets now meet
-fig chordpush-blind "$T/chordpush.hxd" 8 --local 125,126 --rings 1     # Fig. 2: the blind chord on e's sheet
-fig hexpush-sheet "$T/hexpush.hxd" 12 --local 125,126,127,128 --rings 1  # Fig. 4: the new closed chord of 4
+fig pillow-crossed "$T/pillow.hxd" 5                           # Fig. 6: a sheet the pillow crosses, whole
+fig chordpush-blind "$T/chordpush.hxd" 7                       # Fig. 2: the blind chord on a pushed sheet, whole
+fig chordpush-pushed "$T/chordpush.hxd" 3                      # Fig. 2: e's sheet, two chords crossing twice
+fig hexpush-sheet "$T/hexpush.hxd" 7                           # Fig. 4: the new closed chord of 4, whole
 fig flip17-sphere "$T/flip17.hxd" 15                           # Fig. 8: the traditional pillow's sphere
 # docs/operations.md: the same sheet before and after each operation.
 $H grid 4x4x4 -o "$T/g4.hxd"
 $H apply "$T/g4.hxd" --ops 'v1;facecollapse h21e11 h21f1 h25f1' -o "$T/facecollapse.hxd" >/dev/null
 $H apply "$T/ring.hxd" --ops 'v1;ringcollapse h25e4' -o "$T/ringcollapse.hxd" >/dev/null
 fig op-pillow-before "$T/g3.hxd" 5 --local 13,22 --rings 1        # after: pillow-crossed, pillow-sphere
-fig op-chordpush-before "$T/g5.hxd" 12 --local 62,67 --rings 1    # after: chordpush-pushed
-fig op-hexpush-before "$T/g5.hxd" 12 --local 62,87 --rings 1      # after: hexpush-sheet
+fig op-chordpush-before "$T/g3.hxd" 3                           # after: chordpush-pushed
+fig op-hexpush-before "$T/g3.hxd" 7                             # after: hexpush-sheet
 fig op-ringcollapse-before "$T/ring.hxd" 3                         # an annulus of 24 hexes the ring crosses
 fig op-ringcollapse-after "$T/ringcollapse.hxd" 3                  # the same annulus, 16 hexes
 fig op-facecollapse-before-a "$T/g4.hxd" 6                         # two disks through f and g ...

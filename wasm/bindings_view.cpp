@@ -10,7 +10,7 @@
 #include <set>
 #include <string>
 
-#include "bindings_common.hpp"
+#include "addressed.hpp"
 #include "dual/dual.hpp"
 #include "flips/decompositions.hpp"
 #include "flips/flip.hpp"
@@ -24,22 +24,10 @@ using namespace hexdual;
 
 namespace {
 
-using hexdual::wasm::copyOut;
-
-const Complex& complexAt(double address) { return *reinterpret_cast<const Complex*>(uintptr_t(address)); }
-const Dual& dualAt(double address) { return *reinterpret_cast<const Dual*>(uintptr_t(address)); }
-
-// Every fallible call returns an object with `error` set instead of throwing (see bindings.cpp).
-template <class F>
-val guardedObject(F&& f) {
-  try {
-    return f();
-  } catch (const std::exception& e) {
-    val out = val::object();
-    out.set("error", std::string(e.what()));
-    return out;
-  }
-}
+using wasm::complexAt;
+using wasm::copyOut;
+using wasm::dualAt;
+using wasm::guardedObject;
 
 // `shell`, `hidden` (bytes per hex id) and `always` (hex ids) choose the drawn hexes (DrawnHexes).
 val viewRenderBuffers(double complexAddress, double shrink, bool edges, bool shell, val hidden, val always) {

@@ -32,6 +32,23 @@ export interface FlipInfo {
 }
 export function flips(): FlipInfo[];
 
+/** One record of the decomposition search (core/flips/decompositions.txt, docs/flips.md). */
+export interface DecompositionRecord {
+  /** A flip name, 'tripleChordPush', or 'NAME/chord-only' (searched with chord push and pull only). */
+  problem: string;
+  found: boolean;
+  /** The sequence found (op-log steps in the problem's complex), or null. */
+  steps: string[] | null;
+  maxDepth: number;
+  /** Every sequence up to this many steps was examined. */
+  depthSearched: number;
+  states: number;
+  seconds: number;
+  /** 'all' or the operations searched, comma-separated. */
+  ops: string;
+}
+export function decompositions(): DecompositionRecord[];
+
 export type SheetTopology = 'disk' | 'annulus' | 'sphere' | 'torus' | 'other';
 export interface SheetInfo {
   id: number;
@@ -142,7 +159,8 @@ export type XY = [number, number];
 export interface DiagramHeader {
   sheet: number;
   topology: SheetTopology;
-  method: 'disk' | 'annulus' | 'sphere' | 'polygon' | 'local';
+  /** How the sheet was drawn: always whole ('local' only when a local diagram was asked for). */
+  method: 'disk' | 'annulus' | 'holes' | 'sphere' | 'polygon' | 'local';
   local: boolean;
   note: string;
   radius: number;
@@ -263,5 +281,7 @@ export class Mesh {
   /** Flips with a stored atomic decomposition that apply near the pick, for flip(name, hexes, { viaAtomic: true }). */
   flipPlaces(near: Near): { name: FlipName; hexes: number[] }[];
   // ---- end of view data (explorer) ----
+  /** Ring splits whose loop passes through the edge (loops of at most maxEdges edges, default 8). */
+  ringSplits(near: { hex: number; edge: number }, options?: { maxEdges?: number }): string[];
   delete(): void;
 }

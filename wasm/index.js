@@ -420,6 +420,18 @@ export class Mesh {
   }
   // ---- end of view data (explorer) ----
 
+  /**
+   * The ring splits whose loop of edges passes through an edge ({ hex, edge }), loops of at most
+   * `maxEdges` (default 8) edges, each one that applies: op-log steps (candidates() does not
+   * enumerate ring splits). Written as the decomposition search writes them.
+   */
+  ringSplits(near, { maxEdges = 8 } = {}) {
+    const hex = integer('ringSplits: near.hex', near?.hex);
+    const edge = integer('ringSplits: near.edge', near?.edge);
+    const max = integer('ringSplits: maxEdges', maxEdges);
+    return viewCall(module().tutorialRingSplits(this.#live().complexAddress(), hex, edge, max)).steps;
+  }
+
   /** Frees the wasm memory of this mesh. */
   delete() {
     if (this.#raw) {
@@ -447,6 +459,14 @@ export function diagramToSVG(d) {
  */
 export function flips() {
   return JSON.parse(check(module().flipsJson()));
+}
+
+/**
+ * Every stored decomposition search record (core/flips/decompositions.txt): problem, found, steps
+ * (op-log steps in the problem's complex, or null), maxDepth, depthSearched, states, seconds, ops.
+ */
+export function decompositions() {
+  return viewCall(module().tutorialRecords()).records;
 }
 
 /** Bytes currently allocated inside the wasm heap (for leak tests). */

@@ -238,4 +238,4 @@ loadFromUrl();
 timings.loaded = performance.now();
 
 // For tests and the console.
-window.hexdual = { store, actions, view, engine, pkg: { Mesh }, timings, ready: true };
+window.hexdual = { store, actions, view, diagrams, engine, pkg: { Mesh }, timings, ready: true };

@@ -3,15 +3,15 @@
 // side is there (mesh.flipPlaces); one click applies. Typed steps work too; errors show next to it.
 import { formatSelection } from './selection.js';
 
-const OPS = {
+export const OPS = {
   pillow: ['minimal pillow: two hexes on the quad\'s 8 vertices, a new sphere sheet (TK03 §4.3)', '+4,+8,+6,+2'],
   unpillow: ['removes a pillow pair and re-glues its two free quads', '−4,−8,−6,−2'],
-  chordpush: ['pushes a chord across the edge: a blind chord of 2 closes the two arcs (TK03 §4.4)', '+2,+6,+6,+2'],
+  chordpush: ['pushes a chord across the edge: a blind chord of 2 closes the two arcs (TK03 §4.1)', '+2,+6,+6,+2'],
   chordpull: ['removes a blind chord of 2 and re-glues its quads', '−2,−6,−6,−2'],
-  hexpush: ['the 2–6 flip: pushes a hex through the quad (TK03 §4.5)', '+4,+12,+12,+4'],
+  hexpush: ['the 2–6 flip: pushes a hex through the quad (TK03 §4.2)', '+4,+12,+12,+4'],
   hexpull: ['the 6–2 flip: the inverse of a hex push', '−4,−12,−12,−4'],
-  ringcollapse: ['collapses the ring chord along the edge (TK03 §4.2)', '−n,−3n,−3n,−n'],
-  facecollapse: ['collapses two quads of an edge cycle into one (TK03 §4.1)', '−2,−2,0,0'],
+  ringcollapse: ['collapses the ring chord along the edge (TK03 §4.4)', '−n,−3n,−3n,−n'],
+  facecollapse: ['collapses two quads of an edge cycle into one (TK03 §4.4)', '−2,−2,0,0'],
   facesplit: ['splits two quads on the same 4 vertices apart', '+2,+2,0,0'],
 };
 function nearOf(sel) {

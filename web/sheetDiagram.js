@@ -5,6 +5,7 @@
 // around the selected hex in a dotted circle.
 import { chordColor } from './colors.js';
 import { formatSelection } from './selection.js';
+import { animateDiagram, crossingKey, crossingPlaces } from './diagramMotion.js';
 
 const NS = 'http://www.w3.org/2000/svg';
 const LABEL_PX = 11;
@@ -39,6 +40,7 @@ function createPanel(host, actions, spec) {
   box.appendChild(note);
   const root = el('g', {}, svg);
   let diagram = null, extent = 1.2, spacing = 0.1;
+  let drawing = root; // the current drawing's group (a fading ghost of the previous one may sit before it)
   let vb = { x: -1.2, y: -1.2, w: 2.4, h: 2.4 };
   let drawnKey = null;
 
@@ -49,19 +51,19 @@ function createPanel(host, actions, spec) {
   function applyView() {
     svg.setAttribute('viewBox', `${vb.x} ${vb.y} ${vb.w} ${vb.h}`);
     const s = pxPerUnit();
-    const labels = root.querySelector('.labels');
+    const labels = drawing.querySelector('.labels');
     if (labels) {
       labels.setAttribute('font-size', String(LABEL_PX / s));
       // Level of detail: labels only when neighbouring crossings are at least ~2 labels apart.
       labels.style.display = spacing * s >= 22 ? '' : 'none';
     }
-    for (const c of root.querySelectorAll('.crossing')) {
+    for (const c of drawing.querySelectorAll('.crossing')) {
       c.setAttribute('r', String(Math.min(0.32 * spacing, 6 / s)));
       c.setAttribute('stroke-width', String(1.2 / s));
     }
-    for (const l of root.querySelectorAll('.chord')) l.setAttribute('stroke-width', String((l.classList.contains('sel') ? 5 : 2) / s));
-    for (const l of root.querySelectorAll('.loop')) l.setAttribute('stroke-width', String(1.5 / s));
-    for (const t of root.querySelectorAll('.labels text')) {
+    for (const l of drawing.querySelectorAll('.chord')) l.setAttribute('stroke-width', String((l.classList.contains('sel') ? 5 : 2) / s));
+    for (const l of drawing.querySelectorAll('.loop')) l.setAttribute('stroke-width', String(1.5 / s));
+    for (const t of drawing.querySelectorAll('.labels text')) {
       t.setAttribute('x', String(Number(t.dataset.x) + 7 / s));
       t.setAttribute('y', String(-Number(t.dataset.y) - 5 / s));
     }
@@ -73,10 +75,16 @@ function createPanel(host, actions, spec) {
     applyView();
   }
 
-  function draw(d) {
+  let motion = null;
+  // Draws a layout; `animate`: from the previous drawing of this panel (the same sheet, a step later).
+  function draw(d, animate = false) {
+    motion?.cancel();
+    const old = animate && diagram && drawing !== root ? { places: crossingPlaces(diagram), g: drawing } : null;
     diagram = d;
     root.replaceChildren();
+    if (old) root.appendChild(old.g).classList.add('ghost');
     const g = el('g', { transform: 'scale(1,-1)' }, root);
+    drawing = g;
     extent = d.openedHex !== null && d.openedHex !== undefined ? 1.6 : 1.15;
     spacing = Math.max(0.004, Math.sqrt((Math.PI * extent * extent) / Math.max(1, d.crossings.length)) * 0.55);
     if (d.local) el('circle', { cx: 0, cy: 0, r: 1, fill: 'none', stroke: '#666', 'stroke-width': 0.01, 'stroke-dasharray': '0.04 0.03' }, g);
@@ -86,27 +94,46 @@ function createPanel(host, actions, spec) {
       const r = el('rect', { x: c.x - spacing * 0.18, y: c.y - spacing * 0.18, width: spacing * 0.36, height: spacing * 0.36, fill: 'transparent', class: 'cell', 'data-edge': `h${c.edge[0]}e${c.edge[1]}` }, cells);
       el('title', {}, r).textContent = `edge h${c.edge[0]}e${c.edge[1]}`;
     }
-    for (const c of d.chords) {
+    const chords = d.chords.map((c) => {
       const line = el('polyline', { points: c.points.map((p) => p.join(',')).join(' '), fill: 'none', stroke: chordColor(c.id), class: 'chord', 'data-chord': c.id }, g);
       el('title', {}, line).textContent = `chord ${c.id} (with sheet ${c.otherSheet})${c.closed ? ', closed' : ''}`;
-    }
+      return line;
+    });
     for (const b of d.boundary) {
       const r = el('rect', { x: b.x - spacing * 0.12, y: b.y - spacing * 0.12, width: spacing * 0.24, height: spacing * 0.24, fill: '#222', class: 'bquad', 'data-quad': `h${b.hex}f${b.face}` }, g);
       el('title', {}, r).textContent = `boundary quad h${b.hex}f${b.face}`;
     }
     const crossings = el('g', {}, g);
-    for (const c of d.crossings) {
-      const dot = el('circle', { cx: c.x, cy: c.y, r: 0.02, fill: c.outside ? '#fc6' : 'white', stroke: '#111', class: 'crossing', 'data-hex': c.hex }, crossings);
+    const dots = d.crossings.map((c) => {
+      const dot = el('circle', { cx: c.x, cy: c.y, r: 0.02, fill: c.outside ? '#fc6' : 'white', stroke: '#111', class: 'crossing', 'data-hex': c.hex, 'data-key': crossingKey(c) }, crossings);
       el('title', {}, dot).textContent = `hex h${c.hex} (chords ${c.chords.join(', ')})`;
-    }
-    const labels = el('g', { class: 'labels', transform: 'scale(1,-1)' }, root.firstChild);
-    for (const c of d.crossings) {
-      const t = el('text', { 'data-x': c.x, 'data-y': c.y }, labels);
+      return dot;
+    });
+    const labels = el('g', { class: 'labels', transform: 'scale(1,-1)' }, g);
+    const texts = d.crossings.map((c) => {
+      const t = el('text', { 'data-x': c.x, 'data-y': c.y, 'data-key': crossingKey(c) }, labels);
       t.textContent = String(c.hex);
-    }
+      return t;
+    });
     box.querySelector('.title b').textContent = `sheet ${d.sheet} · ${d.topology}${d.method !== d.topology ? ` · ${d.method}` : ''} · ${d.crossings.length} crossings`;
     note.textContent = d.note || '';
     fit();
+    if (old) motion = animateCrossings(old, d, dots, texts, chords);
+  }
+
+  // Moves the crossings from the previous drawing's places (labels follow at the zoom's offset).
+  function animateCrossings(old, d, dots, texts, chords) {
+    const items = d.crossings.map((c, k) => ({
+      key: crossingKey(c), x: c.x, y: c.y, els: [dots[k], texts[k]],
+      place(x, y) {
+        const s = pxPerUnit();
+        dots[k].setAttribute('cx', x);
+        dots[k].setAttribute('cy', y);
+        texts[k].setAttribute('x', String(x + 7 / s));
+        texts[k].setAttribute('y', String(-y - 5 / s));
+      },
+    }));
+    return animateDiagram({ old: old.places, ghost: old.g, items, fadeIn: chords });
   }
 
   // ---- zoom and pan ----
@@ -183,13 +210,13 @@ function createPanel(host, actions, spec) {
   }
 
   function mark(selection) {
-    for (const x of root.querySelectorAll('.sel')) x.classList.remove('sel');
+    for (const x of drawing.querySelectorAll('.sel')) x.classList.remove('sel');
     if (!selection) return applyView();
     const id = formatSelection(selection);
-    if (selection.kind === 'chord') root.querySelector(`[data-chord="${selection.id}"]`)?.classList.add('sel');
-    if ('hex' in selection) root.querySelectorAll(`.crossing[data-hex="${selection.hex}"]`).forEach((c) => c.classList.add('sel'));
-    if (selection.kind === 'edge') root.querySelector(`[data-edge="${id}"]`)?.classList.add('sel');
-    if (selection.kind === 'quad') root.querySelector(`[data-quad="${id}"]`)?.classList.add('sel');
+    if (selection.kind === 'chord') drawing.querySelector(`[data-chord="${selection.id}"]`)?.classList.add('sel');
+    if ('hex' in selection) drawing.querySelectorAll(`.crossing[data-hex="${selection.hex}"]`).forEach((c) => c.classList.add('sel'));
+    if (selection.kind === 'edge') drawing.querySelector(`[data-edge="${id}"]`)?.classList.add('sel');
+    if (selection.kind === 'quad') drawing.querySelector(`[data-quad="${id}"]`)?.classList.add('sel');
     applyView();
   }
 
@@ -197,14 +224,18 @@ function createPanel(host, actions, spec) {
     box,
     spec,
     update(s, specNow) {
+      const sameSpec = JSON.stringify(spec) === JSON.stringify(specNow);
       spec = specNow;
       const key = `${s.meshKey}|${JSON.stringify(spec)}`;
       if (key !== drawnKey) {
+        // A step (or a move in time) on the same start mesh, the same sheet drawn the same way: animated.
+        const animate = sameSpec && drawnKey !== null && drawnKey.split(':')[0] === s.meshKey.split(':')[0];
         drawnKey = key;
         try {
-          draw(layout(s.mesh, spec, s.selection));
+          draw(layout(s.mesh, spec, s.selection), animate);
         } catch (e) {
           root.replaceChildren();
+          drawing = root;
           box.querySelector('.title b').textContent = `sheet ${spec.sheet}`;
           note.textContent = e.message;
         }
@@ -215,6 +246,9 @@ function createPanel(host, actions, spec) {
     get diagram() {
       return diagram;
     },
+    get animating() {
+      return !!motion?.running;
+    },
   };
 }
 
@@ -223,7 +257,7 @@ export function createDiagrams(host, actions) {
   const style = document.createElement('style');
   style.textContent = `.diagram .sel.crossing { fill: #ff7a00; } .diagram .sel.cell { fill: rgba(255,122,0,0.6); }
     .diagram .sel.bquad { fill: #ff7a00; } .diagram .chord.sel { filter: drop-shadow(0 0 1px #000); }
-    .diagram .labels text { pointer-events: none; fill: #111; } .diagram [data-act=local].on { background: #223; color: #fff; }`;
+    .diagram .labels text { pointer-events: none; fill: #111; } .diagram .ghost { pointer-events: none; } .diagram [data-act=local].on { background: #223; color: #fff; }`;
   document.head.appendChild(style);
   return {
     update(s) {

@@ -380,7 +380,6 @@ int runSheets(const Args& a) {
   }
   for (int id : ids) {
     SheetDiagram d = around.empty() ? layoutSheet(cx, dual, id) : layoutLocal(cx, dual, id, around, a.rings);
-    if (around.empty() && d.local) std::cerr << "sheet " << id << " is drawn only in part: " << d.note << "\n";  // never silently
     std::string base = "sheet-" + std::to_string(id) + (around.empty() ? "" : "-local");
     auto write = [&](const std::string& dir, const std::string& ext, const std::string& text) {
       std::string path = dir + "/" + base + ext;

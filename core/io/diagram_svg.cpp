@@ -1,7 +1,10 @@
 #include "io/diagram_svg.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <unordered_map>
+#include <vector>
 
 #include "layout/palette.hpp"
 
@@ -69,11 +72,47 @@ std::string seamSvg(const Canvas& cv, const SheetDiagram::Arc& a) {
   return out + buf;
 }
 
+// Per crossing: the distance to its nearest other crossing (diagram units; 1e9 alone), from a
+// grid of cells `cell` wide (farther neighbours count as `cell` away: far enough for a label).
+std::vector<double> nearestCrossing(const SheetDiagram& d, double cell) {
+  std::unordered_map<uint64_t, std::vector<size_t>> grid;
+  auto key = [](long long x, long long y) { return uint64_t(x) * 0x9E3779B97F4A7C15ull ^ uint64_t(y); };
+  auto at = [&](Point2 p) { return std::pair{(long long)std::floor(p.x / cell), (long long)std::floor(p.y / cell)}; };
+  for (size_t k = 0; k < d.crossings.size(); ++k) {
+    auto [x, y] = at(d.crossings[k].p);
+    grid[key(x, y)].push_back(k);
+  }
+  std::vector<double> near(d.crossings.size(), cell);
+  for (size_t k = 0; k < d.crossings.size(); ++k) {
+    auto [x, y] = at(d.crossings[k].p);
+    for (long long ox = -1; ox <= 1; ++ox)
+      for (long long oy = -1; oy <= 1; ++oy) {
+        auto it = grid.find(key(x + ox, y + oy));
+        if (it == grid.end()) continue;
+        for (size_t j : it->second)
+          if (j != k)
+            near[k] = std::min(near[k], std::hypot(d.crossings[j].p.x - d.crossings[k].p.x,
+                                                   d.crossings[j].p.y - d.crossings[k].p.y));
+      }
+  }
+  return near;
+}
+
 }  // namespace
 
 std::string diagramSvg(const SheetDiagram& d) {
   Canvas cv;
   cv.M = d.openedHex >= 0 ? 1.65 : 1.2;
+  // Readable at scale: the canvas grows with the number of crossings so that evenly spread ones
+  // are 14 px apart; markers and strokes shrink where crossings are closer; a crossing is labelled
+  // only when its label fits before its nearest neighbour (every crossing has its id as a tooltip).
+  const double even = std::sqrt(std::acos(-1.0) / double(std::max<size_t>(d.crossings.size(), 1)));
+  cv.S = std::clamp(14 / even, 200.0, 2400.0);
+  const double px = even * cv.S, marker = std::clamp(0.3 * px, 1.5, 4.5), stroke = std::clamp(0.15 * px, 0.6, 2.2);
+  const std::vector<double> near = nearestCrossing(d, 24 / cv.S);
+  char sw[16];
+  std::snprintf(sw, sizeof sw, "%.3g", stroke);
+  const std::string strokeWidth = sw;
   const double S = cv.S, M = cv.M;
   char buf[256];
   std::string out;
@@ -87,7 +126,7 @@ std::string diagramSvg(const SheetDiagram& d) {
                 2 * S * M + 16, d.sheet, d.topology.c_str(), d.method.c_str());
   out += buf;
   if (!d.note.empty())
-    out += "<title>" + escapeXml(d.note) + "</title>\n";  // why a fallback, which face was opened, the polygon's word
+    out += "<title>" + escapeXml(d.note) + "</title>\n";  // which face was opened, the polygon's word
   if (d.local) {
     std::snprintf(
         buf, sizeof buf,
@@ -102,19 +141,24 @@ std::string diagramSvg(const SheetDiagram& d) {
   for (const auto& a : d.arcs) out += seamSvg(cv, a);
   for (const auto& c : d.chords)
     out += "<polyline points=\"" + cv.points(c.points) + "\" fill=\"none\" stroke=\"" + palette::chordColor(c.chord) +
-           "\" stroke-width=\"2.2\"><title>chord " + std::to_string(c.chord) + " (with sheet " +
+           "\" stroke-width=\"" + strokeWidth + "\"><title>chord " + std::to_string(c.chord) + " (with sheet " +
            std::to_string(c.otherSheet) + ")</title></polyline>\n";
   for (const auto& b : d.boundary) {
     std::snprintf(buf, sizeof buf, "<rect x=\"%.1f\" y=\"%.1f\" width=\"5\" height=\"5\" fill=\"#222\"/>\n",
                   cv.X(b.p.x) - 2.5, cv.Y(b.p.y) - 2.5);
     out += buf;
   }
-  for (const auto& c : d.crossings) {
+  for (size_t k = 0; k < d.crossings.size(); ++k) {
+    const auto& c = d.crossings[k];
     std::snprintf(buf, sizeof buf,
-                  "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4.5\" fill=\"%s\" stroke=\"#111\"/><text x=\"%.1f\" "
-                  "y=\"%.1f\">%d</text>\n",
-                  cv.X(c.p.x), cv.Y(c.p.y), c.outside ? "#fc6" : "#fff", cv.X(c.p.x) + 6, cv.Y(c.p.y) - 6, c.hex);
+                  "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"%s\" stroke=\"#111\"><title>hex %d</title></circle>",
+                  cv.X(c.p.x), cv.Y(c.p.y), marker, c.outside ? "#fc6" : "#fff", c.hex);
     out += buf;
+    if (near[k] * cv.S >= 22) {
+      std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\">%d</text>", cv.X(c.p.x) + 6, cv.Y(c.p.y) - 6, c.hex);
+      out += buf;
+    }
+    out += "\n";
   }
   return out + "</svg>\n";
 }

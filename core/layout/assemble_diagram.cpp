@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "layout/boundary_loops.hpp"
 
 namespace hexdual {
 using namespace tables;
@@ -77,6 +76,137 @@ void joinClosedEnds(std::vector<SheetDiagram::ChordLine>& pieces) {
   pieces.pop_back();
 }
 
+// Builds the sheet diagram of a placed mid-surface, one step per part of the picture.
+class Assembler {
+ public:
+  Assembler(const Dual& dual, const MidSurface& s, const Placement& pl, SheetDiagram& d)
+      : dual_(dual), s_(s), pl_(pl), d_(d), opened_(pl.opened >= 0 ? OpenedFace(s, pl) : OpenedFace{}) {}
+
+  // A crossing per slot at its quad's centre (the opened face's outside the circle).
+  void addCrossings() {
+    for (size_t i = 0; i < s_.slots.size(); ++i) {
+      Slot sl = s_.slots[i];
+      int b = (sl.axis + 1) % 3, c = (sl.axis + 2) % 3;
+      bool out = int(i) == pl_.opened;
+      d_.crossings.push_back({sl.hex,
+                              sl.axis,
+                              out ? opened_.crossing : pl_.pos[size_t(s_.centre(int(i)))],
+                              {dual_.chordAt(sl.hex, b), dual_.chordAt(sl.hex, c)},
+                              out});
+    }
+  }
+
+  // Every chord of the sheet, each (slot, chord axis) pair walked once.
+  void addChords() {
+    done_.assign(s_.slots.size(), {false, false, false});
+    for (size_t i0 = 0; i0 < s_.slots.size(); ++i0)
+      for (int b0 : {(s_.slots[i0].axis + 1) % 3, (s_.slots[i0].axis + 2) % 3})
+        if (!done_[i0][size_t(b0)]) addChord(int(i0), b0);
+  }
+
+  // Boundary loops as polygons of their corners and mid-edges, the one on the circle first.
+  void addLoops() {
+    const Triangulation& t = pl_.tri;
+    for (size_t j = 0; j < t.loopEdges.size(); ++j) {
+      size_t k = j == 0 ? t.outer : j == t.outer ? 0 : j;
+      std::vector<Point2> poly;
+      for (int e : t.loopEdges[k]) {
+        poly.push_back(pl_.pos[size_t(t.edges[size_t(e)].from)]);
+        poly.push_back(edgeMid(t.edges[size_t(e)].slot, t.edges[size_t(e)].face));
+      }
+      d_.loops.push_back(std::move(poly));
+    }
+  }
+
+ private:
+  // Where a chord walk stands: slot i, the chord's axis b there, the face it enters through.
+  struct Step {
+    int i, b, in;
+  };
+
+  Point2 edgeMid(int i, int f) const { return pl_.pos[size_t(s_.mid[size_t(i)][size_t(f)])]; }
+
+  // Back from (i0, b0) to the chord's end, or once round; closed when it came round.
+  Step chordStart(int i0, int b0, bool& closed) const {
+    int i = i0, b = b0, entry = 2 * b0;
+    closed = false;
+    for (size_t guard = 0; guard <= s_.slots.size(); ++guard) {
+      int j = s_.neighbour(i, entry);
+      if (j < 0) break;
+      int g = s_.adjFace[size_t(i)][size_t(entry)];
+      i = j;
+      b = axisOfFace(g);
+      entry = oppositeFace(g);
+      if (i == i0 && b == b0) {
+        closed = true;
+        return {i0, b0, 2 * b0};
+      }
+    }
+    return {i, b, entry};
+  }
+
+  // The chord through slot i0 along axis b0, walked forward from its start, in pieces split at
+  // the seams of a cut-open surface.
+  void addChord(int i0, int b0) {
+    bool closed = false;
+    Step at = chordStart(i0, b0, closed);
+    const Step start = at;
+    Slot first = s_.slots[size_t(at.i)];
+    SheetDiagram::ChordLine proto;
+    proto.chord = dual_.chordAt(first.hex, at.b);
+    proto.otherSheet = dual_.sheetAt(first.hex, 3 - first.axis - at.b);
+    proto.closed = closed;
+    std::vector<SheetDiagram::ChordLine> pieces{proto};
+    bool closingSeam = false;
+    for (size_t guard = 0; guard <= 2 * s_.slots.size(); ++guard) {
+      const int out = passSlot(at, pieces.back());
+      const int j = s_.neighbour(at.i, out);
+      if (j < 0) break;
+      const int g = s_.adjFace[size_t(at.i)][size_t(out)];
+      const bool seam = s_.joined(at.i, out) < 0;  // a cut: the chord continues on the seam's other side
+      at = {j, axisOfFace(g), g};
+      if (at.i == start.i && at.b == start.b) {
+        closingSeam = seam;
+        break;
+      }
+      if (seam) pieces.push_back(proto);
+    }
+    if (!closingSeam) joinClosedEnds(pieces);
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      pieces[k].piece = int(k);
+      d_.chords.push_back(std::move(pieces[k]));
+    }
+  }
+
+  // The chord's pass through one slot: in at a mid-edge, through the crossing, out at the
+  // opposite mid-edge (round the outside for the opened face); returns the face it leaves by.
+  int passSlot(const Step& at, SheetDiagram::ChordLine& line) {
+    done_[size_t(at.i)][size_t(at.b)] = true;
+    const int out = oppositeFace(at.in);
+    const Slot sl = s_.slots[size_t(at.i)];
+    const Point2 pin = edgeMid(at.i, at.in), pout = edgeMid(at.i, out);
+    if (line.points.empty()) {
+      line.points.push_back(pin);
+      if (s_.neighbour(at.i, at.in) < 0) d_.boundary.push_back({sl.hex, at.in, pin});
+    }
+    if (at.i == pl_.opened)
+      opened_.route(at.in, out, line.points);
+    else
+      line.points.push_back(pl_.pos[size_t(s_.centre(at.i))]);
+    line.points.push_back(pout);
+    line.hexes.push_back(sl.hex);
+    if (s_.neighbour(at.i, out) < 0) d_.boundary.push_back({sl.hex, out, pout});
+    return out;
+  }
+
+  const Dual& dual_;
+  const MidSurface& s_;
+  const Placement& pl_;
+  SheetDiagram& d_;
+  OpenedFace opened_;
+  std::vector<std::array<bool, 3>> done_;
+};
+
 }  // namespace
 
 SheetDiagram assembleDiagram(const Dual& dual, int sheet, const MidSurface& s, const Placement& pl, bool local) {
@@ -87,114 +217,17 @@ SheetDiagram assembleDiagram(const Dual& dual, int sheet, const MidSurface& s, c
   d.local = local;
   for (int v = 0; v < s.nCorner; ++v) d.cells.push_back({s.verts[size_t(v)], pl.pos[size_t(v)]});
   d.quads = s.quad;
-  auto edgeMid = [&](int i, int f) { return pl.pos[size_t(s.mid[size_t(i)][size_t(f)])]; };
-  const bool opened = pl.opened >= 0;
-  OpenedFace of = opened ? OpenedFace(s, pl) : OpenedFace{};
-  if (opened) {
+  if (pl.opened >= 0) {
     Slot os = s.slots[size_t(pl.opened)];
     d.openedHex = os.hex;
     d.openedAxis = os.axis;
     d.note = "the face of hex " + std::to_string(os.hex) + " (axis " + std::to_string(os.axis) +
              ") is opened: it is the outside";
   }
-  for (size_t i = 0; i < s.slots.size(); ++i) {
-    Slot sl = s.slots[i];
-    int b = (sl.axis + 1) % 3, c = (sl.axis + 2) % 3;
-    bool out = int(i) == pl.opened;
-    d.crossings.push_back({sl.hex,
-                           sl.axis,
-                           out ? of.crossing : pl.pos[size_t(s.centre(int(i)))],
-                           {dual.chordAt(sl.hex, b), dual.chordAt(sl.hex, c)},
-                           out});
-  }
-  // Chords: walk each (slot, chord axis) pair once.
-  std::vector<std::array<bool, 3>> done(s.slots.size(), {false, false, false});
-  for (size_t i0 = 0; i0 < s.slots.size(); ++i0)
-    for (int b0 : {(s.slots[i0].axis + 1) % 3, (s.slots[i0].axis + 2) % 3}) {
-      if (done[i0][size_t(b0)]) continue;
-      // Walk backwards to an end (or once round).
-      int i = int(i0), b = b0, entry = 2 * b0;
-      bool closed = false;
-      for (size_t guard = 0; guard <= s.slots.size(); ++guard) {
-        int j = s.neighbour(i, entry);
-        if (j < 0) break;
-        int g = s.adjFace[size_t(i)][size_t(entry)];
-        i = j;
-        b = axisOfFace(g);
-        entry = oppositeFace(g);
-        if (i == int(i0) && b == b0) {
-          closed = true;
-          break;
-        }
-      }
-      if (closed) {
-        i = int(i0);
-        b = b0;
-        entry = 2 * b0;
-      }
-      int in = closed ? 2 * b0 : entry;  // the face we enter through
-      std::vector<SheetDiagram::ChordLine> pieces(1);
-      Slot first = s.slots[size_t(i)];
-      pieces[0].chord = dual.chordAt(first.hex, b);
-      pieces[0].otherSheet = dual.sheetAt(first.hex, 3 - first.axis - b);
-      pieces[0].closed = closed;
-      int startI = i, startB = b;
-      bool closingSeam = false;
-      for (size_t guard = 0; guard <= 2 * s.slots.size(); ++guard) {
-        SheetDiagram::ChordLine& line = pieces.back();
-        done[size_t(i)][size_t(b)] = true;
-        int out = oppositeFace(in);
-        Slot sl = s.slots[size_t(i)];
-        Point2 pin = edgeMid(i, in), pout = edgeMid(i, out);
-        if (line.points.empty()) {
-          line.points.push_back(pin);
-          if (s.neighbour(i, in) < 0) d.boundary.push_back({sl.hex, in, pin});
-        }
-        if (i == pl.opened) {
-          of.route(in, out, line.points);
-          line.points.push_back(pout);
-        } else {
-          line.points.push_back(pl.pos[size_t(s.centre(i))]);
-          line.points.push_back(pout);
-        }
-        line.hexes.push_back(sl.hex);
-        int j = s.neighbour(i, out);
-        if (j < 0) {
-          d.boundary.push_back({sl.hex, out, pout});
-          break;
-        }
-        int g = s.adjFace[size_t(i)][size_t(out)];
-        bool seam = s.joined(i, out) < 0;  // a cut: the chord continues on the seam's other side
-        i = j;
-        b = axisOfFace(g);
-        in = g;
-        if (i == startI && b == startB) {
-          closingSeam = seam;
-          break;
-        }
-        if (seam) {
-          pieces.emplace_back();
-          pieces.back().chord = pieces[0].chord;
-          pieces.back().otherSheet = pieces[0].otherSheet;
-          pieces.back().closed = closed;
-        }
-      }
-      if (!closingSeam) joinClosedEnds(pieces);
-      for (size_t k = 0; k < pieces.size(); ++k) {
-        pieces[k].piece = int(k);
-        d.chords.push_back(std::move(pieces[k]));
-      }
-    }
-  // Boundary loops (outer first) as polygons of the placed corners.
-  std::vector<BoundaryEdge> edges = boundaryEdges(s, pl.opened);
-  std::vector<std::vector<int>> loops;
-  chainLoops(edges, loops);
-  std::sort(loops.begin(), loops.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
-  for (const auto& l : loops) {
-    std::vector<Point2> poly;
-    for (int v : loopCorners(edges, l)) poly.push_back(pl.pos[size_t(v)]);
-    d.loops.push_back(poly);
-  }
+  Assembler a(dual, s, pl, d);
+  a.addCrossings();
+  a.addChords();
+  a.addLoops();
   return d;
 }
 

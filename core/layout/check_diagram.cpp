@@ -132,7 +132,7 @@ void checkPolygonSides(const SheetDiagram& d, void (*fail)(const SheetDiagram&, 
   }
   size_t points = 0;
   for (const auto& a : d.arcs) points += a.points.size() - 1;
-  if (d.loops.empty() || 2 * d.loops[0].size() != points)
+  if (d.loops.empty() || d.loops[0].size() != points)
     fail(d, "the polygon's sides do not run round its outer loop");
   std::unordered_map<int, std::vector<const SheetDiagram::Arc*>> byPair;
   for (const auto& a : d.arcs)

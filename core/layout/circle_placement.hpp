@@ -1,34 +1,35 @@
-// Placing a mid-surface in the plane: boundary loops on circles, everything else by a harmonic
-// (Tutte) solve. Disks and cut-open sheets on the unit circle; annuli between two circles;
-// spheres with one face opened as the outside.
+// Placing a mid-surface in the plane, planar by construction: the surface is triangulated
+// (triangulation.hpp), its outer boundary loop goes on the unit circle, holes are closed by
+// virtual rings, and everything else is placed by Tutte's barycentric embedding
+// (tutte_embedding.hpp). Disks, annuli and disks with holes keep their holes; a sphere has one
+// face opened as the outside; cut-open sheets (polygon_diagram) are disks.
 #pragma once
 #include <string>
 #include <vector>
 
 #include "layout/diagram.hpp"
 #include "layout/mid_surface.hpp"
+#include "layout/triangulation.hpp"
 
 namespace hexdual {
 
 struct Placement {
-  std::vector<Point2> pos;  // per vertex of the refined surface (corners, mids, centres)
-  std::vector<bool> fixed;
-  int opened = -1;     // the opened slot (sphere)
-  std::string method;  // "disk", "annulus", "sphere"
+  std::vector<Point2> pos;  // per vertex of the refined surface (corners, mids, centres), then virtual ones
+  int opened = -1;          // the opened slot (sphere)
+  std::string method;       // "disk", "annulus", "holes", "sphere", "polygon"
+  Triangulation tri;        // what was drawn: every triangle keeps its orientation
 };
 
 // V - E + F of the surface with its cuts open.
 int64_t eulerCharacteristic(const MidSurface& s);
 
-// Places a disk, an annulus or a sphere; false for other topologies, a non-orientable surface,
-// or a boundary loop too short to draw on a circle.
-bool placeSurface(const MidSurface& s, Placement& pl);
+// Places a disk, an annulus, a disk with holes or a sphere; false (with the reason in *why) for
+// other topologies or a non-orientable surface. Throws Error when the drawing is not an embedding
+// (which Tutte's theorem rules out: a bug, not a property of the sheet).
+bool placeSurface(const MidSurface& s, Placement& pl, std::string* why = nullptr);
 
-// Fixes the mid vertices of boundary sides (and of the opened face) halfway between their corners.
-void fixBoundaryMids(const MidSurface& s, Placement& pl);
-
-// Solves for the unfixed vertices as averages of their neighbours (Tutte). Degenerate surfaces are
-// solved on the refined mesh; others on the corners, then mids and centres are averaged.
-bool harmonicSolve(const MidSurface& s, Placement& pl);
+// Places a disk-shaped surface (one boundary loop) with its boundary corners on the unit circle at
+// the given angles (radians, per corner id; increasing along the loop but for one wrap).
+void placeDisk(const MidSurface& s, const std::vector<double>& cornerAngle, Placement& pl, const std::string& method);
 
 }  // namespace hexdual

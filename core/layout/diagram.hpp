@@ -16,8 +16,8 @@ struct Point2 {
 struct SheetDiagram {
   int sheet = -1;
   std::string topology;  // of the whole sheet
-  std::string method;    // "disk", "annulus", "sphere" (one face opened), "polygon" (cut open), "local"
-  std::string note;      // why a fallback was used, which face was opened, ...
+  std::string method;    // "disk", "annulus", "holes", "sphere" (one face opened), "polygon" (cut open), "local" (asked for)
+  std::string note;      // which face was opened, the polygon's word, the rings of a local diagram
   HexId openedHex = -1;  // sphere: the slot whose face became the outside
   int openedAxis = -1;
   bool local = false;   // a neighbourhood of chosen hexes inside a dotted circle

@@ -34,7 +34,8 @@ std::vector<std::pair<Slot, int>> ringsAround(const Complex& cx, const Dual& dua
   return out;
 }
 
-// The layout of the slots within k rings, or false when it does not draw as a planar disk.
+// The layout of the slots within k rings, or false when that piece is not of genus 0 (a
+// neighbourhood reaching round a handle): it is then drawn with fewer rings.
 bool tryRings(const Dual& dual, int sheet, const Complex& cx, const std::vector<std::pair<Slot, int>>& ring, int k,
               SheetDiagram& d) {
   std::vector<Slot> slots;
@@ -45,12 +46,7 @@ bool tryRings(const Dual& dual, int sheet, const Complex& cx, const std::vector<
   if (!placeSurface(s, pl)) return false;
   d = assembleDiagram(dual, sheet, s, pl, true);
   d.euler = eulerCharacteristic(s);
-  if (k == 0) return true;  // one ring of quads around the seeds is drawn as it comes
-  try {                     // a degenerate neighbourhood may not draw planar
-    checkDiagram(d, d.crossings.size());
-  } catch (const Error&) {
-    return false;
-  }
+  checkDiagram(d, d.crossings.size());
   return true;
 }
 
@@ -85,7 +81,7 @@ SheetDiagram layoutAround(const Complex& cx, const Dual& dual, int sheet, const 
   }
   if (k == deepest) k = std::max(rings, deepest);  // the whole neighbourhood asked for
   d.note = "the sheet within " + std::to_string(k) + " ring(s) of the chosen hexes" +
-           (k < rings ? " (more rings do not draw as a planar disk)" : "") + (d.openedHex >= 0 ? "; " + d.note : "");
+           (k < rings ? " (more rings reach round a handle of the sheet)" : "") + (d.openedHex >= 0 ? "; " + d.note : "");
   return d;
 }
 

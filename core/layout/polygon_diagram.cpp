@@ -14,7 +14,6 @@ SheetDiagram layoutPolygon(const Dual& dual, int sheet, const MidSurface& s) {
   const int64_t euler = eulerCharacteristic(s);
   CutGraph g = cutGraph(s);
   MidSurface open = cutOpen(s, g.cut);
-  open.degenerate = true;  // solve on the refined mesh: doublets (two quads on three corners) come apart
   std::vector<BoundaryEdge> edges = boundaryEdges(open);
   std::vector<std::vector<int>> loops;
   if (!open.orientable || !chainLoops(edges, loops) || loops.size() != 1 || loops[0].size() < 3 ||
@@ -23,23 +22,18 @@ SheetDiagram layoutPolygon(const Dual& dual, int sheet, const MidSurface& s) {
   FundamentalPolygon poly = fundamentalPolygon(s, g, open, edges, loops[0]);
   // The polygon on the unit circle: each side gets half its share by count, half by length, so
   // that short seams stay visible next to long boundary sides.
-  Placement pl;
-  pl.pos.assign(size_t(open.total()), {});
-  pl.fixed.assign(size_t(open.total()), false);
-  pl.method = "polygon";
+  std::vector<double> angle(size_t(open.nCorner), 0);
   const double turn = 2 * std::acos(-1.0), total = double(loops[0].size()), nSides = double(poly.sides.size());
   double t = 0;
   for (const PolygonSide& side : poly.sides) {
     double step = turn * (0.5 / nSides + 0.5 * double(side.edges.size()) / total) / double(side.edges.size());
     for (int k : side.edges) {
-      int v = edges[size_t(k)].from;
-      pl.pos[size_t(v)] = {std::cos(t), std::sin(t)};
-      pl.fixed[size_t(v)] = true;
+      angle[size_t(edges[size_t(k)].from)] = t;
       t += step;
     }
   }
-  fixBoundaryMids(open, pl);
-  if (!harmonicSolve(open, pl)) fail("the harmonic solve failed");
+  Placement pl;
+  placeDisk(open, angle, pl, "polygon");
   SheetDiagram d = assembleDiagram(dual, sheet, open, pl, false);
   if (poly.euler != euler)
     fail("the polygon's Euler characteristic " + std::to_string(poly.euler) + " is not the surface's " +

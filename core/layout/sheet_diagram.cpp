@@ -2,6 +2,7 @@
 
 #include "layout/assemble_diagram.hpp"
 #include "layout/circle_placement.hpp"
+#include "layout/diagram_spread.hpp"
 #include "layout/mid_surface.hpp"
 #include "layout/polygon_diagram.hpp"
 
@@ -12,36 +13,22 @@ SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
     throw Error("sheet diagram: sheet " + std::to_string(sheet) + " does not exist");
   const Sheet& sh = dual.sheets[size_t(sheet)];
   MidSurface s = buildMidSurface(cx, sh.slots);
+  // Genus 0 (disk, annulus, disk with holes, sphere) is drawn as it is; anything else is cut open
+  // into a fundamental polygon, and so is a genus-0 sheet whose drawing crowds (a large sphere
+  // behind its opened face, a long tube as an annulus) when the polygon spreads better. Both are
+  // Tutte embeddings of a triangulated disk, planar by construction: checkDiagram confirms it.
   Placement pl;
-  std::string why;
-  if (placeSurface(s, pl)) {
-    SheetDiagram d = assembleDiagram(dual, sheet, s, pl, false);
-    d.euler = sh.euler;
-    try {
-      checkDiagram(d, sh.slots.size());
-      return d;
-    } catch (const Error& e) {
-      why = std::string("the whole-sheet layout is not planar (") + e.what() + ")";
-    }
+  SheetDiagram d;
+  // A sphere opened at one face squeezes its far side by about its size: past a thousand hexes
+  // that is never readable, so such a sphere is cut open straight away.
+  bool whole = !(sh.topology == "sphere" && sh.slots.size() > 1000) && placeSurface(s, pl);
+  if (whole) d = assembleDiagram(dual, sheet, s, pl, false);
+  if (!whole || (sh.topology != "disk" && diagramSpread(d) < kReadableSpread)) {
+    SheetDiagram cut = layoutPolygon(dual, sheet, s);
+    if (!whole || diagramSpread(cut) > diagramSpread(d)) d = std::move(cut);
   }
-  // Genus > 0, non-orientable, or an annulus or sphere whose layout is not planar: cut open into
-  // a fundamental polygon, whose boundary is one convex loop (Tutte's theorem).
-  if (sh.topology != "disk") {
-    try {
-      SheetDiagram d = layoutPolygon(dual, sheet, s);
-      checkDiagram(d, sh.slots.size());
-      return d;
-    } catch (const Error& e) {
-      why = std::string("this sheet is ") + sh.topology + (sh.selfIntersecting ? " and self-intersecting" : "") +
-            " and its fundamental polygon is not planar (" + e.what() + ")";
-    }
-  }
-  if (why.empty())
-    why = "this sheet is " + sh.topology + (sh.selfIntersecting ? " and self-intersecting" : "") +
-          " and does not lay out whole";
-  // Otherwise: the largest neighbourhood of the sheet's first hex that draws as a planar disk.
-  SheetDiagram d = layoutLocal(cx, dual, sheet, {sh.slots[0].hex}, int(sh.slots.size()));
-  d.note = why + "; showing " + d.note;
+  d.euler = sh.euler;
+  checkDiagram(d, sh.slots.size());
   return d;
 }
 

@@ -174,3 +174,21 @@ test('a big mesh: only its shell is drawn, a selection rebuilds no geometry, a s
   assert.equal((await x.shownCounts()).hexes, 27);
   assert.deepEqual(errors, []);
 });
+
+test('a step animates: hexes move and fade in 3D, crossings move in an open diagram; at once with reduced motion', async () => {
+  for (const motion of ['no-preference', 'reduce']) {
+    await page.emulateMedia({ reducedMotion: motion });
+    await x.open('#mesh=grid:3x3x3&diag=5');
+    const during = await page.evaluate(() => {
+      window.hexdual.actions.apply('facecollapse h13e7 h13f5 h23f4');
+      return { view: window.hexdual.view.animating, diagram: window.hexdual.diagrams.panels.get(5).animating };
+    });
+    assert.deepEqual(during, motion === 'reduce' ? { view: false, diagram: false } : { view: true, diagram: true }, motion);
+    await x.settle();
+    assert.equal(await page.evaluate(() => window.hexdual.view.animating), false);
+    // The panel shows the new layout, the ghost of the old one is gone.
+    assert.equal(await page.locator('.diagram[data-sheet="5"] .ghost').count(), 0);
+  }
+  await page.emulateMedia({ reducedMotion: 'no-preference' });
+  assert.deepEqual(errors, []);
+});

@@ -20,8 +20,14 @@ export async function openBrowser() {
 
 /** Explorer helpers bound to one page and server. */
 export function explorerPage(page, server) {
-  // Two animation frames: the view has drawn what the state says.
-  const settle = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  // The step animation (if any) has ended and two more frames are drawn: the view shows the state.
+  const settle = () => page.evaluate(async () => {
+    const frame = () => new Promise((r) => requestAnimationFrame(r));
+    const diagramsMove = () => [...(window.hexdual?.diagrams?.panels.values() ?? [])].some((p) => p.animating);
+    while (window.hexdual?.view?.animating || diagramsMove()) await frame();
+    await frame();
+    await frame();
+  });
   return {
     settle,
     async open(hash) {

@@ -52,3 +52,25 @@ export async function startBrowser() {
     ],
   });
 }
+
+/**
+ * The server, a browser and one page for a test file, started before its tests and stopped after
+ * them (`ready(session)` is called once they run); the page's uncaught errors and console errors
+ * collect in `session.problems`.
+ */
+export function pageSession(before, after, ready) {
+  const session = { server: null, context: null, page: null, problems: [] };
+  before(async () => {
+    session.server = await startServer();
+    session.context = await startBrowser();
+    session.page = await session.context.newPage();
+    session.page.on('pageerror', (e) => session.problems.push(`pageerror: ${e.message}`));
+    session.page.on('console', (m) => m.type() === 'error' && session.problems.push(`console: ${m.text()}`));
+    ready(session);
+  });
+  after(async () => {
+    await session.context?.close();
+    session.server?.stop();
+  });
+  return session;
+}

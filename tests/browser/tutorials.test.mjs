@@ -5,25 +5,19 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { startServer, startBrowser, screenshotDir } from './harness.mjs';
+import { writeFileSync } from 'node:fs';
+import { pageSession, screenshotDir } from './harness.mjs';
+import { init, Mesh, flips, decompositions } from 'hexdual';
 
-const PAGES = ['dual', 'diagrams', 'simple', 'pillow', 'push', 'collapse', 'flips', 'try'];
+await init();
+const record = (problem) => decompositions().find((r) => r.problem === problem);
+
+const PAGES = ['dual', 'diagrams', 'simple', 'pillow', 'push', 'collapse', 'flips', 'puzzles'];
 let server, context, page;
-const problems = [];
+const { problems } = pageSession(before, after, (s) => ({ server, context, page } = s));
 
-before(async () => {
-  server = await startServer();
-  context = await startBrowser();
-  page = await context.newPage();
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));
-});
-after(async () => {
-  await context?.close();
-  server?.stop();
-});
-
-async function open(name, width = 1280) {
+async function open(name, width = 1280, motion = 'reduce') {
+  await page.emulateMedia({ reducedMotion: motion });
   await page.setViewportSize({ width, height: 900 });
   const started = Date.now();
   await page.goto(`${server.url}tutorials/${name}.html`);
@@ -98,11 +92,11 @@ for (const name of PAGES) {
     assert.ok(n >= 1, `${name} has a live figure`);
     for (let k = 0; k < n; k++) assert.ok((await inkOf(k)) > 2000, `${name} figure ${k} drew something`);
     await page.screenshot({ path: join(screenshotDir, `tutorials-${name}-1280.png`), fullPage: true });
-    await open(name, 375);
+    await open(name, 390);
     const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
-    assert.ok(overflow <= 1, `${name} fits 375 px (overflow ${overflow} px)`);
-    for (let k = 0; k < (await figureCount()); k++) assert.ok((await inkOf(k)) > 1000, `${name} figure ${k} drew at 375 px`);
-    await page.screenshot({ path: join(screenshotDir, `tutorials-${name}-375.png`), fullPage: true });
+    assert.ok(overflow <= 1, `${name} fits 390 px (overflow ${overflow} px)`);
+    for (let k = 0; k < (await figureCount()); k++) assert.ok((await inkOf(k)) > 1000, `${name} figure ${k} drew at 390 px`);
+    await page.screenshot({ path: join(screenshotDir, `tutorials-${name}-390.png`), fullPage: true });
     assert.deepEqual(problems, []);
   });
 
@@ -177,6 +171,12 @@ test('live numbers: the paper\'s counts match the engine', async () => {
     ['+2', '+6', '+6', '+2', 'the engine agrees with the paper ✓']);
   assert.equal(await page.locator('[data-live="hp-check"]').textContent(), 'the engine agrees with the paper ✓');
   assert.equal(await page.locator('[data-live="cp-blind"]').textContent(), '1');
+  // The chord-push figure (TK03 Fig. 2) draws a pushed sheet whole, with the blind chord: a closed
+  // chord through exactly the two new hexes.
+  const cpDiagram = page.locator('#fig-chordpush .diagram svg');
+  assert.equal(await cpDiagram.getAttribute('data-method'), 'disk');
+  assert.equal(await page.locator('#fig-chordpush .diagram-note').count(), 0, 'no note: the whole sheet is drawn');
+  assert.deepEqual(await cpDiagram.locator('polyline[data-closed="1"]').evaluateAll((ls) => ls.map((l) => l.dataset.hexes.split(' ').map(Number).sort((a, b) => a - b).join(' '))), ['27 28']);
   await open('pillow');
   assert.equal(await page.locator('[data-live="delta"]').first().textContent(), '(+4, +8, +6, +2)');
   // The README's picture (docs/images/tutorial.png is a copy of this file).
@@ -212,20 +212,168 @@ test('picking a hex on the Theorems page counts at its dual vertex', async () =>
   assert.equal(await page.locator('#incidences [data-live="quads"]').textContent(), '6');
 });
 
-test('exercises: the answers solve them, a wrong step is refused with the engine\'s message', async () => {
-  await open('try');
-  for (const id of ['six-and-back', 'sphere', 'face-collapse']) {
-    const card = page.locator(`[data-exercise="${id}"]`);
-    await card.locator('[data-do=answer]').click();
-    assert.equal(await card.getAttribute('data-solved'), 'true', `${id}: ${await card.locator('.result').textContent()}`);
+const liveText = (name) => page.locator(`[data-live="${name}"]`).first().textContent();
+
+test('flips: every step count and bound on the page is the stored record\'s', async () => {
+  await open('flips');
+  const v44 = record('4-4v'), tcp = record('tripleChordPush');
+  assert.equal(await liveText('v44-steps'), String(v44.steps.length));
+  assert.equal(await liveText('v44-shorter'), String(v44.depthSearched - 1));
+  assert.equal(await liveText('v44-states'), v44.states.toLocaleString('en'));
+  assert.equal(await liveText('tcp-steps'), String(tcp.steps.length));
+  assert.equal(await liveText('tcp-shorter'), String(tcp.depthSearched - 1));
+  assert.equal(await liveText('tcp-states'), tcp.states.toLocaleString('en'));
+  // The largest region along the 4-4v steps, replayed here in Node.
+  const f = flips().find((x) => x.name === '4-4v');
+  const m = Mesh.fourCube();
+  let most = 0;
+  for (const s of f.steps) (m.apply(s), (most = Math.max(most, m.counts.hexes - (8 - f.before.length))));
+  m.delete();
+  assert.equal(await liveText('v44-region'), String(most));
+  // The explorer link replays the stored triple-chord push.
+  const href = decodeURIComponent(await page.locator('#tcp-explorer').getAttribute('href'));
+  assert.ok(href.includes(`steps=${['v1', ...tcp.steps].join(';')}&at=0`), href);
+  // The flip table and the picker: the stored steps of every flip.
+  const rows = await page.$$eval('#flip-table tbody tr', (trs) => trs.map((tr) => [...tr.cells].map((td) => td.textContent)));
+  assert.deepEqual(rows.map((r) => [r[0], r[4]]), flips().map((x) => [x.name, x.steps ? x.steps.join('; ') : 'none found']));
+  const options = await page.$$eval('#flip-name option', (os) => os.map((o) => o.textContent));
+  assert.deepEqual(options, flips().filter((x) => x.steps).map((x) => `${x.name} (${x.steps.length} step${x.steps.length === 1 ? '' : 's'})`));
+  assert.equal(await liveText('flip-names'), '1-7, 2-6, 3-5c, 3-5e, 4-4m, 4-4v');
+  assert.match(await page.locator('main').textContent(), /six kinds \(and their inverses\)/);
+  assert.equal(await liveText('chord-only-bound'), String(record('2-6/chord-only').depthSearched + 1));
+});
+
+test('push: the chord-only sentence is the stored record with the parity argument, from the engine', async () => {
+  await open('push');
+  const r = record('2-6/chord-only');
+  assert.equal(r.found, false);
+  assert.equal(await liveText('co-searched'), String(r.depthSearched));
+  assert.equal(await liveText('co-states'), r.states.toLocaleString('en'));
+  // A chord push adds 2 hexes, a hex push 4: sequences are even, so depth 8 searched rules out 9.
+  assert.deepEqual([await liveText('co-push'), await liveText('co-hexpush'), await liveText('co-parity')], ['2', '4', 'even']);
+  assert.equal(await liveText('co-bound'), String(r.depthSearched + 1));
+  assert.doesNotMatch(await page.locator('main').textContent(), /at most 6/);
+  // Prose numbers: X and Y of the chord push share four quads; the hex push replaces hexes 13, 22 by six.
+  assert.match(await page.locator('main').textContent(), /X and Y share four quads/);
+  const g = Mesh.grid(3, 3, 3);
+  const cp = g.apply('chordpush h13e3 h13f3 h16f5');
+  const [x] = cp.created.hexes;
+  const shared = new TextDecoder().decode(g.save('hxd')).split('gluings')[1].trim().split('\n').slice(1)
+    .map((l) => l.split(/\s+/).map(Number)).filter(([a, , b]) => (a === x && b === x + 1) || (a === x + 1 && b === x)).length;
+  g.delete();
+  assert.equal(shared, 4, 'the chord push\'s two hexes are glued across 4 quads');
+  const h = Mesh.grid(3, 3, 3).apply('hexpush h13f5');
+  assert.deepEqual([h.removed.hexes, h.created.hexes.length], [[13, 22], 6]);
+  assert.match(await page.locator('#fig-hexpush .caption').textContent(), /hexes 13 and 22 are replaced by a swapped pair; four new hexes surround them \(all six in orange\)/);
+});
+
+test('the 4-cube on the flips page: eight labelled cubes apart, the two sides in two colours, at desktop and phone size', async () => {
+  for (const width of [1280, 390]) {
+    await open('flips', width);
+    await page.locator('#fig-flip').scrollIntoViewIfNeeded();
+    await drawn(0);
+    const cubes = await page.evaluate(() => {
+      const f = window.tutorial.figures[0];
+      const at = [...Array(8).keys()].map((h) => f.view.project(h));
+      const labels = [...f.root.querySelectorAll('.hex-labels span')].map((s) => [s.textContent, s.className]);
+      let closest = Infinity;
+      for (let a = 0; a < 8; a++) for (let b = a + 1; b < 8; b++) if (a !== 6 && b !== 6) closest = Math.min(closest, Math.hypot(at[a].x - at[b].x, at[a].y - at[b].y));
+      return { labels, closest };
+    });
+    assert.deepEqual(cubes.labels.map(([t]) => t), ['0', '1', '2', '3', '4', '5', '6 (outer)', '7']);
+    assert.deepEqual(cubes.labels.map(([, c]) => c), ['before', 'after', 'after', 'after', 'after', 'after', 'after', 'after']);
+    assert.ok(cubes.closest > (width > 600 ? 40 : 20), `cube centres at least ${cubes.closest.toFixed(0)} px apart`);
+    // Blue (before) and orange (after) pixels on the canvas.
+    const colours = await page.evaluate(() => {
+      const src = window.tutorial.figures[0].canvas;
+      const c = document.createElement('canvas');
+      [c.width, c.height] = [src.width, src.height];
+      c.getContext('2d').drawImage(src, 0, 0);
+      const px = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let blue = 0, orange = 0;
+      for (let i = 0; i < px.length; i += 4) {
+        if (px[i + 2] > px[i] + 40) blue++;
+        if (px[i] > px[i + 2] + 60 && px[i + 1] > px[i + 2]) orange++;
+      }
+      return { blue, orange };
+    });
+    assert.ok(colours.blue > 300 && colours.orange > 300, JSON.stringify(colours));
+    await page.locator('#fig-flip').screenshot({ path: join(screenshotDir, `tutorials-fourcube-${width}.png`) });
   }
-  const card = page.locator('[data-exercise="sphere"]');
-  await card.locator('textarea').fill('pillow h13f5');
-  await card.locator('[data-do=check]').click();
-  assert.equal(await card.locator('.result').textContent(), 'sphere sheets now: 2 hexes — not 6');
-  await card.locator('textarea').fill('pillow h99f5');
-  await card.locator('[data-do=check]').click();
-  assert.match(await card.locator('.result').textContent(), /^step 1 \(pillow h99f5\) was refused: pillow: /);
-  assert.ok((await inkOf(0)) > 2000);
-  await page.screenshot({ path: join(screenshotDir, 'tutorials-try-solved-1280.png'), fullPage: true });
+  assert.deepEqual(problems, []);
+});
+
+test('an animated step: hexes move and fade in 3D and crossings move in the diagram, not with reduced motion', async () => {
+  await open('pillow', 1280, 'no-preference');
+  const fig = page.locator('.figure').first();
+  await fig.scrollIntoViewIfNeeded();
+  await drawn(0);
+  await page.evaluate(() => window.tutorial.figures[0].go(0));
+  await page.evaluate(() => new Promise((r) => setTimeout(r, 600)));
+  const mid = await page.evaluate(async () => {
+    const f = window.tutorial.figures[0];
+    f.root.querySelector('[data-action=forward]').click();
+    await new Promise((r) => setTimeout(r, 120));
+    return { view: f.view.animating, any: f.animating };
+  });
+  assert.deepEqual(mid, { view: true, any: true });
+  await fig.screenshot({ path: join(screenshotDir, 'tutorials-animated-step.png') });
+  await page.evaluate(() => new Promise((r) => setTimeout(r, 700)));
+  assert.equal(await page.evaluate(() => window.tutorial.figures[0].animating), false);
+  // The flips page steps through a decomposition: the 3-5e flip's face collapse (step 2) reshapes
+  // hexes in 3D and moves crossings on the same sheet. A filmstrip of the step for docs/tutorials.md.
+  await open('flips', 1280, 'no-preference');
+  await page.selectOption('#flip-name', '3-5e');
+  await drawn(0);
+  const strip = await page.evaluate(async () => {
+    const f = window.tutorial.figures[0];
+    f.go(1);
+    f.selectSheet(f.sheet);
+    await new Promise((r) => setTimeout(r, 700));
+    const svgImage = async (svg) => {
+      const text = new XMLSerializer().serializeToString(svg);
+      const img = new Image();
+      img.src = URL.createObjectURL(new Blob([text], { type: 'image/svg+xml' }));
+      await img.decode();
+      return img;
+    };
+    const frames = [];
+    f.go(2);
+    const animating = [f.view.animating, f.diagramView.animating];
+    const t0 = performance.now();
+    for (const at of [0, 120, 240, 360, 600]) {
+      while (performance.now() - t0 < at) await new Promise((r) => requestAnimationFrame(r));
+      frames.push({ gl: f.canvas.toDataURL(), svg: await svgImage(f.root.querySelector('.diagram svg')) });
+    }
+    // Five frames side by side: 3D above, the sheet diagram below.
+    const w = 300, out = document.createElement('canvas');
+    [out.width, out.height] = [5 * w, 2 * w];
+    const g = out.getContext('2d');
+    g.fillStyle = 'white';
+    g.fillRect(0, 0, out.width, out.height);
+    for (const [k, fr] of frames.entries()) {
+      const gl = new Image();
+      gl.src = fr.gl;
+      await gl.decode();
+      const s = Math.min(w / gl.width, w / gl.height);
+      g.drawImage(gl, k * w + (w - gl.width * s) / 2, (w - gl.height * s) / 2, gl.width * s, gl.height * s);
+      g.drawImage(fr.svg, k * w + 10, w + 10, w - 20, w - 20);
+      g.fillStyle = '#555';
+      g.font = '14px sans-serif';
+      g.fillText(`${[0, 120, 240, 360, 600][k]} ms`, k * w + 8, 18);
+    }
+    return { animating, png: out.toDataURL('image/png') };
+  });
+  assert.deepEqual(strip.animating, [true, true], 'the 3D view and the diagram of the same sheet animate the step');
+  writeFileSync(join(screenshotDir, 'tutorials-animated-step-strip.png'), Buffer.from(strip.png.split(',')[1], 'base64'));
+  await open('pillow', 1280, 'reduce');
+  await drawn(0);
+  const reduced = await page.evaluate(() => {
+    const f = window.tutorial.figures[0];
+    f.go(0);
+    f.go(1);
+    return f.animating;
+  });
+  assert.equal(reduced, false);
+  assert.deepEqual(problems, []);
 });

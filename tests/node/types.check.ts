@@ -1,6 +1,7 @@
 // Compiled by `tsc --noEmit` only (lib es2022 and esnext): checks that wasm/index.d.ts describes the API as used.
 import {
-  init, Mesh, HexdualError, heapBytes, diagramToSVG, flips,
+  init, Mesh, HexdualError, heapBytes, diagramToSVG, flips, decompositions,
+  type DecompositionRecord,
   type Info, type RenderBuffers, type SheetTopology, type StepReport, type SheetDiagram, type ErrorCode,
 } from '../../wasm/index.js';
 
@@ -25,6 +26,8 @@ async function example(): Promise<number> {
   const centres: Float64Array = m.hexCenters();
   const same: boolean = Mesh.isomorphic(m, Mesh.load(bytes, 'x.hxd'));
   const hash: string = m.canonicalHash();
+  const splits: string[] = m.ringSplits({ hex: 0, edge: 0 }, { maxEdges: 6 });
+  const records: DecompositionRecord[] = decompositions();
   let code: ErrorCode | undefined;
   try {
     m.validate();
@@ -40,6 +43,7 @@ async function example(): Promise<number> {
   new Mesh(null);
   return info.hexes + rb.indices.length + hexes.length + bytes.length + heapBytes() + (topo === 'disk' ? 1 : 0) +
     (inverse ?? '').length + reports.length + undone.length + redone.delta.H + log.length + cands.length + flipped.length +
-    svg.length + centres.length + (same ? 1 : 0) + hash.length + (code ? 1 : 0) + flips().length;
+    svg.length + centres.length + (same ? 1 : 0) + hash.length + (code ? 1 : 0) + flips().length +
+    splits.length + records.filter((r) => r.found && r.steps !== null).length;
 }
 void example;

@@ -1,6 +1,6 @@
 // Shared by every tutorial page: loads the engine, adds the page navigation, fills live numbers,
 // and reports readiness (window.tutorial.ready) for the browser tests.
-import { init } from '../../wasm/index.js';
+import { init, decompositions } from '../../wasm/index.js';
 import wasmUrl from '../../wasm/dist/hexdual.wasm?url';
 
 export const PAGES = [
@@ -11,7 +11,7 @@ export const PAGES = [
   ['push.html', 'Chord push and hex push'],
   ['collapse.html', 'Traditional pillow, ring and face collapse'],
   ['flips.html', 'Flips'],
-  ['try.html', 'Try it yourself'],
+  ['puzzles.html', 'Puzzles'],
 ];
 
 function nav() {
@@ -26,6 +26,28 @@ function nav() {
   if (k >= 0 && k < PAGES.length - 1) bar.append(link(PAGES[k + 1][0], `${PAGES[k + 1][1]} →`, 'next'));
   bar.append(link('../index.html', 'Explorer', ''));
   document.querySelector('main').append(bar);
+}
+
+let records = null;
+/** The stored decomposition record of a problem (core/flips/decompositions.txt via the package). */
+export function record(problem) {
+  records ??= decompositions();
+  const r = records.find((x) => x.problem === problem);
+  if (!r) throw new Error(`no stored decomposition record for ${problem}`);
+  return r;
+}
+
+/**
+ * What the chord-only search of the hex push (record 2-6/chord-only) shows, with the parity
+ * argument of docs/flips.md from the engine's own Δ(hexes): a chord push adds `push` hexes, a pull
+ * removes as many, the hex push adds `hexPush`, so every chord-only sequence doing the hex push
+ * has the parity of hexPush / push; when the search's depth has the other parity, one more is ruled out.
+ */
+export function chordOnlyBound({ push, hexPush }) {
+  const r = record('2-6/chord-only');
+  const parity = Math.abs(hexPush / push) % 2;
+  const searched = r.depthSearched;
+  return { searched, states: r.states, parity, bound: (searched + 1) % 2 !== parity ? searched + 1 : searched };
 }
 
 /** Sets the text of every element with data-live=NAME. */

@@ -1,5 +1,5 @@
 // Page 5: chord push and hex push, each with the paper's Δ checked against the engine's.
-import { startPage, live, signed } from './page.js';
+import { startPage, live, signed, chordOnlyBound } from './page.js';
 import { createFigure, meshAfter } from './figure.js';
 import { sheetWith } from './select.js';
 
@@ -7,6 +7,17 @@ const spec = { kind: 'grid', dims: [3, 3, 3] };
 export const CHORD_PUSH = 'chordpush h13e3 h13f3 h16f5';
 export const HEX_PUSH = 'hexpush h13f5';
 const PAPER = { cp: [2, 6, 6, 2], hp: [4, 12, 12, 4] };
+
+// The chord-only search of the hex push, with the parity argument from the engine's own Δ(hexes).
+function chordOnly(push, hexPush) {
+  const b = chordOnlyBound({ push, hexPush });
+  live('co-searched', b.searched);
+  live('co-states', b.states.toLocaleString('en'));
+  live('co-push', push);
+  live('co-hexpush', hexPush);
+  live('co-parity', b.parity ? 'odd' : 'even');
+  live('co-bound', b.bound);
+}
 
 function summary(prefix, step, paper) {
   const m = meshAfter(spec, []);
@@ -24,21 +35,21 @@ function summary(prefix, step, paper) {
   live(`${prefix}-blind`, closed(m, 2) - closedBefore[1]);
   live(`${prefix}-closed`, closed(m) - closedBefore[0]);
   m.delete();
+  return d[3];
 }
 
 startPage(() => {
   live('chordpush-step', CHORD_PUSH);
   live('hexpush-step', HEX_PUSH);
-  summary('cp', CHORD_PUSH, PAPER.cp);
-  summary('hp', HEX_PUSH, PAPER.hp);
+  chordOnly(summary('cp', CHORD_PUSH, PAPER.cp), summary('hp', HEX_PUSH, PAPER.hp));
   createFigure(document.getElementById('fig-chordpush'), {
     title: 'chord push',
     mesh: spec,
     steps: [CHORD_PUSH],
     startAfter: true,
-    sheet: (f) => sheetWith(f.mesh, [4, 10, 16, 22]), // the sheet of edge e (x = 1): it gets the blind chord
+    sheet: (f) => sheetWith(f.mesh, [6, 7, 8, 15]), // a pushed sheet (the y = 2 layer): it gets the blind chord
     sheetChips: true,
-    caption: 'TK03 Figs. 2–3. New hexes in orange. The diagram shows the sheet of the edge e: after the push, the blind chord is the small loop through the two new crossings.',
+    caption: 'TK03 Figs. 2–3. New hexes in orange. The diagram shows one of the two sheets pushed through each other: after the push, the blind chord is the small loop through the two new crossings. Pick the sheet of the edge e (the x = 1 layer) above to see its two chords now cross twice, at the same two hexes.',
   });
   createFigure(document.getElementById('fig-hexpush'), {
     title: 'hex push',

@@ -1,200 +1,273 @@
-// A small three.js view for one tutorial figure: every hex drawn shrunk toward its dual point,
-// coloured by a per-hex colour function, with chords as polylines through dual points. It renders
-// only when something changes (a page holds several figures).
+// The 3D view of a tutorial figure, built from the explorer's parts (web/view3d/): every hex
+// shrunk toward its dual point from the engine's render buffers, one colour per hex (null: the faint
+// rest), chords as polylines through dual points, picking of hexes, quads and edges, marks, an
+// optional per-hex layout (the exploded 4-cube), and each step animated. Renders only on change.
 import * as THREE from 'three';
-import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { HEX_FACES } from './hexGeometry.js';
+import { hexTables } from '../../wasm/index.js';
+import { rgbOf } from '../paint.js';
+import { createScene } from '../view3d/scene.js';
+import { createHexLayers } from '../view3d/meshBuffers.js';
+import { pickRay, classifyHit, pointNearEdge, faceSideEdge } from '../view3d/picking.js';
+import { clearGroup, drawMarks } from '../view3d/overlays.js';
+import { showGhosts, animateStep } from '../view3d/animation.js';
+import { STEP_MS } from '../motion.js';
 
-const SHRINK = 0.72;
+const BASE = [184, 196, 214];
 
-export function createView(container, { onHover, onPick } = {}) {
-  const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-  renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
-  renderer.setClearColor(0xffffff);
-  renderer.domElement.setAttribute('aria-hidden', 'true');
-  container.appendChild(renderer.domElement);
-  const scene = new THREE.Scene();
-  const camera = new THREE.PerspectiveCamera(35, 1, 0.01, 1000);
-  camera.up.set(0, 0, 1);
-  const controls = new OrbitControls(camera, renderer.domElement);
-  scene.add(new THREE.HemisphereLight(0xffffff, 0x667788, 2.2));
-  const sun = new THREE.DirectionalLight(0xffffff, 1.3);
-  sun.position.set(3, -4, 5);
-  scene.add(sun);
-  const group = new THREE.Group();
-  scene.add(group);
-  let model = null, faceHex = null, fittedKey = null, pending = false;
-
-  const render = () => {
-    if (pending) return;
-    pending = true;
-    requestAnimationFrame(() => {
-      pending = false;
-      renderer.render(scene, camera);
-    });
+// Applies a per-hex transform (hex id, x, y, z -> [x, y, z]) to render buffers, in place.
+function transformBuffers(rb, transform) {
+  const move = (arr, i, h) => {
+    const p = transform(h, arr[i], arr[i + 1], arr[i + 2]);
+    arr[i] = p[0], arr[i + 1] = p[1], arr[i + 2] = p[2];
   };
-  controls.addEventListener('change', render);
+  for (let k = 0; k < rb.triangleHex.length / 12; k++) for (let v = 0; v < 24; v++) move(rb.positions, 3 * (24 * k + v), rb.triangleHex[12 * k]);
+  if (rb.edgePositions) for (let s = 0; s < rb.edgeHex.length; s++) for (let e = 0; e < 2; e++) move(rb.edgePositions, 3 * (2 * s + e), rb.edgeHex[s]);
+  return rb;
+}
 
-  function resize() {
-    const w = container.clientWidth, h = container.clientHeight;
-    if (!w || !h) return;
-    renderer.setSize(w, h);
-    camera.aspect = w / h;
-    camera.updateProjectionMatrix();
-    render();
+/**
+ * A view in `container`. `onHover(pick)` and `onPick(pick, event)` get { kind, hex, face | edge }
+ * or null, picked as `pickMode()` says ('hex', 'auto': quad or edge near a side, 'quad', 'edge').
+ */
+export function createView(container, { onHover, onPick, pickMode = () => 'hex' } = {}) {
+  const sc = createScene(container, { antialias: true, fov: 35, headlight: true });
+  sc.canvas.setAttribute('aria-hidden', 'true');
+  const tables = hexTables();
+  const layers = createHexLayers();
+  const chords = new THREE.Group(), marks = new THREE.Group(), ghosts = new THREE.Group();
+  sc.scene.add(...layers.objects, chords, ghosts, marks);
+  let geomKey = null, fittedKey = null, transform = null, dualPoints = null, motion = null;
+
+  const ray = new THREE.Raycaster();
+  const pickAt = (x, y, mode = pickMode()) => classifyHit(layers, tables, pickRay(layers, sc.rayAt(ray, x, y)), mode);
+  let down = null, hoverTimer = 0, hovered = '';
+  sc.canvas.addEventListener('pointerdown', (e) => (down = [e.clientX, e.clientY]));
+  sc.canvas.addEventListener('pointerup', (e) => {
+    if (!down || Math.hypot(e.clientX - down[0], e.clientY - down[1]) > 4) return;
+    onPick?.(pickAt(e.clientX, e.clientY), e);
+  });
+  sc.canvas.addEventListener('pointermove', (e) => {
+    clearTimeout(hoverTimer);
+    if (e.buttons) return;
+    hoverTimer = setTimeout(() => {
+      const p = pickAt(e.clientX, e.clientY);
+      const key = JSON.stringify(p);
+      if (key !== hovered) (hovered = key), onHover?.(p);
+    }, 30);
+  });
+  sc.canvas.addEventListener('pointerleave', () => {
+    clearTimeout(hoverTimer);
+    if (hovered !== 'null') (hovered = 'null'), onHover?.(null);
+  });
+
+  // Labels over the canvas at hexes' drawn centres, moved with the camera.
+  const labelBox = Object.assign(document.createElement('div'), { className: 'hex-labels' });
+  container.appendChild(labelBox);
+  let labels = [];
+  function setLabels(list) {
+    labels = list.map((l) => {
+      const e = Object.assign(document.createElement('span'), { textContent: l.text, className: l.cls || '', title: l.title || '' });
+      e.dataset.hex = l.hex;
+      labelBox.appendChild(e);
+      return { ...l, el: e };
+    });
   }
-  new ResizeObserver(resize).observe(container);
-
-  function fit(key) {
-    if (fittedKey === key) return;
-    fittedKey = key;
-    const box = new THREE.Box3().setFromArray(model.centroid);
-    box.expandByScalar(0.5);
-    const center = box.getCenter(new THREE.Vector3());
-    const radius = box.getSize(new THREE.Vector3()).length() / 2 || 1;
-    controls.target.copy(center);
-    camera.position.copy(center).add(new THREE.Vector3(1.3, -2.4, 1.5).normalize().multiplyScalar(radius * 3.1));
-    camera.near = radius / 100;
-    camera.far = radius * 100;
-    camera.updateProjectionMatrix();
-    controls.update();
-  }
-
-  function clear() {
-    for (const child of [...group.children]) {
-      child.geometry.dispose();
-      child.material.dispose();
-      group.remove(child);
+  // The highest drawn corner of a hex that lies inside the view (a label for an enclosing shell).
+  function cornerInView(k, r) {
+    let best = null;
+    for (let v = 0; v < 24; v++) {
+      const p = sc.toPage(layers.vertexAt(24 * k + v));
+      const inside = p.x > r.left + 30 && p.x < r.right - 30 && p.y > r.top + 12 && p.y < r.bottom - 12;
+      if (inside && (!best || p.y < best.y)) best = p;
     }
+    return best ?? sc.toPage(layers.centreOf(k));
   }
-
-  // Shrunk hex corners: toward the dual point, so coincident hexes separate.
-  function corner(h, c) {
-    const v = model.corners[8 * h + c], p = model.dual;
-    return [0, 1, 2].map((d) => p[3 * h + d] + SHRINK * (model.vertices[3 * v + d] - p[3 * h + d]));
-  }
-
-  function hexTriangles(hexes) {
-    const pos = [], col = [];
-    const faces = [];
-    for (const { h, color } of hexes) {
-      const c = new THREE.Color(color);
-      for (let f = 0; f < 6; f++) {
-        const q = HEX_FACES[f].map((k) => corner(h, k));
-        for (const t of [0, 1, 2, 0, 2, 3]) {
-          pos.push(...q[t]);
-          col.push(c.r, c.g, c.b);
-        }
-        faces.push(h, h);
-      }
+  sc.onFrame(() => {
+    if (!labels.length) return;
+    const r = container.getBoundingClientRect();
+    for (const l of labels) {
+      const k = layers.slotOf(l.hex);
+      l.el.hidden = k < 0;
+      if (k < 0) continue;
+      const p = l.anchor === 'corner' ? cornerInView(k, r) : sc.toPage(layers.centreOf(k));
+      l.el.style.transform = `translate(${(p.x - r.left).toFixed(1)}px, ${(p.y - r.top).toFixed(1)}px) translate(-50%, -50%)`;
     }
-    const g = new THREE.BufferGeometry();
-    g.setAttribute('position', new THREE.Float32BufferAttribute(pos, 3));
-    g.setAttribute('color', new THREE.Float32BufferAttribute(col, 3));
-    g.computeVertexNormals();
-    return { g, faces };
+  });
+
+  function dualPoint(h) {
+    const p = [dualPoints[3 * h], dualPoints[3 * h + 1], dualPoints[3 * h + 2]];
+    return new THREE.Vector3(...(transform ? transform(h, ...p) : p));
   }
 
-  function hexEdges(hexes) {
-    const pos = [];
-    for (const { h } of hexes) {
-      for (const f of HEX_FACES) for (let k = 0; k < 4; k++) pos.push(...corner(h, f[k]), ...corner(h, f[(k + 1) % 4]));
-    }
-    const g = new THREE.BufferGeometry();
-    g.setAttribute('position', new THREE.Float32BufferAttribute(pos, 3));
-    return g;
-  }
-
-  function addLayer(hexes, { opacity }) {
-    if (!hexes.length) return [];
-    const { g, faces } = hexTriangles(hexes);
-    const faint = opacity < 1;
-    const mesh = new THREE.Mesh(g, new THREE.MeshLambertMaterial({
-      vertexColors: true, side: THREE.DoubleSide, transparent: faint, opacity, depthWrite: !faint,
-    }));
-    group.add(mesh);
-    group.add(new THREE.LineSegments(hexEdges(hexes), new THREE.LineBasicMaterial({ color: 0x334455, transparent: true, opacity: faint ? 0.25 : 0.6 })));
-    mesh.userData.faces = faces;
-    return [mesh];
-  }
-
-  function addChords(chords) {
-    for (const { hexes, color, closed } of chords) {
-      const pts = hexes.map((h) => new THREE.Vector3(model.dual[3 * h], model.dual[3 * h + 1], model.dual[3 * h + 2]));
+  function drawChords(list) {
+    clearGroup(chords);
+    for (const { hexes, color, closed } of list) {
+      const pts = hexes.map(dualPoint);
       if (closed && pts.length) pts.push(pts[0].clone());
       if (pts.length < 2) continue;
-      const g = new THREE.BufferGeometry().setFromPoints(pts);
       // Drawn over the hexes: chords and dual points live inside them.
-      const line = new THREE.Line(g, new THREE.LineBasicMaterial({ color, depthTest: false, transparent: true }));
-      line.renderOrder = 2;
-      group.add(line);
+      const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints(pts), new THREE.LineBasicMaterial({ color, depthTest: false, transparent: true }));
+      line.renderOrder = 4;
+      chords.add(line);
     }
   }
 
-  function addDualVertices(hexes) {
-    const pos = hexes.flatMap((h) => [model.dual[3 * h], model.dual[3 * h + 1], model.dual[3 * h + 2]]);
+  function drawDualVertices() {
+    const pos = [];
+    for (const h of layers.drawnHexIds()) pos.push(...dualPoint(h).toArray());
     const g = new THREE.BufferGeometry();
     g.setAttribute('position', new THREE.Float32BufferAttribute(pos, 3));
     const points = new THREE.Points(g, new THREE.PointsMaterial({ color: 0x111111, size: 7, sizeAttenuation: false, depthTest: false, transparent: true }));
-    points.renderOrder = 3;
-    group.add(points);
+    points.renderOrder = 5;
+    chords.add(points);
   }
 
-  let pickables = [];
-  const ray = new THREE.Raycaster();
-  function hexAt(ev) {
-    const r = renderer.domElement.getBoundingClientRect();
-    const p = new THREE.Vector2(((ev.clientX - r.left) / r.width) * 2 - 1, -((ev.clientY - r.top) / r.height) * 2 + 1);
-    ray.setFromCamera(p, camera);
-    const hit = ray.intersectObjects(pickables, false)[0];
-    return hit ? hit.object.userData.faces[hit.faceIndex] : -1;
-  }
-  let hovered = -1, down = null;
-  renderer.domElement.addEventListener('pointermove', (ev) => {
-    if (!model || ev.buttons) return;
-    const h = hexAt(ev);
-    if (h !== hovered) {
-      hovered = h;
-      onHover?.(h);
+  // colorOf(h): a CSS colour, [css, alpha 0..255], or null for the faint rest.
+  function paint(colorOf, faintAlpha) {
+    const strong = new Map();
+    for (const h of layers.drawnHexIds()) {
+      const c = colorOf(h);
+      if (c) strong.set(h, Array.isArray(c) ? [...rgbOf(c[0]), c[1]] : [...rgbOf(c), 255]);
     }
-  });
-  renderer.domElement.addEventListener('pointerleave', () => {
-    if (hovered !== -1) onHover?.((hovered = -1));
-  });
-  renderer.domElement.addEventListener('pointerdown', (ev) => (down = [ev.clientX, ev.clientY]));
-  renderer.domElement.addEventListener('pointerup', (ev) => {
-    if (!model || !down || Math.hypot(ev.clientX - down[0], ev.clientY - down[1]) > 4) return;
-    const h = hexAt(ev);
-    if (h >= 0) onPick?.(h);
-  });
+    const alpha = strong.size > 0 && strong.size < layers.hexCount ? faintAlpha : 255;
+    const rest = [...BASE, alpha];
+    layers.paint((h) => strong.get(h) || rest);
+    paintEdges((h) => ((strong.get(h) || rest)[3] >= 128 ? 190 : 45));
+  }
 
-  return {
-    canvas: renderer.domElement,
-    destroy() {
-      clear();
-      controls.dispose();
-      renderer.dispose();
-      renderer.forceContextLoss();
+  // Edge lines in one colour, strong for emphasised hexes and light for the faint rest.
+  function paintEdges(alphaOf) {
+    const rb = layers.rb;
+    if (!rb.edgeHex) return;
+    const col = new Uint8Array(8 * rb.edgeHex.length);
+    for (let s = 0; s < rb.edgeHex.length; s++) {
+      const a = alphaOf(rb.edgeHex[s]);
+      col.set([51, 68, 85, a, 51, 68, 85, a], 8 * s);
+    }
+    const g = layers.edgeLines.geometry;
+    g.setAttribute('color', new THREE.BufferAttribute(col, 4, true));
+    layers.edgeLines.material.vertexColors = true;
+    layers.edgeLines.material.opacity = 1;
+    layers.edgeLines.material.needsUpdate = true;
+  }
+
+  // What the camera frames: every hex but an enclosing shell (the 4-cube's outer cube) when there is one.
+  function fitPositions(rb) {
+    if (!transform?.outer?.size) return rb.positions;
+    const keep = [];
+    for (let k = 0; k < rb.triangleHex.length / 12; k++) if (!transform.outer.has(rb.triangleHex[12 * k])) keep.push(k);
+    const out = new Float32Array(72 * keep.length);
+    keep.forEach((k, i) => out.set(rb.positions.subarray(72 * k, 72 * k + 72), 72 * i));
+    return out.length ? out : rb.positions;
+  }
+
+  // New geometry for the mesh; animates from the previous drawing when asked.
+  function rebuild(mesh, o) {
+    motion?.cancel();
+    const prevRb = layers.rb;
+    transform = o.layout ? o.layout(mesh) : null;
+    let rb = mesh.renderBuffers({ shrink: o.shrink ?? 0.28, edges: true });
+    if (transform) rb = transformBuffers(rb, transform);
+    dualPoints = mesh.dualPoints();
+    layers.setBuffers(rb, true);
+    if (fittedKey !== o.fitKey) {
+      fittedKey = o.fitKey;
+      sc.fit(fitPositions(rb), [1.3, -2.4, 1.5], 3.2);
+    }
+    return o.animate ? prevRb : null;
+  }
+
+  function animate(prevRb, { created = [], removed = [] }) {
+    clearGroup(ghosts);
+    if (!prevRb) return;
+    showGhosts(ghosts, prevRb, removed, sc.requestRender, { from: 0.55, to: 0, ms: STEP_MS });
+    motion = animateStep(layers, prevRb, { created, requestRender: sc.requestRender });
+  }
+
+  const view = {
+    canvas: sc.canvas,
+    tables,
+    scene: sc,
+    get animating() {
+      return !!motion?.running;
+    },
+    /** The current layout transform (with `outer`: hexes drawn as the enclosing shell), or null. */
+    get layoutInfo() {
+      return transform;
     },
     /**
-     * Draws `model` (from hexModel): `colorOf(h)` gives a colour for emphasised hexes or null for the
-     * faint rest; `chords` are { hexes (dense), color, closed }; `fitKey` refits the camera when it changes.
+     * Draws `mesh`: `key` names its state (same key: colours, chords and marks only); `colorOf(hexId)`
+     * gives a CSS colour for emphasised hexes or null for the faint rest (`faintAlpha`, 0..255);
+     * `chords` are { hexes (ids), color, closed }; `fitKey` refits the camera when it changes;
+     * `layout(mesh)` gives a per-hex transform; `animate` = { created, removed } animates from the
+     * previous drawing; `marks` = [[pick, color, opacity]]; `labels` (or a function giving them) =
+     * [{ hex, text, cls, title, anchor }] over the canvas.
      */
-    draw(next, { colorOf, chords = [], dualVertices = false, fitKey }) {
-      model = next;
-      clear();
-      const strong = [], faint = [];
-      for (let h = 0; h < model.hexCount; h++) {
-        const color = colorOf(h);
-        (color ? strong : faint).push({ h, color: color || '#b8c4d6' });
+    draw(mesh, o) {
+      let prevRb = null;
+      sc.resize(); // the camera's aspect before a first fit
+      if (geomKey !== o.key) {
+        prevRb = rebuild(mesh, o);
+        geomKey = o.key;
       }
-      const anyStrong = strong.length > 0 && faint.length > 0;
-      pickables = [...addLayer(strong, { opacity: 1 }), ...addLayer(faint, { opacity: anyStrong ? 0.22 : 1 })];
-      addChords(chords);
-      if (dualVertices) addDualVertices([...Array(model.hexCount).keys()]);
-      fit(fitKey);
-      resize();
-      render();
+      paint(o.colorOf, o.faintAlpha ?? 56);
+      labelBox.replaceChildren();
+      setLabels((typeof o.labels === 'function' ? o.labels() : o.labels) || []);
+      drawChords(o.chords || []);
+      if (o.dualVertices) drawDualVertices();
+      drawMarks(marks, layers, tables, o.marks || []);
+      if (prevRb) animate(prevRb, o.animate);
+      sc.resize();
+      sc.requestRender();
+    },
+    /** Marks only (hover, selection): no repaint of the hexes. */
+    setMarks(items) {
+      drawMarks(marks, layers, tables, items);
+      sc.requestRender();
+    },
+    pickAt,
+    /** Page position of a hex's drawn centre, a face centre, or a point of the face near an edge. */
+    project(hex, face, edge) {
+      const k = layers.slotOf(hex);
+      if (k < 0) return null;
+      if (face === undefined) return sc.toPage(layers.centreOf(k));
+      if (edge === undefined) return sc.toPage(layers.faceCentre(k, face));
+      const p = pointNearEdge(layers, tables, k, face, edge);
+      return p && sc.toPage(p);
+    },
+    /**
+     * Page points spread over face `face` of a hex, or along its side on local edge `edge` (just
+     * inside the face): where a pick of that quad or edge can land (tests, hints).
+     */
+    facePoints(hex, face, edge) {
+      const k = layers.slotOf(hex);
+      if (k < 0) return [];
+      const c = [0, 1, 2, 3].map((q) => layers.vertexAt(24 * k + 4 * face + q));
+      const centre = layers.faceCentre(k, face);
+      const out = [];
+      if (edge === undefined) {
+        for (const u of [0.5, 0.3, 0.7, 0.15, 0.85])
+          for (const v of [0.5, 0.3, 0.7, 0.15, 0.85]) out.push(c[0].clone().lerp(c[1], u).lerp(c[3].clone().lerp(c[2], u), v));
+      } else {
+        const q = [0, 1, 2, 3].find((i) => faceSideEdge(tables, face, i) === edge);
+        if (q === undefined) return [];
+        for (const t of [0.5, 0.35, 0.65, 0.2, 0.8]) for (const inset of [0.04, 0.08]) out.push(c[q].clone().lerp(c[(q + 1) & 3], t).lerp(centre, inset));
+      }
+      return out.map((p) => sc.toPage(p));
+    },
+    /** The drawn centre of a hex in the scene (for labels). */
+    centreOf(hex) {
+      const k = layers.slotOf(hex);
+      return k < 0 ? null : layers.centreOf(k);
+    },
+    drawnHexIds: () => layers.drawnHexIds(),
+    destroy() {
+      motion?.cancel();
+      clearGroup(chords);
+      clearGroup(marks);
+      clearGroup(ghosts);
+      sc.dispose();
     },
   };
+  return view;
 }
