@@ -201,7 +201,71 @@ static int benchLayout(int n, int reps) {
   return 0;
 }
 
+// The sheet operations on an N^3 grid: extraction of the middle x-layer (N^2 hexes) and its
+// inverse insertion, dicing it in two, pillowing the centre hex, collapsing the middle x-chord.
+// Each is applied and undone REPS times (minimum CPU time): the operation alone, and with the
+// dual tracker's update; slots: what the update visited.
+static int benchSheetOps(int n, int reps) {
+  Complex cx = makeGrid(n, n, n);
+  DualTracker tracker(cx);
+  const int c = n / 2;
+  const std::string mid = std::to_string(c + n * (c + n * c));
+  OpResult extracted = applyStep(cx, "sheet-extract h" + mid + "e0");
+  const std::string insert = formatOpStep(*extracted.inverse);
+  cx.undo(extracted.edits);
+  struct Case {
+    const char* name;
+    std::string setup, step;
+  };
+  std::vector<Case> cases = {
+      {"sheetExtract", "", "sheet-extract h" + mid + "e0"},
+      {"sheetInsert", "sheet-extract h" + mid + "e0", insert},
+      {"sheetDice2", "", "sheet-dice h" + mid + "e0 2"},
+      {"sheetPillow", "", "sheet-pillow h" + mid},
+      {"columnCollapse", "", "column-collapse h" + mid + "e0"},
+  };
+  for (const Case& k : cases) {
+    Complex::EditLog setupLog;
+    if (!k.setup.empty()) {
+      OpResult s = applyStep(cx, k.setup);
+      tracker.update(cx, s.edits, keepsSheetTopology(s));
+      setupLog = s.edits;
+    }
+    std::vector<double> opOnly, withDual;
+    size_t slots = 0;
+    for (int r = 0; r < reps; ++r) {
+      auto t0 = Clock::now();
+      OpResult res = applyStep(cx, k.step);
+      auto t1 = Clock::now();
+      cx.undo(res.edits);
+      opOnly.push_back(ms(t1 - t0));
+    }
+    for (int r = 0; r < reps; ++r) {
+      auto t2 = Clock::now();
+      OpResult res = applyStep(cx, k.step);
+      tracker.update(cx, res.edits, keepsSheetTopology(res));
+      auto t3 = Clock::now();
+      slots = tracker.slotsTouched();
+      cx.undo(res.edits);
+      tracker.update(cx, res.edits, keepsSheetTopology(res));
+      tracker.releaseRetiredTail();
+      withDual.push_back(ms(t3 - t2));
+    }
+    if (!k.setup.empty()) {
+      cx.undo(setupLog);
+      tracker.update(cx, setupLog, true);
+      tracker.releaseRetiredTail();
+    }
+    std::sort(opOnly.begin(), opOnly.end());
+    std::sort(withDual.begin(), withDual.end());
+    std::printf("{\"bench\":\"sheetop\",\"n\":%d,\"op\":\"%s\",\"opMs\":%.3f,\"opPlusDualMs\":%.3f,\"slotsTouched\":%zu}\n", n,
+                k.name, opOnly[0], withDual[0], slots);
+  }
+  return 0;
+}
+
 int main(int argc, char** argv) {
+  if (argc >= 3 && !std::strcmp(argv[1], "sheetops")) return benchSheetOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "layout")) return benchLayout(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "build")) return benchBuild(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "ops")) return benchOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 21);

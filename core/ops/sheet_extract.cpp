@@ -1,0 +1,201 @@
+// Sheet extraction (Borden, Benzley & Shepherd 2002): collapse every edge of a sheet's edge
+// class. The sheet's hexes vanish and the quads on either side are glued. Dually: the sheet
+// disappears, every chord crossing it loses the hexes where it crossed, the chords lying in it
+// disappear. Cost: the sheet and the stars of its vertices.
+#include <algorithm>
+
+#include "ops/sheet_support.hpp"
+#include "ops/support.hpp"
+
+namespace hexdual {
+using namespace tables;
+using namespace ops;
+
+namespace {
+
+// Consecutive hexes of the sheet along a chord crossing it, and the faces by which the chord
+// enters the first and leaves the last (their gluings: the quads the extraction glues).
+struct Run {
+  std::vector<HexId> hexes;
+  QuadSide before, after;
+};
+
+// From hex h out through face x, the hexes of the sheet the chord passes next while it stays in
+// the sheet, and the face it leaves the last one by; `closed` when it comes back to h.
+struct RunWalk {
+  std::vector<HexId> hexes;
+  QuadSide last;
+  bool closed = false;
+};
+RunWalk walkRun(const Complex& cx, const SheetHexes& sheet, HexId h, int x) {
+  RunWalk w;
+  w.last = {h, x};
+  for (size_t guard = 0; guard <= sheet.hexes.size(); ++guard) {
+    const Gluing g = cx.gluing(w.last);
+    if (g.boundary() || sheet.axisOf(g.hex) != axisOfFace(g.face)) break;  // the chord leaves the sheet
+    if (g.hex == h) {
+      w.closed = true;
+      break;
+    }
+    w.hexes.push_back(g.hex);
+    w.last = {g.hex, oppositeFace(g.face)};
+  }
+  return w;
+}
+
+std::string hexList(const std::vector<HexId>& hexes) {
+  std::string s;
+  for (size_t i = 0; i < hexes.size() && i < 8; ++i) s += (i ? ", " : "") + std::to_string(hexes[i]);
+  return s + (hexes.size() > 8 ? ", ..." : "");
+}
+
+// Every sheet hex lies in one run. Refuses a chord that never leaves the sheet (no-sides).
+std::vector<Run> runsOf(const Complex& cx, const SheetHexes& sheet, const std::string& op) {
+  std::vector<Run> runs;
+  std::unordered_map<HexId, bool> placed;
+  placed.reserve(sheet.hexes.size());
+  for (HexId h : sheet.hexes) {
+    if (placed.count(h)) continue;
+    const int a = sheet.axisOf(h);
+    RunWalk up = walkRun(cx, sheet, h, 2 * a + 1);
+    if (up.closed)
+      refuse(op, "no-sides", "the chord through " + hexName(h) + " is closed and lies in the sheet; nothing is on either side of it");
+    RunWalk down = walkRun(cx, sheet, h, 2 * a);
+    Run r;
+    r.hexes.assign(down.hexes.rbegin(), down.hexes.rend());
+    r.hexes.push_back(h);
+    r.hexes.insert(r.hexes.end(), up.hexes.begin(), up.hexes.end());
+    r.before = down.last;
+    r.after = up.last;
+    if (cx.isBoundary(r.before) && cx.isBoundary(r.after))
+      refuse(op, "no-sides", "the chord through " + hexName(h) + " runs from boundary to boundary inside the sheet (hexes " +
+                                 hexList(r.hexes) + "); no hex would be left there");
+    for (HexId x : r.hexes) placed.emplace(x, true);
+    runs.push_back(std::move(r));
+  }
+  return runs;
+}
+
+// The edge class: one merge (its two ends) per edge. Refuses a vertex on two edges of the class
+// with different other ends (self-touching): three vertices would become one.
+std::vector<std::vector<std::pair<HexId, int>>> collapsedEdges(const Complex& cx, const SheetHexes& sheet, const std::string& op) {
+  std::unordered_map<VertexId, VertexId> partner;
+  partner.reserve(8 * sheet.hexes.size());
+  std::vector<std::vector<std::pair<HexId, int>>> classes;
+  auto pairUp = [&](VertexId v, VertexId w) {
+    auto [it, fresh] = partner.emplace(v, w);
+    if (!fresh && it->second != w)
+      refuse(op, "self-touching",
+             "the sheet touches itself at vertex " + std::to_string(v) + ": its edges to " + std::to_string(it->second) +
+                 " and to " + std::to_string(w) + " would merge three vertices into one");
+    return fresh;
+  };
+  for (HexId h : sheet.hexes) {
+    const int a = sheet.axisOf(h);
+    for (int k = 0; k < 4; ++k) {
+      const int c0 = kEdgeCorners[size_t(4 * a + k)][0], c1 = kEdgeCorners[size_t(4 * a + k)][1];
+      const VertexId v0 = cx.vertex(h, c0), v1 = cx.vertex(h, c1);
+      const bool fresh = pairUp(v0, v1);
+      pairUp(v1, v0);
+      if (fresh) classes.push_back({{h, c0}, {h, c1}});
+    }
+  }
+  return classes;
+}
+
+// The pairs of quads to glue: both outside ends of every run whose ends are both interior. They
+// must carry the same vertices once merged.
+std::vector<std::pair<QuadSide, QuadSide>> gluesOf(const Complex& cx, const std::vector<Run>& runs, const VertexMerges& m,
+                                                   const std::string& op) {
+  std::vector<std::pair<QuadSide, QuadSide>> out;
+  for (const Run& r : runs) {
+    if (cx.isBoundary(r.before) || cx.isBoundary(r.after)) continue;
+    const Gluing p = cx.gluing(r.before), n = cx.gluing(r.after);
+    const QuadSide P{p.hex, p.face}, N{n.hex, n.face};
+    auto merged = [&](QuadSide s) {
+      std::array<VertexId, 4> v = faceVertexSet(cx, s.hex, s.face);
+      for (VertexId& x : v) x = m.target(x);
+      std::sort(v.begin(), v.end());
+      return v;
+    };
+    if (P == N || merged(P) != merged(N))
+      refuse(op, "invalid-result", "the quads " + entityName(P) + " and " + entityName(N) + " on either side of " +
+                                       hexName(r.hexes[0]) + " would not meet vertex for vertex");
+    out.push_back({P, N});
+  }
+  return out;
+}
+
+// The inverse: the insertion along the glued quads when every run is one hex (a chord crosses the
+// sheet once at a time) and the sheet is two-sided; a pillow for a sphere of 2 hexes folded on
+// itself (a minimal pillow); otherwise none.
+void reportInverse(const Complex& cx, OpResult& res, const std::vector<Run>& runs, const SheetHexes& sheet, bool twoSided) {
+  const Run* fold = nullptr;
+  for (const Run& r : runs)
+    if (r.hexes.size() > 1 && !fold) fold = &r;
+  if (!fold && twoSided) {
+    OpStep inv{OpKind::SheetInsert, {}, 0};
+    for (const Run& r : runs) {
+      const QuadSide s = cx.isBoundary(r.before) ? r.after : r.before;
+      const Gluing g = cx.gluing(s);
+      inv.args.push_back(OpArg::of(QuadSide{g.hex, g.face}));  // the outside side, which survives
+    }
+    res.inverse = std::move(inv);
+  } else if (fold && runs.size() == 1 && sheet.hexes.size() == 2 && !cx.isBoundary(fold->before) && !cx.isBoundary(fold->after)) {
+    const Gluing g = cx.gluing(fold->before);
+    res.inverse = makeStep(OpKind::Pillow, QuadSide{g.hex, g.face});
+  } else if (fold) {
+    res.noInverse = "the sheet folds back on itself: a chord crosses it twice in a row (hexes " + hexList(fold->hexes) +
+                    "), which no sheet insertion gives back; use undo";
+  } else {
+    res.noInverse = "the sheet is one-sided: no sheet insertion gives it back; use undo";
+  }
+}
+
+}  // namespace
+
+OpResult sheetExtract(Complex& cx, EdgeRef e) {
+  const OpKind kind = OpKind::SheetExtract;
+  const std::string op = opName(kind);
+  const SheetHexes sheet = sheetThrough(cx, e, op);
+  requireManifold(cx, sheet.hexes, op);
+  const std::vector<Run> runs = runsOf(cx, sheet, op);
+  const VertexMerges m = planMerges(cx, collapsedEdges(cx, sheet, op), [&](HexId h) { return sheet.axisOf(h) >= 0; });
+  requireDistinctCorners(cx, m, op);
+  const auto glues = gluesOf(cx, runs, m, op);
+  const bool twoSided = !sheetUp(cx, sheet).empty();
+  OpResult res;
+  res.op = kind;
+  res.removedHexes = sheet.hexes;
+  reportInverse(cx, res, runs, sheet, twoSided);  // names quads by their outside sides, which survive
+
+  Transaction tx(cx);
+  for (HexId h : sheet.hexes)
+    for (int f = 0; f < 6; ++f) cx.unglue(h, f);
+  for (HexId h : sheet.hexes) cx.removeHex(h);
+  applyMerges(cx, m);
+  std::vector<HexId> touched = renamedHexes(m);
+  for (auto [P, N] : glues) {
+    const int o = orientByVertices(cx, P.hex, P.face, N.hex, N.face);
+    if (o < 0) refuse(op, "invalid-result", "after the collapse " + entityName(P) + " and " + entityName(N) + " meet in a different cyclic order");
+    cx.glue(P.hex, P.face, N.hex, N.face, o);
+    touched.push_back(P.hex);
+    touched.push_back(N.hex);
+  }
+  commitOrRefuse(tx, res, touched, op);
+  if (res.inverse && res.inverse->op == OpKind::SheetInsert) {  // the glued quads may not take an insertion
+    std::vector<QuadSide> quads;
+    for (const OpArg& a : res.inverse->args) quads.push_back(a.quad());
+    if (std::string why = sheetInsertProblem(cx, quads); !why.empty()) {
+      res.inverse.reset();
+      res.noInverse = "the glued quads do not take a sheet insertion (" + why + "); use undo";
+    }
+  }
+  res.removedVertices = m.dropped;
+  for (auto [v, p] : m.placed)
+    if (!cx.isVertex(v)) res.removedVertices.push_back(v);
+  std::sort(res.removedVertices.begin(), res.removedVertices.end());
+  return res;
+}
+
+}  // namespace hexdual

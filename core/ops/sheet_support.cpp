@@ -1,0 +1,170 @@
+// Helpers of the sheet operations: refusals with rule names, the sheet through an edge, its
+// two sides, and vertex merges (sheet_support.hpp).
+#include "ops/sheet_support.hpp"
+
+#include <algorithm>
+
+#include "complex/manifold.hpp"
+#include "dual/dual.hpp"
+#include "ops/support.hpp"
+
+namespace hexdual {
+
+std::string ruleOf(const std::string& message) {
+  // "<op>: <rule>: ...": both words are lower-case with hyphens, so a sentence is never a rule.
+  auto word = [&](size_t from) {
+    size_t i = from;
+    while (i < message.size() && ((message[i] >= 'a' && message[i] <= 'z') || message[i] == '-')) ++i;
+    return i > from && message.compare(i, 2, ": ") == 0 ? i : std::string::npos;
+  };
+  const size_t opEnd = word(0);
+  if (opEnd == std::string::npos) return "";
+  const size_t ruleEnd = word(opEnd + 2);
+  return ruleEnd == std::string::npos ? "" : message.substr(opEnd + 2, ruleEnd - opEnd - 2);
+}
+
+}  // namespace hexdual
+
+namespace hexdual::ops {
+using namespace tables;
+
+void refuse(const std::string& op, const char* rule, const std::string& details) {
+  throw Error(op + ": " + rule + ": " + details);
+}
+
+void requireEdge(const Complex& cx, EdgeRef e, const std::string& op) {
+  if (!cx.isHex(e.hex)) refuse(op, "no-such-entity", hexName(e.hex) + " does not exist");
+  if (e.edge < 0 || e.edge > 11) refuse(op, "no-such-entity", "local edge " + std::to_string(e.edge) + " is not 0..11");
+}
+
+void requireManifold(const Complex& cx, const std::vector<HexId>& hexes, const std::string& op) {
+  requireManifoldVertices(cx, hexes, op + ": non-manifold-vertex");
+}
+
+void commitOrRefuse(Transaction& tx, OpResult& r, const std::vector<HexId>& touched, const std::string& op) {
+  try {
+    tx.commit(r, touched);
+  } catch (const Error& e) {  // still open: the transaction rolls back as this unwinds
+    const std::string why = e.what();
+    const bool link = why.find("link") != std::string::npos || why.find("non-manifold") != std::string::npos;
+    refuse(op, link ? "non-manifold-result" : "invalid-result", "the result would not be a valid complex (" + why + ")");
+  }
+}
+
+SheetHexes sheetThrough(const Complex& cx, EdgeRef e, const std::string& op) {
+  requireEdge(cx, e, op);
+  SheetHexes s;
+  std::vector<std::pair<HexId, int>> stack{{e.hex, axisOfEdge(e.edge)}};
+  s.axis.emplace(e.hex, axisOfEdge(e.edge));
+  while (!stack.empty()) {
+    auto [h, a] = stack.back();
+    stack.pop_back();
+    s.hexes.push_back(h);
+    for (int f : kParallelFaces[size_t(a)]) {
+      const Gluing g = cx.gluing(h, f);
+      if (g.boundary()) continue;
+      const int a2 = kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))].axis;
+      auto [it, fresh] = s.axis.emplace(g.hex, a2);
+      if (fresh) stack.push_back({g.hex, a2});
+      else if (it->second != a2)
+        refuse(op, "self-intersecting",
+               "the sheet through " + entityName(e) + " passes " + hexName(g.hex) + " twice (along its local axes " +
+                   std::to_string(it->second) + " and " + std::to_string(a2) + ")");
+    }
+  }
+  std::sort(s.hexes.begin(), s.hexes.end());
+  return s;
+}
+
+std::unordered_map<HexId, int8_t> sheetUp(const Complex& cx, const SheetHexes& sheet) {
+  std::unordered_map<HexId, int8_t> up;
+  up.reserve(sheet.hexes.size());
+  for (HexId start : sheet.hexes) {
+    if (up.count(start)) continue;
+    up.emplace(start, int8_t(1));
+    std::vector<HexId> stack{start};
+    while (!stack.empty()) {
+      const HexId h = stack.back();
+      stack.pop_back();
+      const int a = sheet.axisOf(h);
+      for (int f : kParallelFaces[size_t(a)]) {
+        const Gluing g = cx.gluing(h, f);
+        if (g.boundary()) continue;
+        // A corner low along a: its image is low along the neighbour's axis when the senses agree.
+        const int c = kFaceCorners[size_t(f)][0];  // f is parallel to a: flipping along a stays on f
+        const int low = cornerBit(c, a) == 0 ? c : flipAxis(c, a);
+        const int image = cx.mappedCorner(h, f, low);
+        const int8_t sense = int8_t(up.at(h) * (cornerBit(image, sheet.axisOf(g.hex)) == 0 ? 1 : -1));
+        auto [it, fresh] = up.emplace(g.hex, sense);
+        if (fresh) stack.push_back(g.hex);
+        else if (it->second != sense) return {};
+      }
+    }
+  }
+  return up;
+}
+
+VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pair<HexId, int>>>& classes,
+                        const std::function<bool(HexId)>& removed) {
+  VertexMerges m;
+  for (const auto& cls : classes) {
+    VertexId keep = -1, keepAny = -1;
+    Vec3 sumB, sumAll;
+    int nB = 0;
+    for (auto [h, c] : cls) {
+      const VertexId v = cx.vertex(h, c);
+      const auto corners = cx.cornersOfVertex(h, c);
+      const bool onBoundary = cornersOnBoundary(cx, corners);
+      sumAll = sumAll + cx.position(v);
+      keepAny = keepAny < 0 ? v : std::min(keepAny, v);
+      if (onBoundary) {
+        sumB = sumB + cx.position(v);
+        ++nB;
+        keep = keep < 0 ? v : std::min(keep, v);
+      }
+      for (auto corner : corners)
+        if (!removed(corner.first)) m.renamed.push_back(corner);
+    }
+    if (keep < 0) keep = keepAny;
+    for (auto [h, c] : cls) {
+      const VertexId v = cx.vertex(h, c);
+      m.into[v] = keep;
+      if (v != keep) m.dropped.push_back(v);
+    }
+    m.placed.push_back({keep, nB ? (1.0 / nB) * sumB : (1.0 / double(cls.size())) * sumAll});
+  }
+  // Only corners whose vertex changes are renumbered.
+  m.renamed.erase(std::remove_if(m.renamed.begin(), m.renamed.end(),
+                                 [&](std::pair<HexId, int> k) { return m.target(cx.vertex(k.first, k.second)) == cx.vertex(k.first, k.second); }),
+                  m.renamed.end());
+  std::sort(m.dropped.begin(), m.dropped.end());
+  return m;
+}
+
+std::vector<HexId> renamedHexes(const VertexMerges& m) {
+  std::vector<HexId> hexes;
+  for (auto [h, c] : m.renamed) hexes.push_back(h);
+  std::sort(hexes.begin(), hexes.end());
+  hexes.erase(std::unique(hexes.begin(), hexes.end()), hexes.end());
+  return hexes;
+}
+
+void requireDistinctCorners(const Complex& cx, const VertexMerges& m, const std::string& op) {
+  for (HexId h : renamedHexes(m)) {
+    std::array<VertexId, 8> v = cx.hexVertices(h);
+    for (VertexId& x : v) x = m.target(x);
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < i; ++j)
+        if (v[size_t(i)] == v[size_t(j)])
+          refuse(op, "hex-vertices-merge",
+                 hexName(h) + " would lose a corner: its vertices " + std::to_string(cx.vertex(h, j)) + " and " +
+                     std::to_string(cx.vertex(h, i)) + " would merge into " + std::to_string(v[size_t(i)]));
+  }
+}
+
+void applyMerges(Complex& cx, const VertexMerges& m) {
+  for (auto [h, c] : m.renamed) cx.setCorner(h, c, m.target(cx.vertex(h, c)));
+  for (auto [v, p] : m.placed) cx.setPosition(v, p);
+}
+
+}  // namespace hexdual::ops
