@@ -372,7 +372,8 @@ class WasmMesh {
     return guarded("PRECONDITION", [&] {
       std::vector<OpKind> ops;
       for (const OpInfo& info : allOps())
-        if (info.candidates != CandidateSet::None && (op.empty() || op == info.name)) ops.push_back(info.kind);
+        if (info.candidates != CandidateSet::None && (op.empty() ? info.family == OpFamily::Atomic : op == info.name))
+          ops.push_back(info.kind);  // without a name: the atomic family (the sheet operations are listed by name)
       if (ops.empty()) throw Error("candidates: unknown operation '" + op + "'");
       if (!nearKind.empty()) requireNear(nearKind, hex, local);
       io::JsonWriter w;
@@ -433,6 +434,8 @@ class WasmMesh {
   // For wasm/bindings_view.cpp (same module): where the complex and its current dual live.
   double complexAddress() const { return double(uintptr_t(&cx_)); }
   double dualAddress() { return guarded("PRECONDITION", [&] { return double(uintptr_t(&dual())); }, 0.0); }
+  // For wasm/bindings_sheetops.cpp: the tracker (a preview copies it, to report the ids a step would give).
+  double trackerAddress() { return guarded("PRECONDITION", [&] { return double(uintptr_t(&tracker())); }, 0.0); }
   val positions() const { return val(typed_memory_view(rb_.positions.size(), rb_.positions.data())); }
   val normals() const { return val(typed_memory_view(rb_.normals.size(), rb_.normals.data())); }
   val indices() const { return val(typed_memory_view(rb_.indices.size(), rb_.indices.data())); }
@@ -632,5 +635,6 @@ EMSCRIPTEN_BINDINGS(hexdual) {
       .function("indices", &WasmMesh::indices)
       .function("triangleHex", &WasmMesh::triangleHex)
       .function("complexAddress", &WasmMesh::complexAddress)
-      .function("dualAddress", &WasmMesh::dualAddress);
+      .function("dualAddress", &WasmMesh::dualAddress)
+      .function("trackerAddress", &WasmMesh::trackerAddress);
 }
