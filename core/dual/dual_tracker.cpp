@@ -1,5 +1,7 @@
 #include "dual/dual_tracker.hpp"
 
+#include <unordered_map>
+
 #include "complex/huge_pages.hpp"
 
 #include <algorithm>
@@ -1376,18 +1378,24 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
   std::vector<Stretch> stretches;
   std::vector<int32_t> lengths(ids.size()), liveOld(ids.size(), 0);
   std::vector<uint8_t> contiguous(ids.size(), 0);
+  // The touched slots of each changed chord, found once (a sheet operation changes thousands of chords).
+  std::vector<std::pair<int32_t, int32_t>> byOld;  // (old chord, index into ts)
+  for (size_t i = 0; i < ts.size(); ++i)
+    if (inIds(ts[i].old)) byOld.push_back({ts[i].old, int32_t(i)});
+  std::sort(byOld.begin(), byOld.end());
   for (size_t k = 0; k < ids.size(); ++k) {
     const int32_t id = ids[k], len = chordLength(id);
     const bool closed = dual_.chords[size_t(id)].closed;
     lengths[k] = len;
     std::vector<int32_t> at;
-    for (const Touched& t : ts)
-      if (t.old == id) {
-        const int32_t p = placeInChord(id, t.slot);
-        if (p < 0) return false;
-        at.push_back(p);
-        liveOld[k] += t.live;
-      }
+    for (auto it = std::lower_bound(byOld.begin(), byOld.end(), std::pair<int32_t, int32_t>{id, -1});
+         it != byOld.end() && it->first == id; ++it) {
+      const Touched& t = ts[size_t(it->second)];
+      const int32_t p = placeInChord(id, t.slot);
+      if (p < 0) return false;
+      at.push_back(p);
+      liveOld[k] += t.live;
+    }
     if (at.empty()) return false;
     std::sort(at.begin(), at.end());
     contiguous[k] =
@@ -1422,11 +1430,15 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
     int32_t from, to;            // stretch ends (2 * stretch + side), -1 for the boundary
   };
   std::vector<Walk> walks;
+  // The first stretch end at slot s leaving through `face` (hashed: one lookup per walk).
+  std::unordered_map<int64_t, int32_t> endIndex;
+  auto endKey = [](Slot s, int face) { return (int64_t(s.hex) * 3 + s.axis) * 8 + face; };
+  for (size_t r = 0; r < stretches.size(); ++r)
+    for (int side = 0; side < 2; ++side)
+      if (stretches[r].face[side] >= 0) endIndex.emplace(endKey(stretches[r].end[side], stretches[r].face[side]), int32_t(2 * r + size_t(side)));
   auto endAt = [&](Slot s, int face) -> int32_t {
-    for (size_t r = 0; r < stretches.size(); ++r)
-      for (int side = 0; side < 2; ++side)
-        if (stretches[r].face[side] == face && stretches[r].end[side] == s) return int32_t(2 * r + size_t(side));
-    return -1;
+    auto it = endIndex.find(endKey(s, face));
+    return it == endIndex.end() ? -1 : it->second;
   };
   for (size_t r = 0; r < stretches.size(); ++r)
     for (int side = 0; side < 2; ++side) {
