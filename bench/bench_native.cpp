@@ -19,6 +19,11 @@
 #include "layout/sheet_diagram.hpp"
 #include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
+#include "ops/sheet_ops.hpp"
+#include "complex/canonical.hpp"
+#include "io/io.hpp"
+#include <map>
+#include <optional>
 
 using namespace hexdual;
 // CPU time of this process: the machine is shared, so wall time measures the neighbours.
@@ -264,7 +269,68 @@ static int benchSheetOps(int n, int reps) {
   return 0;
 }
 
+// Every sheet of a mesh file: extracted (or refused, by rule), checked (validate, H - |sheet|, one
+// sheet fewer, the tracked dual against a fresh extraction), undone (exact state and canonical
+// hash), then extracted again and inserted back with its inverse (isomorphic around a hex that
+// stayed). One JSON line per mesh: counts per rule, inverses, and the CPU time of the steps.
+static int benchSheetsDevset(const char* path) {
+  Complex cx = io::readFile(path);
+  DualTracker tracker(cx);
+  const uint64_t hash = canonicalHash(cx);
+  const Dual d = extractDual(cx);
+  std::map<std::string, int> tally;
+  int inverses = 0, isomorphicBack = 0, checksFailed = 0;
+  double opMs = 0, dualMs = 0, maxOpMs = 0;
+  auto live = [](const Dual& x) { return std::count_if(x.sheets.begin(), x.sheets.end(), [](const Sheet& s) { return s.alive; }); };
+  const auto sheets0 = live(tracker.dual());
+  for (const Sheet& s : d.sheets) {
+    const OpStep step = makeStep(OpKind::SheetExtract, EdgeRef{s.slots[0].hex, 4 * s.slots[0].axis});
+    std::string why;
+    auto t0 = Clock::now();
+    std::optional<OpResult> r = tryApplyStep(cx, step, &why);
+    auto t1 = Clock::now();
+    if (!r) {
+      ++tally[ruleOf(why)];
+      continue;
+    }
+    ++tally["applied"];
+    tracker.update(cx, r->edits, keepsSheetTopology(*r));
+    auto t2 = Clock::now();
+    opMs += ms(t1 - t0), dualMs += ms(t2 - t1), maxOpMs = std::max(maxOpMs, ms(t1 - t0));
+    try {
+      cx.validate();
+      compareDuals(cx, tracker.dual(), extractDual(cx));
+      if (r->dH != -int64_t(s.slots.size()) || live(tracker.dual()) != sheets0 - 1) throw Error("counts");
+      if (r->inverse) {
+        Complex back = cx, original = cx;
+        applyStep(back, *r->inverse);
+        original.undo(r->edits);
+        ++inverses;
+        for (HexId h : back.hexes())
+          if (original.isHex(h)) {  // a hex the extraction left in place anchors the isomorphism
+            isomorphicBack += isomorphicAt(back, h, original, h);
+            break;
+          }
+      }
+    } catch (const Error&) {
+      ++checksFailed;
+    }
+    cx.undo(r->edits);
+    tracker.update(cx, r->edits, true);
+    tracker.releaseRetiredTail();
+    checksFailed += canonicalHash(cx) != hash;
+  }
+  std::printf("{\"bench\":\"sheetsDevset\",\"file\":\"%s\",\"hexes\":%lld,\"sheets\":%zu,\"rules\":{", path,
+              (long long)cx.numHexes(), d.sheets.size());
+  bool first = true;
+  for (auto& [k, v] : tally) std::printf("%s\"%s\":%d", first ? "" : ",", k.c_str(), v), first = false;
+  std::printf("},\"inverses\":%d,\"isomorphicBack\":%d,\"checksFailed\":%d,\"opMsTotal\":%.2f,\"opMsMax\":%.2f,\"dualMsTotal\":%.2f}\n",
+              inverses, isomorphicBack, checksFailed, opMs, maxOpMs, dualMs);
+  return checksFailed ? 1 : 0;
+}
+
 int main(int argc, char** argv) {
+  if (argc >= 3 && !std::strcmp(argv[1], "sheets-devset")) return benchSheetsDevset(argv[2]);
   if (argc >= 3 && !std::strcmp(argv[1], "sheetops")) return benchSheetOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "layout")) return benchLayout(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "build")) return benchBuild(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
