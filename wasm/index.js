@@ -296,7 +296,7 @@ export class Mesh {
     const tracker = raw.trackerAddress();
     if (!tracker) check(null);
     const out = JSON.parse(module().sheetopsPreview(raw.complexAddress(), tracker, step));
-    if (out.error !== undefined) throw new HexdualError(out.code, out.error);
+    if (out.code !== undefined) throw new HexdualError(out.code, out.error);  // the binding's failure, not a refusal
     const base = { applies: out.applies, family: out.family, step: out.text };
     if (!out.applies) return { ...base, rule: out.rule, error: out.error };
     return { ...base, hexesRemoved: out.hexesRemoved, hexesCreated: out.hexesCreated, report: toReport({ flip: null, report: out.report }) };
@@ -314,7 +314,7 @@ export class Mesh {
     const dual = raw.dualAddress();
     if (!dual) check(null);
     const out = JSON.parse(module().sheetopsSelect(raw.complexAddress(), dual, hex, kind, local));
-    if (out.error !== undefined) throw new HexdualError(out.code, out.error);
+    if (out.code !== undefined) throw new HexdualError(out.code, out.error);  // the binding's failure, not a refusal
     return out;
   }
   /** Undoes the last applied step exactly (ids included); returns that step's text. */

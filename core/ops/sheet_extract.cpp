@@ -126,30 +126,48 @@ std::vector<std::pair<QuadSide, QuadSide>> gluesOf(const Complex& cx, const std:
   return out;
 }
 
-// The inverse: the insertion along the glued quads when every run is one hex (a chord crosses the
-// sheet once at a time) and the sheet is two-sided; a pillow for a sphere of 2 hexes folded on
-// itself (a minimal pillow); otherwise none.
-void reportInverse(const Complex& cx, OpResult& res, const std::vector<Run>& runs, const SheetHexes& sheet, bool twoSided) {
+// The insertion that gives the sheet back: along the glued quads, every one named by its side
+// on the sheet's "up" side (or every one by its "down" side), so the side named moves onto the new
+// vertices and the inserted layer is the sheet again. Each collapsed edge's two ends had corners
+// outside the sheet that stay connected on their own side (the link of a vertex minus the star of
+// one edge), so the insertion splits every glued vertex back in two; what it cannot do is move a
+// boundary quad's outer side: so every run that ends on the boundary must end on the same side.
+// None when a chord crosses the sheet twice in a row (it folds back on itself), except for a
+// sphere of 2 hexes (a minimal pillow: its inverse is a pillow), or when the sheet is one-sided.
+void reportInverse(const Complex& cx, OpResult& res, const std::vector<Run>& runs, const SheetHexes& sheet) {
   const Run* fold = nullptr;
   for (const Run& r : runs)
     if (r.hexes.size() > 1 && !fold) fold = &r;
-  if (!fold && twoSided) {
-    OpStep inv{OpKind::SheetInsert, {}, 0};
-    for (const Run& r : runs) {
-      const QuadSide s = cx.isBoundary(r.before) ? r.after : r.before;
-      const Gluing g = cx.gluing(s);
-      inv.args.push_back(OpArg::of(QuadSide{g.hex, g.face}));  // the outside side, which survives
-    }
-    res.inverse = std::move(inv);
-  } else if (fold && runs.size() == 1 && sheet.hexes.size() == 2 && !cx.isBoundary(fold->before) && !cx.isBoundary(fold->after)) {
-    const Gluing g = cx.gluing(fold->before);
-    res.inverse = makeStep(OpKind::Pillow, QuadSide{g.hex, g.face});
-  } else if (fold) {
-    res.noInverse = "the sheet folds back on itself: a chord crosses it twice in a row (hexes " + hexList(fold->hexes) +
-                    "), which no sheet insertion gives back; use undo";
-  } else {
-    res.noInverse = "the sheet is one-sided: no sheet insertion gives it back; use undo";
+  auto outside = [&](QuadSide s) { return QuadSide{cx.gluing(s).hex, cx.gluing(s).face}; };
+  if (fold) {
+    if (runs.size() == 1 && sheet.hexes.size() == 2 && !cx.isBoundary(fold->before) && !cx.isBoundary(fold->after))
+      res.inverse = makeStep(OpKind::Pillow, outside(fold->before));
+    else
+      res.noInverse = "the sheet folds back on itself: a chord crosses it twice in a row (hexes " + hexList(fold->hexes) +
+                      "), which no sheet insertion gives back; use undo";
+    return;
   }
+  const auto up = sheetUp(cx, sheet);
+  if (up.empty()) {
+    res.noInverse = "the sheet is one-sided: no sheet insertion gives it back; use undo";
+    return;
+  }
+  // Per run, its end on the up side and on the down side (a run of one hex: its two faces across).
+  auto upEnd = [&](const Run& r) { return up.at(r.hexes[0]) > 0 ? r.after : r.before; };
+  auto downEnd = [&](const Run& r) { return up.at(r.hexes[0]) > 0 ? r.before : r.after; };
+  bool boundaryUp = false, boundaryDown = false;
+  for (const Run& r : runs) {
+    boundaryUp = boundaryUp || cx.isBoundary(upEnd(r));
+    boundaryDown = boundaryDown || cx.isBoundary(downEnd(r));
+  }
+  if (boundaryUp && boundaryDown) {
+    res.noInverse = "the sheet meets the boundary on both of its sides: no sheet insertion gives it back; use undo";
+    return;
+  }
+  OpStep inv{OpKind::SheetInsert, {}, 0};
+  for (const Run& r : runs)  // the side that moves: the up side, unless the boundary is there
+    inv.args.push_back(OpArg::of(outside(boundaryDown ? upEnd(r) : downEnd(r))));
+  res.inverse = std::move(inv);
 }
 
 }  // namespace
@@ -163,11 +181,10 @@ OpResult sheetExtract(Complex& cx, EdgeRef e) {
   const VertexMerges m = planMerges(cx, collapsedEdges(cx, sheet, op), [&](HexId h) { return sheet.axisOf(h) >= 0; });
   requireDistinctCorners(cx, m, op);
   const auto glues = gluesOf(cx, runs, m, op);
-  const bool twoSided = !sheetUp(cx, sheet).empty();
   OpResult res;
   res.op = kind;
   res.removedHexes = sheet.hexes;
-  reportInverse(cx, res, runs, sheet, twoSided);  // names quads by their outside sides, which survive
+  reportInverse(cx, res, runs, sheet);  // names quads by their outside sides, which survive
 
   Transaction tx(cx);
   for (HexId h : sheet.hexes)
@@ -183,14 +200,6 @@ OpResult sheetExtract(Complex& cx, EdgeRef e) {
     touched.push_back(N.hex);
   }
   commitOrRefuse(tx, res, touched, op);
-  if (res.inverse && res.inverse->op == OpKind::SheetInsert) {  // the glued quads may not take an insertion
-    std::vector<QuadSide> quads;
-    for (const OpArg& a : res.inverse->args) quads.push_back(a.quad());
-    if (std::string why = sheetInsertProblem(cx, quads); !why.empty()) {
-      res.inverse.reset();
-      res.noInverse = "the glued quads do not take a sheet insertion (" + why + "); use undo";
-    }
-  }
   res.removedVertices = m.dropped;
   for (auto [v, p] : m.placed)
     if (!cx.isVertex(v)) res.removedVertices.push_back(v);

@@ -327,17 +327,6 @@ OpResult insertAlong(Complex& cx, const std::vector<QuadSide>& sides, OpKind kin
 
 }  // namespace
 
-namespace ops {
-std::string sheetInsertProblem(const Complex& cx, const std::vector<QuadSide>& quads) {
-  const std::string op = opName(OpKind::SheetInsert);
-  try {
-    planInsertion(cx, quads, op);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return {};
-}
-}  // namespace ops
 
 OpResult sheetInsert(Complex& cx, const std::vector<QuadSide>& quads) { return insertAlong(cx, quads, OpKind::SheetInsert); }
 

@@ -64,10 +64,6 @@ void requireDistinctCorners(const Complex& cx, const VertexMerges& m, const std:
 // Renumbers the corners and places the kept vertices (call inside the transaction).
 void applyMerges(Complex& cx, const VertexMerges& m);
 
-// Why sheetInsert would refuse these quads, read without editing (its rules up to the final
-// validity check), or "" when it would go ahead: extraction reports its inverse only then.
-std::string sheetInsertProblem(const Complex& cx, const std::vector<QuadSide>& quads);
-
 // The hexes with a renumbered corner (ascending, once each).
 std::vector<HexId> renamedHexes(const VertexMerges& m);
 

@@ -25,7 +25,7 @@ test('sheet-extract: the report (ids, delta, one sheet fewer, chords shorter), e
   assert.equal(r.changedChords.removed.length, 6);  // the chords lying in the sheet
   assert.equal(r.inverse, 'sheet-insert h0f1 h3f1 h6f1 h9f1 h12f1 h15f1 h18f1 h21f1 h24f1');
   assert.equal(m.dualSizes().sheets, sheets - 1);
-  assert.equal(m.counts.boundaryQuads, 54 - 6);
+  assert.equal(m.counts.boundaryQuads, 54 - 12);  // the layer's 12 boundary quads are gone: a 2x3x3 grid
   m.validate();
   assert.equal(m.logUrl, '1.x13e0');
   assert.equal(m.log, 'v1;sheet-extract h13e0');

@@ -1,7 +1,7 @@
 // Compiled by `tsc --noEmit` only (lib es2022 and esnext): checks that wasm/index.d.ts describes the API as used.
 import {
   init, Mesh, HexdualError, heapBytes, diagramToSVG, flips,
-  type Info, type RenderBuffers, type SheetTopology, type StepReport, type SheetDiagram, type ErrorCode,
+  type Info, type RenderBuffers, type SheetTopology, type StepReport, type SheetDiagram, type ErrorCode, type Preview, type Selection,
 } from '../../wasm/index.js';
 
 async function example(): Promise<number> {
@@ -25,6 +25,14 @@ async function example(): Promise<number> {
   const centres: Float64Array = m.hexCenters();
   const same: boolean = Mesh.isomorphic(m, Mesh.load(bytes, 'x.hxd'));
   const hash: string = m.canonicalHash();
+  const p: Preview = m.preview('sheet-extract h13e0');
+  const previewed: number = p.applies ? p.report.delta.H + p.hexesRemoved : (p.rule ?? p.error).length;
+  const sel: Selection = m.select({ hex: 13, edge: 0 });
+  const chordSel: Selection = m.select({ hex: 13, face: 1 });
+  const sheetOp: StepReport['op'] = 'sheet-dice';
+  const sheetCands: string[] = m.candidates('column-collapse');
+  // @ts-expect-error: sheet-insert takes a surface you choose: not listed by candidates()
+  m.candidates('sheet-insert');
   let code: ErrorCode | undefined;
   try {
     m.validate();
@@ -40,6 +48,7 @@ async function example(): Promise<number> {
   new Mesh(null);
   return info.hexes + rb.indices.length + hexes.length + bytes.length + heapBytes() + (topo === 'disk' ? 1 : 0) +
     (inverse ?? '').length + reports.length + undone.length + redone.delta.H + log.length + cands.length + flipped.length +
-    svg.length + centres.length + (same ? 1 : 0) + hash.length + (code ? 1 : 0) + flips().length;
+    svg.length + centres.length + (same ? 1 : 0) + hash.length + (code ? 1 : 0) + flips().length + previewed +
+    sel.hexes.length + chordSel.steps.length + sheetOp.length + sheetCands.length;
 }
 void example;
