@@ -1,6 +1,7 @@
 #include "dual/dual_tracker.hpp"
 
 #include <unordered_map>
+#include <unordered_set>
 
 #include "complex/huge_pages.hpp"
 
@@ -1615,15 +1616,16 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
   auto oldOf = [&](const Item& it) {
     return it.stretch >= 0 ? stretches[size_t(it.stretch)].chord : ts[size_t(it.slot)].old;
   };
-  std::vector<int32_t> compId(comps.size(), -1), taken;
+  std::vector<int32_t> compId(comps.size(), -1);
+  std::unordered_set<int32_t> taken;  // hashed: a sheet operation re-ids thousands of chords
   int32_t fresh = int32_t(dual_.chords.size());
   for (size_t ci : order) {
     int32_t best = -1;
     for (const Item& it : comps[ci].items) {
       const int32_t o = oldOf(it);
-      if (o >= 0 && (best < 0 || o < best) && std::find(taken.begin(), taken.end(), o) == taken.end()) best = o;
+      if (o >= 0 && (best < 0 || o < best) && !taken.count(o)) best = o;
     }
-    if (best >= 0) taken.push_back(best);
+    if (best >= 0) taken.insert(best);
     compId[ci] = best >= 0 ? best : fresh++;
   }
   // ---- self-intersection: a touched hex with two slots in one new chord; untouched hexes only
@@ -1729,7 +1731,7 @@ bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touc
   std::sort(splicedIds.begin(), splicedIds.end());
   change.chordsChanged.insert(change.chordsChanged.begin(), splicedIds.begin(), splicedIds.end());
   for (int32_t id : ids)
-    if (std::find(taken.begin(), taken.end(), id) == taken.end()) {
+    if (!taken.count(id)) {
       Chord& ch = dual_.chords[size_t(id)];
       ch.alive = false;
       ch.slots.clear();

@@ -128,13 +128,14 @@ std::vector<std::pair<QuadSide, QuadSide>> gluesOf(const Complex& cx, const std:
 
 // The insertion that gives the sheet back: along the glued quads, every one named by its side
 // on the sheet's "up" side (or every one by its "down" side), so the side named moves onto the new
-// vertices and the inserted layer is the sheet again. Each collapsed edge's two ends had corners
-// outside the sheet that stay connected on their own side (the link of a vertex minus the star of
-// one edge), so the insertion splits every glued vertex back in two; what it cannot do is move a
-// boundary quad's outer side: so every run that ends on the boundary must end on the same side.
+// vertices and the inserted layer is the sheet again. It splits every glued vertex back in two
+// when each end of the collapsed edge had its corners off the sheet connected across faces
+// (usually: the link of a vertex minus the star of one edge; not where the link is pinched there),
+// and it cannot move a boundary quad's outer side: every run ending on the boundary must end on
+// the same side of the sheet.
 // None when a chord crosses the sheet twice in a row (it folds back on itself), except for a
 // sphere of 2 hexes (a minimal pillow: its inverse is a pillow), or when the sheet is one-sided.
-void reportInverse(const Complex& cx, OpResult& res, const std::vector<Run>& runs, const SheetHexes& sheet) {
+void reportInverse(const Complex& cx, OpResult& res, const std::vector<Run>& runs, const SheetHexes& sheet, VertexId split) {
   const Run* fold = nullptr;
   for (const Run& r : runs)
     if (r.hexes.size() > 1 && !fold) fold = &r;
@@ -145,6 +146,11 @@ void reportInverse(const Complex& cx, OpResult& res, const std::vector<Run>& run
     else
       res.noInverse = "the sheet folds back on itself: a chord crosses it twice in a row (hexes " + hexList(fold->hexes) +
                       "), which no sheet insertion gives back; use undo";
+    return;
+  }
+  if (split >= 0) {
+    res.noInverse = "around vertex " + std::to_string(split) +
+                    " the hexes off the sheet touch only at the vertex: no sheet insertion gives it back; use undo";
     return;
   }
   const auto up = sheetUp(cx, sheet);
@@ -184,7 +190,7 @@ OpResult sheetExtract(Complex& cx, EdgeRef e) {
   OpResult res;
   res.op = kind;
   res.removedHexes = sheet.hexes;
-  reportInverse(cx, res, runs, sheet);  // names quads by their outside sides, which survive
+  reportInverse(cx, res, runs, sheet, m.split);  // names quads by their outside sides, which survive
 
   Transaction tx(cx);
   for (HexId h : sheet.hexes)

@@ -104,6 +104,28 @@ std::unordered_map<HexId, int8_t> sheetUp(const Complex& cx, const SheetHexes& s
   return up;
 }
 
+namespace {
+// Whether these corners of one vertex are connected across the faces between them.
+bool faceConnected(const Complex& cx, const std::vector<std::pair<HexId, int>>& corners) {
+  if (corners.empty()) return true;
+  std::vector<uint8_t> seen(corners.size(), 0);
+  std::vector<size_t> stack{0};
+  seen[0] = 1;
+  size_t reached = 1;
+  while (!stack.empty()) {
+    auto [h, c] = corners[stack.back()];
+    stack.pop_back();
+    for (int f : facesOfCorner(c)) {
+      if (cx.isBoundary({h, f})) continue;
+      const std::pair<HexId, int> n{cx.gluing(h, f).hex, cx.mappedCorner(h, f, c)};
+      const size_t j = size_t(std::find(corners.begin(), corners.end(), n) - corners.begin());
+      if (j < corners.size() && !seen[j]) seen[j] = 1, ++reached, stack.push_back(j);
+    }
+  }
+  return reached == corners.size();
+}
+}  // namespace
+
 VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pair<HexId, int>>>& classes,
                         const std::function<bool(HexId)>& removed) {
   VertexMerges m;
@@ -122,8 +144,11 @@ VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pa
         ++nB;
         keep = keep < 0 ? v : std::min(keep, v);
       }
+      std::vector<std::pair<HexId, int>> outside;
       for (auto corner : corners)
-        if (!removed(corner.first)) m.renamed.push_back(corner);
+        if (!removed(corner.first)) outside.push_back(corner);
+      if (m.split < 0 && !faceConnected(cx, outside)) m.split = v;
+      m.renamed.insert(m.renamed.end(), outside.begin(), outside.end());
     }
     if (keep < 0) keep = keepAny;
     for (auto [h, c] : cls) {

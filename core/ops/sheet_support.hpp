@@ -51,6 +51,7 @@ struct VertexMerges {
   std::vector<std::pair<VertexId, Vec3>> placed;     // kept vertex, its place after the merge
   std::vector<std::pair<HexId, int>> renamed;        // corners to renumber (outside the removed hexes)
   std::vector<VertexId> dropped;                     // vertices merged away, ascending
+  VertexId split = -1;  // a merged vertex whose corners outside the removed hexes fall apart (face-connected pieces)
   VertexId target(VertexId v) const {
     auto it = into.find(v);
     return it == into.end() ? v : it->second;
