@@ -105,11 +105,28 @@ std::unordered_map<HexId, int8_t> sheetUp(const Complex& cx, const SheetHexes& s
 }
 
 namespace {
+using Corners = std::vector<std::pair<HexId, int>>;
+
+// The corners of the vertex at corner c of hex h, into `out` (its storage reused: no allocation
+// per vertex once it has grown), as Complex::cornersOfVertex lists them.
+void starInto(const Complex& cx, HexId h, int c, Corners& out) {
+  out.clear();
+  out.push_back({h, c});
+  for (size_t i = 0; i < out.size(); ++i) {
+    auto [hh, cc] = out[i];
+    for (int f : facesOfCorner(cc)) {
+      if (cx.isBoundary({hh, f})) continue;
+      const std::pair<HexId, int> n{cx.gluing(hh, f).hex, cx.mappedCorner(hh, f, cc)};
+      if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+    }
+  }
+}
+
 // Whether these corners of one vertex are connected across the faces between them.
-bool faceConnected(const Complex& cx, const std::vector<std::pair<HexId, int>>& corners) {
+bool faceConnected(const Complex& cx, const Corners& corners, std::vector<uint8_t>& seen, std::vector<size_t>& stack) {
   if (corners.empty()) return true;
-  std::vector<uint8_t> seen(corners.size(), 0);
-  std::vector<size_t> stack{0};
+  seen.assign(corners.size(), 0);
+  stack.assign(1, 0);
   seen[0] = 1;
   size_t reached = 1;
   while (!stack.empty()) {
@@ -129,14 +146,21 @@ bool faceConnected(const Complex& cx, const std::vector<std::pair<HexId, int>>& 
 VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pair<HexId, int>>>& classes,
                         const std::function<bool(HexId)>& removed) {
   VertexMerges m;
+  m.into.reserve(2 * classes.size());
+  Corners star;
+  std::vector<Corners> outside;  // per vertex of the class: its corners off the removed hexes
+  std::vector<uint8_t> seen;
+  std::vector<size_t> stack;
   for (const auto& cls : classes) {
     VertexId keep = -1, keepAny = -1;
     Vec3 sumB, sumAll;
     int nB = 0;
-    for (auto [h, c] : cls) {
+    outside.resize(std::max(outside.size(), cls.size()));
+    for (size_t k = 0; k < cls.size(); ++k) {
+      const auto [h, c] = cls[k];
       const VertexId v = cx.vertex(h, c);
-      const auto corners = cx.cornersOfVertex(h, c);
-      const bool onBoundary = cornersOnBoundary(cx, corners);
+      starInto(cx, h, c, star);
+      const bool onBoundary = cornersOnBoundary(cx, star);
       sumAll = sumAll + cx.position(v);
       keepAny = keepAny < 0 ? v : std::min(keepAny, v);
       if (onBoundary) {
@@ -144,24 +168,21 @@ VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pa
         ++nB;
         keep = keep < 0 ? v : std::min(keep, v);
       }
-      std::vector<std::pair<HexId, int>> outside;
-      for (auto corner : corners)
-        if (!removed(corner.first)) outside.push_back(corner);
-      if (m.split < 0 && !faceConnected(cx, outside)) m.split = v;
-      m.renamed.insert(m.renamed.end(), outside.begin(), outside.end());
+      outside[k].clear();
+      for (auto corner : star)
+        if (!removed(corner.first)) outside[k].push_back(corner);
+      if (m.split < 0 && !faceConnected(cx, outside[k], seen, stack)) m.split = v;
     }
     if (keep < 0) keep = keepAny;
-    for (auto [h, c] : cls) {
-      const VertexId v = cx.vertex(h, c);
+    for (size_t k = 0; k < cls.size(); ++k) {
+      const VertexId v = cx.vertex(cls[k].first, cls[k].second);
       m.into[v] = keep;
-      if (v != keep) m.dropped.push_back(v);
+      if (v == keep) continue;
+      m.dropped.push_back(v);
+      m.renamed.insert(m.renamed.end(), outside[k].begin(), outside[k].end());  // only corners whose vertex changes
     }
     m.placed.push_back({keep, nB ? (1.0 / nB) * sumB : (1.0 / double(cls.size())) * sumAll});
   }
-  // Only corners whose vertex changes are renumbered.
-  m.renamed.erase(std::remove_if(m.renamed.begin(), m.renamed.end(),
-                                 [&](std::pair<HexId, int> k) { return m.target(cx.vertex(k.first, k.second)) == cx.vertex(k.first, k.second); }),
-                  m.renamed.end());
   std::sort(m.dropped.begin(), m.dropped.end());
   return m;
 }
