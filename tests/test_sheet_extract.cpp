@@ -4,6 +4,7 @@
 #include "sheet_helpers.hpp"
 
 #include "complex/builders.hpp"
+#include "ops/candidates.hpp"
 
 using namespace hexdual;
 using namespace hexdual::test;
@@ -136,6 +137,13 @@ TEST_CASE("sheet-extract: refusals name their rule and leave the complex unchang
   CHECK(refusal(collapsed, "sheet-extract h1e0") ==
         "sheet-extract: non-manifold-result: the result would not be a valid complex (validate: vertex 5 is non-manifold: "
         "its link is not connected)");
+  // After a face collapse has merged a centre vertex into the boundary, extracting the x=0 layer
+  // would merge it with another boundary vertex: a valid complex, but with a tunnel.
+  Complex tunnel = grid;
+  applyLog(tunnel, "v1;hexpush h20f3;facecollapse h13e11 h14f3 h16f2");
+  CHECK(refusal(tunnel, "sheet-extract h0e0") ==
+        "sheet-extract: topology-change: the result would have Euler characteristic V-E+F-H -1 from the mesh's: merging "
+        "these vertices would open a handle (a tunnel)");
   // An O-grid of 3 around, one sheet extracted: the other two hexes share both ends of every edge
   // across the next sheet, so its collapse would merge two vertices of the hex that remains.
   Complex ring = makeRing(3, 1, 1);
@@ -180,6 +188,32 @@ TEST_CASE("sheet-extract: random runs on grids and an O-grid (fixed seeds)") {
   auto b = randomSheetRuns(makeRing(6, 2, 2), 20261303, 30, OpKind::SheetExtract);
   CHECK(a["applied"] > 20);
   CHECK(b["applied"] > 10);
+}
+
+TEST_CASE("sheet-extract: every sheet after random atomic steps (collapses, pushes, pillows; fixed seeds)") {
+  // The steps that make sheets touch themselves, fold, pinch and meet the boundary on both sides.
+  const OpKind kinds[] = {OpKind::Pillow, OpKind::HexPush, OpKind::ChordPush, OpKind::FaceCollapse, OpKind::RingCollapse};
+  std::map<std::string, int> tally;
+  const uint32_t first = 20261206;
+  for (uint32_t seed = first; seed < first + 24; ++seed) {
+    CAPTURE(seed);
+    std::mt19937 rng(seed);
+    Complex cx = seed % 3 ? makeGrid(3, 3, 3) : makeRing(6, 2, 2);
+    for (int k = 0; k < 3; ++k) {
+      const auto c = candidates(cx, kinds[rng() % 5]);
+      if (!c.empty()) applyStep(cx, c[rng() % c.size()]);
+    }
+    DualTracker tracker(cx);
+    for (const Sheet& s : extractDual(cx).sheets) {
+      Checked c = checkSheetStep(cx, tracker, makeStep(OpKind::SheetExtract, EdgeRef{s.slots[0].hex, 4 * s.slots[0].axis}), true);
+      ++tally[c.applied ? (c.report.result.inverse ? "applied, inverse" : "applied, no inverse") : c.rule];
+    }
+  }
+  std::string line;
+  for (auto& [k, v] : tally) line += " " + k + "=" + std::to_string(v);
+  MESSAGE("seeds " << first << ".." << first + 23 << ":" << line);
+  CHECK(tally["applied, inverse"] > 100);
+  CHECK(tally["self-touching"] > 0);
 }
 
 TEST_CASE("sheet-extract: every sheet of every development mesh (applied or refused by rule, undone exactly)") {

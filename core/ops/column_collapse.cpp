@@ -151,6 +151,7 @@ OpResult columnCollapse(Complex& cx, EdgeRef e) {
   requireDistinctCorners(cx, m, op);
   const auto glues = sideGlues(cx, column);
 
+  const EulerBefore before{cx.numVertices(), edgesAt(cx, m.members), cx.numQuads(), cx.numHexes()};
   Transaction tx(cx);
   for (HexId h : hexes)
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);
@@ -169,6 +170,7 @@ OpResult columnCollapse(Complex& cx, EdgeRef e) {
   res.removedHexes = hexes;
   res.noInverse = "a column collapse has no inverse step in the operation log; use undo";
   commitOrRefuse(tx, res, touched, op);
+  keepTopologyOrUndo(cx, before, edgesAt(cx, m.anchors), res, op);
   res.removedVertices = m.dropped;
   for (auto [v, p] : m.placed)
     if (!cx.isVertex(v)) res.removedVertices.push_back(v);

@@ -192,6 +192,7 @@ OpResult sheetExtract(Complex& cx, EdgeRef e) {
   res.removedHexes = sheet.hexes;
   reportInverse(cx, res, runs, sheet, m.split);  // names quads by their outside sides, which survive
 
+  const EulerBefore before{cx.numVertices(), edgesAt(cx, m.members), cx.numQuads(), cx.numHexes()};
   Transaction tx(cx);
   for (HexId h : sheet.hexes)
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);
@@ -206,6 +207,7 @@ OpResult sheetExtract(Complex& cx, EdgeRef e) {
     touched.push_back(N.hex);
   }
   commitOrRefuse(tx, res, touched, op);
+  keepTopologyOrUndo(cx, before, edgesAt(cx, m.anchors), res, op);
   res.removedVertices = m.dropped;
   for (auto [v, p] : m.placed)
     if (!cx.isVertex(v)) res.removedVertices.push_back(v);

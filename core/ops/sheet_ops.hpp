@@ -21,7 +21,8 @@ namespace hexdual {
 // vertex when only one end is on the boundary). Refused for a sheet that passes a hex twice
 // (self-intersecting), touches itself at a vertex (self-touching), is crossed by a chord that
 // never leaves it (no-sides), or whose collapse would merge two vertices of a remaining hex
-// (hex-vertices-merge) or leave an invalid complex (invalid-result). Inverse: the sheet
+// (hex-vertices-merge), change the mesh's topology (topology-change) or leave an invalid complex
+// (non-manifold-result, invalid-result). Inverse: the sheet
 // insertion along the glued quads (a pillow for a sheet of 2 hexes folded on itself).
 OpResult sheetExtract(Complex& cx, EdgeRef e);
 

@@ -174,6 +174,11 @@ VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pa
       if (m.split < 0 && !faceConnected(cx, outside[k], seen, stack)) m.split = v;
     }
     if (keep < 0) keep = keepAny;
+    std::pair<HexId, int> anchor{-1, 0};
+    for (size_t k = 0; k < cls.size() && anchor.first < 0; ++k)
+      if (!outside[k].empty()) anchor = outside[k][0];
+    if (anchor.first >= 0) m.anchors.push_back(anchor);
+    m.members.insert(m.members.end(), cls.begin(), cls.end());
     for (size_t k = 0; k < cls.size(); ++k) {
       const VertexId v = cx.vertex(cls[k].first, cls[k].second);
       m.into[v] = keep;
@@ -185,6 +190,40 @@ VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pa
   }
   std::sort(m.dropped.begin(), m.dropped.end());
   return m;
+}
+
+int64_t edgesAt(const Complex& cx, const std::vector<std::pair<HexId, int>>& vertices) {
+  std::unordered_map<int64_t, bool> seen;  // every incidence of every edge met, by hex * 12 + local edge
+  Corners star;
+  int64_t edges = 0;
+  const size_t limit = size_t(12) * size_t(cx.numHexes()) + 1;
+  for (auto [h, c] : vertices) {
+    starInto(cx, h, c, star);
+    for (auto [hh, cc] : star)
+      for (int e : edgesOfCorner(cc)) {
+        if (seen.count(int64_t(hh) * 12 + e)) continue;
+        ++edges;  // a new edge: mark all its incidences (round its cycle, or both ways along its fan)
+        const auto fs = facesOfEdge(e);
+        for (int dir = 0; dir < 2; ++dir) {
+          EdgeRef cur{hh, e};
+          int exit = fs[size_t(dir)];
+          seen[int64_t(hh) * 12 + e] = true;
+          for (size_t n = 0; n < limit && cx.stepAroundEdge(cur, exit) && !seen.count(int64_t(cur.hex) * 12 + cur.edge); ++n)
+            seen[int64_t(cur.hex) * 12 + cur.edge] = true;
+        }
+      }
+  }
+  return edges;
+}
+
+void keepTopologyOrUndo(Complex& cx, const EulerBefore& before, int64_t edgesAfter, const OpResult& r, const std::string& op) {
+  const int64_t dChi = (cx.numVertices() - before.vertices) - (edgesAfter - before.edgesAround) +
+                       (cx.numQuads() - before.quads) - (cx.numHexes() - before.hexes);
+  if (dChi == 0) return;
+  cx.undo(r.edits);  // exact: the complex as before the operation, revision included
+  refuse(op, "topology-change",
+         "the result would have Euler characteristic V-E+F-H " + std::string(dChi > 0 ? "+" : "") + std::to_string(dChi) +
+             " from the mesh's: merging these vertices would " + (dChi < 0 ? "open a handle (a tunnel)" : "close a tunnel or split the mesh"));
 }
 
 std::vector<HexId> renamedHexes(const VertexMerges& m) {

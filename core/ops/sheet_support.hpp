@@ -52,6 +52,8 @@ struct VertexMerges {
   std::vector<std::pair<HexId, int>> renamed;        // corners to renumber (outside the removed hexes)
   std::vector<VertexId> dropped;                     // vertices merged away, ascending
   VertexId split = -1;  // a merged vertex whose corners outside the removed hexes fall apart (face-connected pieces)
+  std::vector<std::pair<HexId, int>> anchors;  // per class: a corner off the removed hexes (it holds the kept vertex after)
+  std::vector<std::pair<HexId, int>> members;  // every merged vertex, by one of its corners (before the edit)
   VertexId target(VertexId v) const {
     auto it = into.find(v);
     return it == into.end() ? v : it->second;
@@ -60,6 +62,18 @@ struct VertexMerges {
 // `classes`: per class, one corner of each of its vertices (distinct vertices).
 VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pair<HexId, int>>>& classes,
                         const std::function<bool(HexId)>& removed);
+// The number of edges with an end at one of these vertices (each named by one of its corners):
+// the only edges a collapse of them can change. Costs their stars.
+int64_t edgesAt(const Complex& cx, const std::vector<std::pair<HexId, int>>& vertices);
+// A collapse must keep the mesh's topology: V - E + F - H (with E counted, not derived) may not
+// change; a valid complex can still gain or lose a handle when boundary vertices merge. Called
+// after the committed edit (so the result is known to be a valid complex): undoes it and refuses
+// (topology-change) otherwise. `before`: V, F, H and the edgesAt() of the merged vertices.
+struct EulerBefore {
+  int64_t vertices, edgesAround, quads, hexes;
+};
+void keepTopologyOrUndo(Complex& cx, const EulerBefore& before, int64_t edgesAfter, const OpResult& r, const std::string& op);
+
 // Refuses (hex-vertices-merge) when a hex that keeps a renumbered corner would get two equal vertices.
 void requireDistinctCorners(const Complex& cx, const VertexMerges& m, const std::string& op);
 // Renumbers the corners and places the kept vertices (call inside the transaction).
