@@ -13,6 +13,7 @@
 #include "complex/canonical.hpp"
 #include "dual/dual_tracker.hpp"
 #include "helpers.hpp"
+#include "ops/candidates.hpp"
 #include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
 #include "ops/report.hpp"
@@ -119,6 +120,20 @@ inline OpStep randomSheetStep(const Complex& cx, std::mt19937& rng, OpKind op) {
     }
     default: return makeStep(op, e);
   }
+}
+
+// A 3x3x3 grid (or, one seed in three, a 6x2x2 O-grid) after three random atomic steps, chosen
+// among the candidates of pillow, hex push, chord push, face collapse and ring collapse: the
+// steps that make sheets and chords touch themselves, fold, pinch and reach the boundary twice.
+inline Complex randomAtomicMesh(uint32_t seed) {
+  const OpKind kinds[] = {OpKind::Pillow, OpKind::HexPush, OpKind::ChordPush, OpKind::FaceCollapse, OpKind::RingCollapse};
+  std::mt19937 rng(seed);
+  Complex cx = seed % 3 ? makeGrid(3, 3, 3) : makeRing(6, 2, 2);
+  for (int k = 0; k < 3; ++k) {
+    const auto c = candidates(cx, kinds[rng() % 5]);
+    if (!c.empty()) applyStep(cx, c[rng() % c.size()]);
+  }
+  return cx;
 }
 
 // Random sequences (seeds printed): each step an atomic candidate or a random sheet step of `op`;

@@ -147,3 +147,22 @@ TEST_CASE("column-collapse: random runs on grids and an O-grid (fixed seeds)") {
   CHECK(a["applied"] > 30);
   CHECK(b["applied"] > 10);
 }
+
+TEST_CASE("column-collapse: every chord, both diagonals, after random collapses, pushes and pillows (fixed seeds)") {
+  std::map<std::string, int> tally;
+  const uint32_t first = 20261606;
+  for (uint32_t seed = first; seed < first + 12; ++seed) {
+    CAPTURE(seed);
+    Complex cx = randomAtomicMesh(seed);
+    DualTracker tracker(cx);
+    for (const Chord& ch : extractDual(cx).chords)
+      for (int k : {0, 1}) {
+        Checked c = checkSheetStep(cx, tracker, makeStep(OpKind::ColumnCollapse, EdgeRef{ch.slots[0].hex, 4 * ch.slots[0].axis + k}), true);
+        ++tally[c.applied ? "applied" : c.rule];
+      }
+  }
+  std::string line;
+  for (auto& [k, v] : tally) line += " " + k + "=" + std::to_string(v);
+  MESSAGE("seeds " << first << ".." << first + 11 << ":" << line);
+  CHECK(tally["applied"] > 300);
+}

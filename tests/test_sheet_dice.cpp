@@ -96,3 +96,28 @@ TEST_CASE("sheet-dice: random runs on grids and an O-grid (fixed seeds)") {
   CHECK(a["applied"] > 30);
   CHECK(b["applied"] > 10);
 }
+
+TEST_CASE("sheet-dice and sheet-pillow after random collapses, pushes and pillows (fixed seeds)") {
+  std::map<std::string, int> tally;
+  const uint32_t first = 20261806;
+  for (uint32_t seed = first; seed < first + 12; ++seed) {
+    CAPTURE(seed);
+    Complex cx = randomAtomicMesh(seed);
+    DualTracker tracker(cx);
+    for (const Sheet& s : extractDual(cx).sheets) {
+      Checked c = checkSheetStep(cx, tracker, makeStep(OpKind::SheetDice, EdgeRef{s.slots[0].hex, 4 * s.slots[0].axis}, Count{2}), true);
+      ++tally[c.applied ? "dice applied" : "dice " + c.rule];
+    }
+    std::vector<HexId> hexes;
+    for (HexId h : cx.hexes()) hexes.push_back(h);
+    for (HexId h : hexes) {
+      Checked c = checkSheetStep(cx, tracker, makeStep(OpKind::SheetPillow, h), true);
+      ++tally[c.applied ? "pillow applied" : "pillow " + c.rule];
+    }
+  }
+  std::string line;
+  for (auto& [k, v] : tally) line += " " + k + "=" + std::to_string(v);
+  MESSAGE("seeds " << first << ".." << first + 11 << ":" << line);
+  CHECK(tally["dice applied"] > 60);
+  CHECK(tally["pillow applied"] > 200);
+}

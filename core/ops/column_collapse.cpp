@@ -136,6 +136,27 @@ std::vector<std::pair<QuadSide, QuadSide>> sideGlues(const Complex& cx, const st
   return glues;
 }
 
+// The vertices of the kept diagonal's lines: they do not merge, but those only the column uses
+// vanish with it, and so do their edges. Each by a corner, and (second) by a corner off the
+// column for those that stay: the edge count around the collapse includes them.
+std::pair<std::vector<std::pair<HexId, int>>, std::vector<std::pair<HexId, int>>> keptLines(
+    const Complex& cx, const std::vector<ColumnHex>& column, const std::function<bool(HexId)>& removed) {
+  std::vector<std::pair<HexId, int>> all, staying;
+  std::unordered_set<VertexId> seen;
+  for (const ColumnHex& r : column)
+    for (int kept : {r.keep, r.keep ^ 3})
+      for (int c : kEdgeCorners[size_t(kept)]) {
+        if (!seen.insert(cx.vertex(r.hex, c)).second) continue;
+        all.push_back({r.hex, c});
+        for (auto corner : cx.cornersOfVertex(r.hex, c))
+          if (!removed(corner.first)) {
+            staying.push_back(corner);
+            break;
+          }
+      }
+  return {all, staying};
+}
+
 }  // namespace
 
 OpResult columnCollapse(Complex& cx, EdgeRef e) {
@@ -151,7 +172,10 @@ OpResult columnCollapse(Complex& cx, EdgeRef e) {
   requireDistinctCorners(cx, m, op);
   const auto glues = sideGlues(cx, column);
 
-  const EulerBefore before{cx.numVertices(), edgesAt(cx, m.members), cx.numQuads(), cx.numHexes()};
+  auto [around, aroundAfter] = keptLines(cx, column, removed);
+  around.insert(around.end(), m.members.begin(), m.members.end());
+  aroundAfter.insert(aroundAfter.end(), m.anchors.begin(), m.anchors.end());
+  const EulerBefore before{cx.numVertices(), edgesAt(cx, around), cx.numQuads(), cx.numHexes()};
   Transaction tx(cx);
   for (HexId h : hexes)
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);
@@ -170,7 +194,7 @@ OpResult columnCollapse(Complex& cx, EdgeRef e) {
   res.removedHexes = hexes;
   res.noInverse = "a column collapse has no inverse step in the operation log; use undo";
   commitOrRefuse(tx, res, touched, op);
-  keepTopologyOrUndo(cx, before, edgesAt(cx, m.anchors), res, op);
+  keepTopologyOrUndo(cx, before, edgesAt(cx, aroundAfter), res, op);
   res.removedVertices = m.dropped;
   for (auto [v, p] : m.placed)
     if (!cx.isVertex(v)) res.removedVertices.push_back(v);
