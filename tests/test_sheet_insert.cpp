@@ -153,6 +153,21 @@ TEST_CASE("sheet-insert: the cost of the dual update follows the new sheet (20^3
   CHECK(big.second == 20 * 1600);
 }
 
+TEST_CASE("sheet-pillow of the centre hex: the dual update visits the same slots at 20^3 and 40^3") {
+  auto visited = [](int n) {
+    Complex cx = makeGrid(n, n, n);
+    DualTracker tracker(cx);
+    const int c = n / 2;
+    applyStepTracked(cx, tracker, parseOpStep("sheet-pillow h" + std::to_string(c + n * (c + n * c))));
+    CHECK_FALSE(tracker.lastUpdateReflooded());
+    compareDuals(cx, tracker.dual(), extractDual(cx));
+    return tracker.slotsTouched();
+  };
+  const size_t small = visited(20), big = visited(40);
+  CHECK(small == 105);
+  CHECK(big == small);
+}
+
 TEST_CASE("sheet-pillow: random runs on grids and an O-grid (fixed seeds)") {
   auto a = randomSheetRuns(makeGrid(4, 4, 4), 20261403, 40, OpKind::SheetPillow);
   auto b = randomSheetRuns(makeRing(6, 2, 2), 20261503, 20, OpKind::SheetPillow);
