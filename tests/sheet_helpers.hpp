@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <functional>
 #include <cstdio>
 #include <map>
 #include <random>
@@ -103,6 +104,28 @@ inline Complex makeMobiusRing(int around) {
   return fromConnectivity(p, hexes);
 }
 
+// " rule=count ..." of a tally.
+inline std::string tallyLine(const std::map<std::string, int>& tally) {
+  std::string line;
+  for (auto& [k, v] : tally) line += " " + k + "=" + std::to_string(v);
+  return line;
+}
+
+// What the dual tracker's update visited for a step at the centre of an n^3 grid (`step` makes
+// its text from the centre hex id), after checking the tracked dual against a fresh extraction.
+struct UpdateCost {
+  size_t sheetSlots, chordSlots;
+  bool reflooded;
+};
+inline UpdateCost costAtCentre(int n, const std::function<std::string(const std::string& centre)>& step) {
+  Complex cx = makeGrid(n, n, n);
+  DualTracker tracker(cx);
+  const int c = n / 2;
+  applyStepTracked(cx, tracker, parseOpStep(step(std::to_string(c + n * (c + n * c)))));
+  compareDuals(cx, tracker.dual(), extractDual(cx));
+  return {tracker.sheetSlotsTouched(), tracker.chordSlotsTouched(), tracker.lastUpdateReflooded()};
+}
+
 // A random step of a sheet operation on live entities: the sheet or chord through a random edge,
 // or a random hex with up to three neighbours (sheet-pillow).
 inline OpStep randomSheetStep(const Complex& cx, std::mt19937& rng, OpKind op) {
@@ -136,6 +159,45 @@ inline Complex randomAtomicMesh(uint32_t seed) {
   return cx;
 }
 
+// Every step `stepsOf` lists for randomAtomicMesh(seed), for `count` seeds from `first` (printed),
+// checked with checkSheetStep and undone. The tally: "<op> applied" (", no inverse" when it has
+// none) and "<op> <rule>" for refusals.
+inline std::map<std::string, int> everyStepAfterRandomAtomic(uint32_t first, uint32_t count,
+                                                            const std::function<std::vector<OpStep>(const Complex&)>& stepsOf) {
+  std::map<std::string, int> tally;
+  for (uint32_t seed = first; seed < first + count; ++seed) {
+    CAPTURE(seed);
+    Complex cx = randomAtomicMesh(seed);
+    DualTracker tracker(cx);
+    for (const OpStep& step : stepsOf(cx)) {
+      Checked c = checkSheetStep(cx, tracker, step, true);
+      const std::string op = opName(step.op);
+      ++tally[c.applied ? op + " applied" + (c.report.result.inverse ? "" : ", no inverse") : op + " " + c.rule];
+    }
+  }
+  MESSAGE("seeds " << first << ".." << first + count - 1 << ":" << tallyLine(tally));
+  return tally;
+}
+// One edge per sheet (of its smallest slot), and both diagonals of every chord.
+inline std::vector<EdgeRef> sheetEdges(const Complex& cx) {
+  std::vector<EdgeRef> out;
+  for (const Sheet& s : extractDual(cx).sheets) out.push_back({s.slots[0].hex, 4 * s.slots[0].axis});
+  return out;
+}
+inline std::vector<EdgeRef> chordEdges(const Complex& cx) {
+  std::vector<EdgeRef> out;
+  for (const Chord& ch : extractDual(cx).chords)
+    for (int k : {0, 1}) out.push_back({ch.slots[0].hex, 4 * ch.slots[0].axis + k});
+  return out;
+}
+// Δ(V, E, F, H) of a result.
+inline void checkDelta(const OpResult& r, int64_t dV, int64_t dE, int64_t dF, int64_t dH) {
+  CHECK(r.dV == dV);
+  CHECK(r.dE == dE);
+  CHECK(r.dF == dF);
+  CHECK(r.dH == dH);
+}
+
 // Random sequences (seeds printed): each step an atomic candidate or a random sheet step of `op`;
 // every sheet step checked with checkSheetStep; the whole sequence undone exactly at the end.
 // Returns how many steps of `op` applied, per rule refused (key "applied" for the applied).
@@ -166,9 +228,8 @@ inline std::map<std::string, int> randomSheetRuns(const Complex& start, uint32_t
     REQUIRE(stateDump(cx) == stateDump(start));
     compareDuals(cx, tracker.dual(), extractDual(cx));
   }
-  std::string line;
-  for (auto& [k, v] : tally) line += " " + k + "=" + std::to_string(v);
-  MESSAGE(std::string(opName(op)) << " random runs, seeds " << firstSeed << ".." << firstSeed + uint32_t(sequences) - 1 << ":" << line);
+  MESSAGE(std::string(opName(op)) << " random runs, seeds " << firstSeed << ".." << firstSeed + uint32_t(sequences) - 1 << ":"
+                                  << tallyLine(tally));
   return tally;
 }
 

@@ -17,10 +17,7 @@ TEST_CASE("sheet-dice of the middle x-layer of a 3x3x3 grid into 2 and 3: a 4x3x
   const OpResult& r = c.report.result;
   // 16 edges cut in two (+16 vertices), 9 new hexes; the new mid-plane quads (9) and the halves of
   // the layer's 24 side quads; edges: 16 halves and the mid-plane's 24.
-  CHECK(r.dV == 16);
-  CHECK(r.dE == 40);
-  CHECK(r.dF == 33);
-  CHECK(r.dH == 9);
+  checkDelta(r, 16, 40, 33, 9);
   CHECK(r.createdHexes.size() == 9);
   CHECK(r.removedHexes.empty());
   CHECK(isomorphic(cx, makeGrid(4, 3, 3), false));
@@ -73,21 +70,16 @@ TEST_CASE("sheet-dice: refusals name their rule and leave the complex unchanged"
 }
 
 TEST_CASE("sheet-dice: the dual update visits slots in proportion to the sheet (20^3 and 40^3)") {
-  auto visited = [](int n) {
-    Complex cx = makeGrid(n, n, n);
-    DualTracker tracker(cx);
-    const int c = n / 2;
-    applyStepTracked(cx, tracker, parseOpStep("sheet-dice h" + std::to_string(c + n * (c + n * c)) + "e0 2"));
-    CHECK_FALSE(tracker.lastUpdateReflooded());
-    compareDuals(cx, tracker.dual(), extractDual(cx));
-    return std::pair<size_t, size_t>{tracker.sheetSlotsTouched(), tracker.chordSlotsTouched()};
-  };
-  const auto small = visited(20), big = visited(40);
-  MESSAGE("sheet slots 20^3 / 40^3: " << small.first << " / " << big.first << ", chord slots " << small.second << " / " << big.second);
-  CHECK(small.first == 3 * 400);  // the new layer's slots: its own sheet and the strips of the crossing ones
-  CHECK(big.first == 3 * 1600);
-  CHECK(small.second == 25 * 400);  // chords: 25 slots per hex of the sheet
-  CHECK(big.second == 25 * 1600);
+  auto dice = [](const std::string& centre) { return "sheet-dice h" + centre + "e0 2"; };
+  const UpdateCost small = costAtCentre(20, dice), big = costAtCentre(40, dice);
+  CHECK_FALSE(small.reflooded);
+  CHECK_FALSE(big.reflooded);
+  MESSAGE("sheet slots 20^3 / 40^3: " << small.sheetSlots << " / " << big.sheetSlots << ", chord slots " << small.chordSlots
+                                     << " / " << big.chordSlots);
+  CHECK(small.sheetSlots == 3 * 400);  // the new layer's slots: its own sheet and the strips of the crossing ones
+  CHECK(big.sheetSlots == 3 * 1600);
+  CHECK(small.chordSlots == 25 * 400);  // chords: 25 slots per hex of the sheet
+  CHECK(big.chordSlots == 25 * 1600);
 }
 
 TEST_CASE("sheet-dice: random runs on grids and an O-grid (fixed seeds)") {
@@ -98,26 +90,12 @@ TEST_CASE("sheet-dice: random runs on grids and an O-grid (fixed seeds)") {
 }
 
 TEST_CASE("sheet-dice and sheet-pillow after random collapses, pushes and pillows (fixed seeds)") {
-  std::map<std::string, int> tally;
-  const uint32_t first = 20261806;
-  for (uint32_t seed = first; seed < first + 12; ++seed) {
-    CAPTURE(seed);
-    Complex cx = randomAtomicMesh(seed);
-    DualTracker tracker(cx);
-    for (const Sheet& s : extractDual(cx).sheets) {
-      Checked c = checkSheetStep(cx, tracker, makeStep(OpKind::SheetDice, EdgeRef{s.slots[0].hex, 4 * s.slots[0].axis}, Count{2}), true);
-      ++tally[c.applied ? "dice applied" : "dice " + c.rule];
-    }
-    std::vector<HexId> hexes;
-    for (HexId h : cx.hexes()) hexes.push_back(h);
-    for (HexId h : hexes) {
-      Checked c = checkSheetStep(cx, tracker, makeStep(OpKind::SheetPillow, h), true);
-      ++tally[c.applied ? "pillow applied" : "pillow " + c.rule];
-    }
-  }
-  std::string line;
-  for (auto& [k, v] : tally) line += " " + k + "=" + std::to_string(v);
-  MESSAGE("seeds " << first << ".." << first + 11 << ":" << line);
-  CHECK(tally["dice applied"] > 60);
-  CHECK(tally["pillow applied"] > 200);
+  auto tally = everyStepAfterRandomAtomic(20261806, 12, [](const Complex& cx) {
+    std::vector<OpStep> steps;
+    for (EdgeRef e : sheetEdges(cx)) steps.push_back(makeStep(OpKind::SheetDice, e, Count{2}));
+    for (HexId h : cx.hexes()) steps.push_back(makeStep(OpKind::SheetPillow, h));
+    return steps;
+  });
+  CHECK(tally["sheet-dice applied"] > 60);
+  CHECK(tally["sheet-pillow applied"] > 200);
 }

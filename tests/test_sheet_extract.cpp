@@ -40,10 +40,7 @@ TEST_CASE("sheet-extract: the x=1 layer of a 4x4x4 grid; a 3x4x4 grid is left, o
   Checked c = checkSheetStep(cx, tracker, parseOpStep("sheet-extract h21e0"), false);
   REQUIRE(c.applied);
   const OpResult& r = c.report.result;
-  CHECK(r.dV == -25);
-  CHECK(r.dE == -65);
-  CHECK(r.dF == -56);
-  CHECK(r.dH == -16);
+  checkDelta(r, -25, -65, -56, -16);
   CHECK(r.removedHexes == layer);
   CHECK(r.removedVertices.size() == 25);
   CHECK(r.createdHexes.empty());
@@ -165,21 +162,16 @@ TEST_CASE("sheet-extract: a vertex the input left non-manifold is refused with i
 
 TEST_CASE("sheet-extract: the dual update visits slots in proportion to the sheet, not the mesh (20^3 and 40^3)") {
   // The middle x-layer: n^2 hexes. The update visits a fixed number of slots per hex of the sheet.
-  auto visited = [](int n) {
-    Complex cx = makeGrid(n, n, n);
-    DualTracker tracker(cx);
-    const int c = n / 2;
-    StepReport r = applyStepTracked(cx, tracker, parseOpStep("sheet-extract h" + std::to_string(c + n * (c + n * c)) + "e0"));
-    CHECK_FALSE(tracker.lastUpdateReflooded());
-    compareDuals(cx, tracker.dual(), extractDual(cx));
-    return std::pair<size_t, size_t>{tracker.sheetSlotsTouched(), tracker.chordSlotsTouched()};
-  };
-  const auto small = visited(20), big = visited(40);
-  MESSAGE("sheet slots 20^3 / 40^3: " << small.first << " / " << big.first << ", chord slots " << small.second << " / " << big.second);
-  CHECK(small.first == 0);  // the sheets keep their topology: dead slots leave their lists, nothing is flooded
-  CHECK(big.first == 0);
-  CHECK(small.second == 17 * 400);  // chords: 17 slots per hex of the sheet
-  CHECK(big.second == 17 * 1600);
+  auto extract = [](const std::string& centre) { return "sheet-extract h" + centre + "e0"; };
+  const UpdateCost small = costAtCentre(20, extract), big = costAtCentre(40, extract);
+  CHECK_FALSE(small.reflooded);
+  CHECK_FALSE(big.reflooded);
+  MESSAGE("sheet slots 20^3 / 40^3: " << small.sheetSlots << " / " << big.sheetSlots << ", chord slots " << small.chordSlots
+                                     << " / " << big.chordSlots);
+  CHECK(small.sheetSlots == 0);  // the sheets keep their topology: dead slots leave their lists, nothing is flooded
+  CHECK(big.sheetSlots == 0);
+  CHECK(small.chordSlots == 17 * 400);  // chords: 17 slots per hex of the sheet
+  CHECK(big.chordSlots == 17 * 1600);
 }
 
 TEST_CASE("sheet-extract: random runs on grids and an O-grid (fixed seeds)") {
@@ -190,22 +182,13 @@ TEST_CASE("sheet-extract: random runs on grids and an O-grid (fixed seeds)") {
 }
 
 TEST_CASE("sheet-extract: every sheet after random atomic steps (collapses, pushes, pillows; fixed seeds)") {
-  std::map<std::string, int> tally;
-  const uint32_t first = 20261206;
-  for (uint32_t seed = first; seed < first + 24; ++seed) {
-    CAPTURE(seed);
-    Complex cx = randomAtomicMesh(seed);
-    DualTracker tracker(cx);
-    for (const Sheet& s : extractDual(cx).sheets) {
-      Checked c = checkSheetStep(cx, tracker, makeStep(OpKind::SheetExtract, EdgeRef{s.slots[0].hex, 4 * s.slots[0].axis}), true);
-      ++tally[c.applied ? (c.report.result.inverse ? "applied, inverse" : "applied, no inverse") : c.rule];
-    }
-  }
-  std::string line;
-  for (auto& [k, v] : tally) line += " " + k + "=" + std::to_string(v);
-  MESSAGE("seeds " << first << ".." << first + 23 << ":" << line);
-  CHECK(tally["applied, inverse"] > 100);
-  CHECK(tally["self-touching"] > 0);
+  auto tally = everyStepAfterRandomAtomic(20261206, 24, [](const Complex& cx) {
+    std::vector<OpStep> steps;
+    for (EdgeRef e : sheetEdges(cx)) steps.push_back(makeStep(OpKind::SheetExtract, e));
+    return steps;
+  });
+  CHECK(tally["sheet-extract applied"] > 100);
+  CHECK(tally["sheet-extract self-touching"] > 0);
 }
 
 TEST_CASE("sheet-extract: every sheet of every development mesh (applied or refused by rule, undone exactly)") {
@@ -241,9 +224,7 @@ TEST_CASE("sheet-extract: every sheet of every development mesh (applied or refu
       if (c.applied) CHECK(c.report.dual.sheetsRemoved == std::vector<int>{s.id});
     }
     CHECK(cx.numHexes() == hexes);
-    std::string line;
-    for (auto& [k, v] : tally) line += " " + k + "=" + std::to_string(v);
-    MESSAGE(f.filename().string() << ": " << d.sheets.size() << " sheets:" << line);
+    MESSAGE(f.filename().string() << ": " << d.sheets.size() << " sheets:" << tallyLine(tally));
   }
   CHECK(meshes >= 9);
 }

@@ -23,10 +23,7 @@ TEST_CASE("sheet-pillow of one interior hex is pillowRegion and the 1-7 flip: sa
   Checked c = checkSheetStep(cx, tracker, parseOpStep("sheet-pillow h13"), false);
   REQUIRE(c.applied);
   const OpResult& r = c.report.result;
-  CHECK(r.dV == 8);
-  CHECK(r.dE == 20);
-  CHECK(r.dF == 18);
-  CHECK(r.dH == 6);
+  checkDelta(r, 8, 20, 18, 6);
   CHECK(r.createdHexes.size() == 6);
   CHECK(cx.isHex(13));  // the pillowed hex keeps its id: it moved onto the 8 new vertices
   pillowRegion(viaRegion, {13});
@@ -48,10 +45,7 @@ TEST_CASE("sheet-pillow of an interior 2x1x1 block equals pillowRegion; Δ (+V, 
   pillowRegion(viaRegion, {21, 22});
   CHECK(canonicalHash(cx) == canonicalHash(viaRegion));
   // The block's surface: 12 vertices, 20 edges, 10 quads.
-  CHECK(r.dV == 12);
-  CHECK(r.dE == 32);
-  CHECK(r.dF == 30);
-  CHECK(r.dH == 10);
+  checkDelta(r, 12, 32, 30, 10);
 }
 
 TEST_CASE("sheet-pillow of a corner hex: the new sheet is a disk ending on the boundary, which gains its side quads") {
@@ -61,10 +55,7 @@ TEST_CASE("sheet-pillow of a corner hex: the new sheet is a disk ending on the b
   REQUIRE(c.applied);
   const OpResult& r = c.report.result;
   // The surface: 3 quads (toward h1, h3, h9), 7 vertices, 9 edges (6 of them on the boundary).
-  CHECK(r.dV == 7);
-  CHECK(r.dE == 16);
-  CHECK(r.dF == 12);
-  CHECK(r.dH == 3);
+  checkDelta(r, 7, 16, 12, 3);
   CHECK(cx.numBoundaryQuads() == 54 + 6);
   REQUIRE(c.report.dual.sheetsCreated.size() == 1);
   const Sheet& s = tracker.dual().sheets[size_t(c.report.dual.sheetsCreated[0])];
@@ -85,10 +76,7 @@ TEST_CASE("sheet-insert along the 9 quads between two layers gives a 3x3x4 grid,
   DualTracker tracker(a);
   Checked c = checkSheetStep(a, tracker, quadsStep(OpKind::SheetInsert, below), false);
   REQUIRE(c.applied);
-  CHECK(c.report.result.dV == 16);
-  CHECK(c.report.result.dE == 40);
-  CHECK(c.report.result.dF == 33);
-  CHECK(c.report.result.dH == 9);
+  checkDelta(c.report.result, 16, 40, 33, 9);
   CHECK(isomorphic(a, makeGrid(3, 3, 4), false));
   CHECK(tracker.dual().sheets[size_t(c.report.dual.sheetsCreated.at(0))].topology == "disk");
   // The first quad names the moving side; the others follow it across the surface.
@@ -134,16 +122,13 @@ TEST_CASE("sheet-insert and sheet-pillow: refusals name their rule and leave the
 }
 
 TEST_CASE("sheet-insert: the cost of the dual update follows the new sheet (20^3 and 40^3)") {
-  auto visited = [](int n) {
-    Complex cx = makeGrid(n, n, n);
-    DualTracker tracker(cx);
-    std::vector<QuadSide> mid;  // the n^2 quads between layers n/2 - 1 and n/2 along z
+  auto visited = [](int n) {  // the n^2 quads between layers n/2 - 1 and n/2 along z
+    std::string step = "sheet-insert";
     for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) mid.push_back({HexId(i + n * (j + n * (n / 2 - 1))), 5});
-    applyStepTracked(cx, tracker, quadsStep(OpKind::SheetInsert, mid));
-    CHECK_FALSE(tracker.lastUpdateReflooded());
-    compareDuals(cx, tracker.dual(), extractDual(cx));
-    return std::pair<size_t, size_t>{tracker.sheetSlotsTouched(), tracker.chordSlotsTouched()};
+      for (int i = 0; i < n; ++i) step += " h" + std::to_string(i + n * (j + n * (n / 2 - 1))) + "f5";
+    const UpdateCost cost = costAtCentre(n, [&](const std::string&) { return step; });
+    CHECK_FALSE(cost.reflooded);
+    return std::pair<size_t, size_t>{cost.sheetSlots, cost.chordSlots};
   };
   const auto small = visited(20), big = visited(40);
   MESSAGE("sheet slots 20^3 / 40^3: " << small.first << " / " << big.first << ", chord slots " << small.second << " / " << big.second);
@@ -155,13 +140,9 @@ TEST_CASE("sheet-insert: the cost of the dual update follows the new sheet (20^3
 
 TEST_CASE("sheet-pillow of the centre hex: the dual update visits the same slots at 20^3 and 40^3") {
   auto visited = [](int n) {
-    Complex cx = makeGrid(n, n, n);
-    DualTracker tracker(cx);
-    const int c = n / 2;
-    applyStepTracked(cx, tracker, parseOpStep("sheet-pillow h" + std::to_string(c + n * (c + n * c))));
-    CHECK_FALSE(tracker.lastUpdateReflooded());
-    compareDuals(cx, tracker.dual(), extractDual(cx));
-    return tracker.slotsTouched();
+    const UpdateCost cost = costAtCentre(n, [](const std::string& centre) { return "sheet-pillow h" + centre; });
+    CHECK_FALSE(cost.reflooded);
+    return cost.sheetSlots + cost.chordSlots;
   };
   const size_t small = visited(20), big = visited(40);
   CHECK(small == 105);

@@ -181,24 +181,11 @@ OpResult columnCollapse(Complex& cx, EdgeRef e) {
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);
   for (HexId h : hexes) cx.removeHex(h);
   applyMerges(cx, m);
-  std::vector<HexId> touched = renamedHexes(m);
-  for (auto [a, b] : glues) {
-    const int o = a == b ? -1 : orientByVertices(cx, a.hex, a.face, b.hex, b.face);
-    if (o < 0) refuse(op, "invalid-result", "after the collapse " + entityName(a) + " and " + entityName(b) + " cannot be glued");
-    cx.glue(a.hex, a.face, b.hex, b.face, o);
-    touched.push_back(a.hex);
-    touched.push_back(b.hex);
-  }
   OpResult res;
   res.op = kind;
   res.removedHexes = hexes;
   res.noInverse = "a column collapse has no inverse step in the operation log; use undo";
-  commitOrRefuse(tx, res, touched, op);
-  keepTopologyOrUndo(cx, before, edgesAt(cx, aroundAfter), res, op);
-  res.removedVertices = m.dropped;
-  for (auto [v, p] : m.placed)
-    if (!cx.isVertex(v)) res.removedVertices.push_back(v);
-  std::sort(res.removedVertices.begin(), res.removedVertices.end());
+  finishCollapse(cx, tx, res, m, glues, before, aroundAfter, op);
   return res;
 }
 

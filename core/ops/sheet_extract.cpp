@@ -198,20 +198,7 @@ OpResult sheetExtract(Complex& cx, EdgeRef e) {
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);
   for (HexId h : sheet.hexes) cx.removeHex(h);
   applyMerges(cx, m);
-  std::vector<HexId> touched = renamedHexes(m);
-  for (auto [P, N] : glues) {
-    const int o = orientByVertices(cx, P.hex, P.face, N.hex, N.face);
-    if (o < 0) refuse(op, "invalid-result", "after the collapse " + entityName(P) + " and " + entityName(N) + " meet in a different cyclic order");
-    cx.glue(P.hex, P.face, N.hex, N.face, o);
-    touched.push_back(P.hex);
-    touched.push_back(N.hex);
-  }
-  commitOrRefuse(tx, res, touched, op);
-  keepTopologyOrUndo(cx, before, edgesAt(cx, m.anchors), res, op);
-  res.removedVertices = m.dropped;
-  for (auto [v, p] : m.placed)
-    if (!cx.isVertex(v)) res.removedVertices.push_back(v);
-  std::sort(res.removedVertices.begin(), res.removedVertices.end());
+  finishCollapse(cx, tx, res, m, glues, before, m.anchors, op);
   return res;
 }
 

@@ -226,6 +226,25 @@ void keepTopologyOrUndo(Complex& cx, const EulerBefore& before, int64_t edgesAft
              " from the mesh's: merging these vertices would " + (dChi < 0 ? "open a handle (a tunnel)" : "close a tunnel or split the mesh"));
 }
 
+void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMerges& m,
+                    const std::vector<std::pair<QuadSide, QuadSide>>& glues, const EulerBefore& before,
+                    const std::vector<std::pair<HexId, int>>& after, const std::string& op) {
+  std::vector<HexId> touched = renamedHexes(m);
+  for (auto [a, b] : glues) {
+    const int o = a == b ? -1 : orientByVertices(cx, a.hex, a.face, b.hex, b.face);
+    if (o < 0) refuse(op, "invalid-result", "after the collapse " + entityName(a) + " and " + entityName(b) + " cannot be glued");
+    cx.glue(a.hex, a.face, b.hex, b.face, o);
+    touched.push_back(a.hex);
+    touched.push_back(b.hex);
+  }
+  commitOrRefuse(tx, res, touched, op);
+  keepTopologyOrUndo(cx, before, edgesAt(cx, after), res, op);
+  res.removedVertices = m.dropped;
+  for (auto [v, p] : m.placed)
+    if (!cx.isVertex(v)) res.removedVertices.push_back(v);
+  std::sort(res.removedVertices.begin(), res.removedVertices.end());
+}
+
 std::vector<HexId> renamedHexes(const VertexMerges& m) {
   std::vector<HexId> hexes;
   for (auto [h, c] : m.renamed) hexes.push_back(h);

@@ -74,6 +74,14 @@ struct EulerBefore {
 };
 void keepTopologyOrUndo(Complex& cx, const EulerBefore& before, int64_t edgesAfter, const OpResult& r, const std::string& op);
 
+// The end of a collapse (sheet extraction, column collapse) after its hexes are gone and its
+// vertices merged: glues the quad pairs it closes, commits (refusing an invalid result), refuses a
+// change of topology (undoing), and lists the vertices that went away. `after`: corners of the
+// vertices counted in `before` that stay (edgesAt).
+void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMerges& m,
+                    const std::vector<std::pair<QuadSide, QuadSide>>& glues, const EulerBefore& before,
+                    const std::vector<std::pair<HexId, int>>& after, const std::string& op);
+
 // Refuses (hex-vertices-merge) when a hex that keeps a renumbered corner would get two equal vertices.
 void requireDistinctCorners(const Complex& cx, const VertexMerges& m, const std::string& op);
 // Renumbers the corners and places the kept vertices (call inside the transaction).
