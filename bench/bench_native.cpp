@@ -330,7 +330,14 @@ static int benchSheetsDevset(const char* path) {
 }
 
 int main(int argc, char** argv) {
-  if (argc >= 3 && !std::strcmp(argv[1], "sheets-devset")) return benchSheetsDevset(argv[2]);
+  if (argc >= 3 && !std::strcmp(argv[1], "sheets-devset")) {
+    try {
+      return benchSheetsDevset(argv[2]);
+    } catch (const std::exception& e) {  // a file the readers refuse
+      std::fprintf(stderr, "%s\n", e.what());
+      return 2;
+    }
+  }
   if (argc >= 3 && !std::strcmp(argv[1], "sheetops")) return benchSheetOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "layout")) return benchLayout(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "build")) return benchBuild(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);

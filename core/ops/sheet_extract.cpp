@@ -176,6 +176,28 @@ void reportInverse(const Complex& cx, OpResult& res, const std::vector<Run>& run
   res.inverse = std::move(inv);
 }
 
+// Whether a collapsed edge joins two boundary vertices through the interior (a proper arc): only
+// then can the collapse change the topology (collapsing arcs with at most one end on the boundary
+// keeps it; every applied step's Δ is compared with full counts in the tests), so only then is the
+// Euler characteristic counted.
+bool collapsesProperArc(const Complex& cx, const std::vector<std::vector<std::pair<HexId, int>>>& edges, const VertexMerges& m) {
+  for (size_t k = 0; k < edges.size(); ++k) {
+    if (m.boundaryMembers[k] < 2) continue;
+    const auto [h, c0] = edges[k][0];
+    EdgeRef cur{h, edgeBetween(c0, edges[k][1].second)};
+    const EdgeRef start = cur;
+    int exit = facesOfEdge(cur.edge)[0];
+    bool closed = false;
+    for (size_t n = 0; n <= size_t(12) * size_t(cx.numHexes()) && cx.stepAroundEdge(cur, exit); ++n)
+      if (cur == start) {
+        closed = true;
+        break;
+      }
+    if (closed) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 OpResult sheetExtract(Complex& cx, EdgeRef e) {
@@ -184,7 +206,8 @@ OpResult sheetExtract(Complex& cx, EdgeRef e) {
   const SheetHexes sheet = sheetThrough(cx, e, op);
   requireManifold(cx, sheet.hexes, op);
   const std::vector<Run> runs = runsOf(cx, sheet, op);
-  const VertexMerges m = planMerges(cx, collapsedEdges(cx, sheet, op), [&](HexId h) { return sheet.axisOf(h) >= 0; });
+  const auto edges = collapsedEdges(cx, sheet, op);
+  const VertexMerges m = planMerges(cx, edges, [&](HexId h) { return sheet.axisOf(h) >= 0; });
   requireDistinctCorners(cx, m, op);
   const auto glues = gluesOf(cx, runs, m, op);
   OpResult res;
@@ -192,7 +215,8 @@ OpResult sheetExtract(Complex& cx, EdgeRef e) {
   res.removedHexes = sheet.hexes;
   reportInverse(cx, res, runs, sheet, m.split);  // names quads by their outside sides, which survive
 
-  const EulerBefore before{cx.numVertices(), edgesAt(cx, m.members), cx.numQuads(), cx.numHexes()};
+  const bool countEuler = collapsesProperArc(cx, edges, m);
+  const EulerBefore before{cx.numVertices(), countEuler ? edgesAt(cx, m.members) : -1, cx.numQuads(), cx.numHexes()};
   Transaction tx(cx);
   for (HexId h : sheet.hexes)
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);

@@ -3,6 +3,7 @@
 #include "ops/sheet_support.hpp"
 
 #include <algorithm>
+#include <unordered_set>
 
 #include "complex/manifold.hpp"
 #include "dual/dual.hpp"
@@ -179,6 +180,7 @@ VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pa
       if (!outside[k].empty()) anchor = outside[k][0];
     if (anchor.first >= 0) m.anchors.push_back(anchor);
     m.members.insert(m.members.end(), cls.begin(), cls.end());
+    m.boundaryMembers.push_back(nB);
     for (size_t k = 0; k < cls.size(); ++k) {
       const VertexId v = cx.vertex(cls[k].first, cls[k].second);
       m.into[v] = keep;
@@ -193,27 +195,42 @@ VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pa
 }
 
 int64_t edgesAt(const Complex& cx, const std::vector<std::pair<HexId, int>>& vertices) {
-  std::unordered_map<int64_t, bool> seen;  // every incidence of every edge met, by hex * 12 + local edge
+  // Per vertex, its edges are the vertices of its link: the (corner, axis) pairs of its star joined
+  // across the faces between the corners (a small union-find, no hashing of incidences). An edge
+  // is counted once at each end in the set, twice at an end whose other end is not.
+  std::unordered_set<VertexId> in;
+  for (auto [h, c] : vertices) in.insert(cx.vertex(h, c));
+  std::unordered_set<VertexId> done;
   Corners star;
-  int64_t edges = 0;
-  const size_t limit = size_t(12) * size_t(cx.numHexes()) + 1;
+  std::vector<int> parent;
+  int64_t twice = 0;
   for (auto [h, c] : vertices) {
+    if (!done.insert(cx.vertex(h, c)).second) continue;
     starInto(cx, h, c, star);
-    for (auto [hh, cc] : star)
-      for (int e : edgesOfCorner(cc)) {
-        if (seen.count(int64_t(hh) * 12 + e)) continue;
-        ++edges;  // a new edge: mark all its incidences (round its cycle, or both ways along its fan)
-        const auto fs = facesOfEdge(e);
-        for (int dir = 0; dir < 2; ++dir) {
-          EdgeRef cur{hh, e};
-          int exit = fs[size_t(dir)];
-          seen[int64_t(hh) * 12 + e] = true;
-          for (size_t n = 0; n < limit && cx.stepAroundEdge(cur, exit) && !seen.count(int64_t(cur.hex) * 12 + cur.edge); ++n)
-            seen[int64_t(cur.hex) * 12 + cur.edge] = true;
-        }
+    parent.resize(3 * star.size());
+    for (size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
+    auto find = [&](int x) {
+      while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+      return x;
+    };
+    for (size_t i = 0; i < star.size(); ++i) {
+      auto [hh, cc] = star[i];
+      for (int k = 0; k < 3; ++k) {
+        const int f = facesOfCorner(cc)[size_t(k)];
+        if (cx.isBoundary({hh, f})) continue;
+        const Gluing g = cx.gluing(hh, f);
+        const CornerStep& st = kCornerSteps[size_t(cornerStepIndex(cc, k, g.face, g.orient))];
+        const size_t j = size_t(std::find(star.begin(), star.end(), std::pair<HexId, int>{g.hex, st.corner}) - star.begin());
+        for (int t = 0; t < 2; ++t) parent[size_t(find(int(3 * i) + (k + 1 + t) % 3))] = find(int(3 * j) + st.axis[size_t(t)]);
+      }
+    }
+    for (size_t x = 0; x < parent.size(); ++x)
+      if (find(int(x)) == int(x)) {
+        auto [eh, ec] = star[x / 3];
+        twice += in.count(cx.vertex(eh, flipAxis(ec, int(x % 3)))) ? 1 : 2;
       }
   }
-  return edges;
+  return twice / 2;
 }
 
 void keepTopologyOrUndo(Complex& cx, const EulerBefore& before, int64_t edgesAfter, const OpResult& r, const std::string& op) {
@@ -238,7 +255,7 @@ void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMer
     touched.push_back(b.hex);
   }
   commitOrRefuse(tx, res, touched, op);
-  keepTopologyOrUndo(cx, before, edgesAt(cx, after), res, op);
+  if (before.edgesAround >= 0) keepTopologyOrUndo(cx, before, edgesAt(cx, after), res, op);
   res.removedVertices = m.dropped;
   for (auto [v, p] : m.placed)
     if (!cx.isVertex(v)) res.removedVertices.push_back(v);

@@ -54,6 +54,7 @@ struct VertexMerges {
   VertexId split = -1;  // a merged vertex whose corners outside the removed hexes fall apart (face-connected pieces)
   std::vector<std::pair<HexId, int>> anchors;  // per class: a corner off the removed hexes (it holds the kept vertex after)
   std::vector<std::pair<HexId, int>> members;  // every merged vertex, by one of its corners (before the edit)
+  std::vector<int> boundaryMembers;            // per class: how many of its vertices are on the boundary
   VertexId target(VertexId v) const {
     auto it = into.find(v);
     return it == into.end() ? v : it->second;
@@ -77,7 +78,7 @@ void keepTopologyOrUndo(Complex& cx, const EulerBefore& before, int64_t edgesAft
 // The end of a collapse (sheet extraction, column collapse) after its hexes are gone and its
 // vertices merged: glues the quad pairs it closes, commits (refusing an invalid result), refuses a
 // change of topology (undoing), and lists the vertices that went away. `after`: corners of the
-// vertices counted in `before` that stay (edgesAt).
+// vertices counted in `before` that stay (edgesAt); no topology check when before.edgesAround < 0.
 void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMerges& m,
                     const std::vector<std::pair<QuadSide, QuadSide>>& glues, const EulerBefore& before,
                     const std::vector<std::pair<HexId, int>>& after, const std::string& op);
