@@ -125,6 +125,14 @@ inline UpdateCost costAtCentre(int n, const std::function<std::string(const std:
   compareDuals(cx, tracker.dual(), extractDual(cx));
   return {tracker.sheetSlotsTouched(), tracker.chordSlotsTouched(), tracker.lastUpdateReflooded()};
 }
+// costAtCentre at two grid sizes, printed: the cost tests assert how each count grows with n.
+inline std::pair<UpdateCost, UpdateCost> costsAtCentre(int small, int big,
+                                                       const std::function<std::string(const std::string& centre)>& step) {
+  const UpdateCost a = costAtCentre(small, step), b = costAtCentre(big, step);
+  MESSAGE("sheet slots " << small << "^3 / " << big << "^3: " << a.sheetSlots << " / " << b.sheetSlots << ", chord slots "
+                         << a.chordSlots << " / " << b.chordSlots << (a.reflooded || b.reflooded ? " (re-flooded)" : ""));
+  return {a, b};
+}
 
 // A random step of a sheet operation on live entities: the sheet or chord through a random edge,
 // or a random hex with up to three neighbours (sheet-pillow).

@@ -61,7 +61,7 @@ TEST_CASE("column-collapse of the middle x-chord of a 3x3x3 grid: Δ (-4,-11,-10
         c.report.dual.chordsRemoved.end());
   CHECK(c.report.dual.chordsCreated.empty());
   CHECK_FALSE(r.inverse);
-  CHECK(r.noInverse == "a column collapse has no inverse step in the operation log; use undo");
+  CHECK(r.noInverse == "a column collapse has no inverse step in the operation log");
   // The two sheets through the chord were cut along it and re-joined crosswise: still 9 sheets.
   CHECK(extractDual(cx).sheets.size() == 9);
 }
@@ -115,9 +115,7 @@ TEST_CASE("column-collapse: refusals name their rule and leave the complex uncha
 
 TEST_CASE("column-collapse: the chord update is local; the crossed sheets are re-flooded (10^3 and 20^3)") {
   auto collapse = [](const std::string& centre) { return "column-collapse h" + centre + "e0"; };
-  const UpdateCost small = costAtCentre(10, collapse), big = costAtCentre(20, collapse);
-  MESSAGE("sheet slots 10^3 / 20^3: " << small.sheetSlots << " / " << big.sheetSlots << ", chord slots " << small.chordSlots
-                                     << " / " << big.chordSlots);
+  const auto [small, big] = costsAtCentre(10, 20, collapse);
   // Chords: cut and re-joined where the chord was, a fixed number of slots per hex of the chord.
   CHECK(small.chordSlots == 10 * 34);
   CHECK(big.chordSlots == 20 * 34);

@@ -36,7 +36,7 @@ TEST_CASE("sheet-dice of the middle x-layer of a 3x3x3 grid into 2 and 3: a 4x3x
   CHECK(r3.dH == 18);
   CHECK(isomorphic(three, makeGrid(5, 3, 3), false));
   CHECK_FALSE(r3.inverse);
-  CHECK(r3.noInverse == "the inverse is 2 sheet extractions, one per new layer (first: sheet-extract h27e0); use undo");
+  CHECK(r3.noInverse == "the inverse is 2 sheet extractions, one per new layer (first: sheet-extract h27e0)");
 }
 
 TEST_CASE("sheet-dice of a boundary layer and of an O-grid annulus; undo is exact") {
@@ -71,11 +71,9 @@ TEST_CASE("sheet-dice: refusals name their rule and leave the complex unchanged"
 
 TEST_CASE("sheet-dice: the dual update visits slots in proportion to the sheet (20^3 and 40^3)") {
   auto dice = [](const std::string& centre) { return "sheet-dice h" + centre + "e0 2"; };
-  const UpdateCost small = costAtCentre(20, dice), big = costAtCentre(40, dice);
+  const auto [small, big] = costsAtCentre(20, 40, dice);
   CHECK_FALSE(small.reflooded);
   CHECK_FALSE(big.reflooded);
-  MESSAGE("sheet slots 20^3 / 40^3: " << small.sheetSlots << " / " << big.sheetSlots << ", chord slots " << small.chordSlots
-                                     << " / " << big.chordSlots);
   CHECK(small.sheetSlots == 3 * 400);  // the new layer's slots: its own sheet and the strips of the crossing ones
   CHECK(big.sheetSlots == 3 * 1600);
   CHECK(small.chordSlots == 25 * 400);  // chords: 25 slots per hex of the sheet

@@ -163,11 +163,9 @@ TEST_CASE("sheet-extract: a vertex the input left non-manifold is refused with i
 TEST_CASE("sheet-extract: the dual update visits slots in proportion to the sheet, not the mesh (20^3 and 40^3)") {
   // The middle x-layer: n^2 hexes. The update visits a fixed number of slots per hex of the sheet.
   auto extract = [](const std::string& centre) { return "sheet-extract h" + centre + "e0"; };
-  const UpdateCost small = costAtCentre(20, extract), big = costAtCentre(40, extract);
+  const auto [small, big] = costsAtCentre(20, 40, extract);
   CHECK_FALSE(small.reflooded);
   CHECK_FALSE(big.reflooded);
-  MESSAGE("sheet slots 20^3 / 40^3: " << small.sheetSlots << " / " << big.sheetSlots << ", chord slots " << small.chordSlots
-                                     << " / " << big.chordSlots);
   CHECK(small.sheetSlots == 0);  // the sheets keep their topology: dead slots leave their lists, nothing is flooded
   CHECK(big.sheetSlots == 0);
   CHECK(small.chordSlots == 17 * 400);  // chords: 17 slots per hex of the sheet

@@ -1,14 +1,13 @@
 #include "dual/dual_tracker.hpp"
 
-#include <unordered_map>
-#include <unordered_set>
-
 #include "complex/huge_pages.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <climits>
 #include <numeric>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace hexdual {
 

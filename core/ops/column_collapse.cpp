@@ -184,7 +184,7 @@ OpResult columnCollapse(Complex& cx, EdgeRef e) {
   OpResult res;
   res.op = kind;
   res.removedHexes = hexes;
-  res.noInverse = "a column collapse has no inverse step in the operation log; use undo";
+  res.noInverse = "a column collapse has no inverse step in the operation log";
   finishCollapse(cx, tx, res, m, glues, before, aroundAfter, op);
   return res;
 }

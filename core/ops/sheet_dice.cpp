@@ -145,12 +145,12 @@ OpResult sheetDice(Complex& cx, EdgeRef e, Count count) {
   touched.insert(touched.end(), res.createdHexes.begin(), res.createdHexes.end());
   if (lv.selfTouching) {
     res.noInverse = "the sheet touches itself (a vertex ends two of its edges): extracting a new layer would merge three "
-                    "vertices; use undo";
+                    "vertices";
   } else if (k == 2) {
     res.inverse = makeStep(OpKind::SheetExtract, EdgeRef{res.createdHexes[0], 4 * sheet.axisOf(sheet.hexes[0])});
   } else {
     res.noInverse = "the inverse is " + std::to_string(k - 1) + " sheet extractions, one per new layer (first: sheet-extract h" +
-                    std::to_string(res.createdHexes[0]) + "e" + std::to_string(4 * sheet.axisOf(sheet.hexes[0])) + "); use undo";
+                    std::to_string(res.createdHexes[0]) + "e" + std::to_string(4 * sheet.axisOf(sheet.hexes[0])) + ")";
   }
   commitOrRefuse(tx, res, touched, op);
   return res;

@@ -145,17 +145,17 @@ void reportInverse(const Complex& cx, OpResult& res, const std::vector<Run>& run
       res.inverse = makeStep(OpKind::Pillow, outside(fold->before));
     else
       res.noInverse = "the sheet folds back on itself: a chord crosses it twice in a row (hexes " + hexList(fold->hexes) +
-                      "), which no sheet insertion gives back; use undo";
+                      "), which no sheet insertion gives back";
     return;
   }
   if (split >= 0) {
     res.noInverse = "around vertex " + std::to_string(split) +
-                    " the hexes off the sheet touch only at the vertex: no sheet insertion gives it back; use undo";
+                    " the hexes off the sheet touch only at the vertex: no sheet insertion gives it back";
     return;
   }
   const auto up = sheetUp(cx, sheet);
   if (up.empty()) {
-    res.noInverse = "the sheet is one-sided: no sheet insertion gives it back; use undo";
+    res.noInverse = "the sheet is one-sided: no sheet insertion gives it back";
     return;
   }
   // Per run, its end on the up side and on the down side (a run of one hex: its two faces across).
@@ -167,7 +167,7 @@ void reportInverse(const Complex& cx, OpResult& res, const std::vector<Run>& run
     boundaryDown = boundaryDown || cx.isBoundary(downEnd(r));
   }
   if (boundaryUp && boundaryDown) {
-    res.noInverse = "the sheet meets the boundary on both of its sides: no sheet insertion gives it back; use undo";
+    res.noInverse = "the sheet meets the boundary on both of its sides: no sheet insertion gives it back";
     return;
   }
   OpStep inv{OpKind::SheetInsert, {}, 0};
