@@ -198,6 +198,12 @@ inline std::vector<EdgeRef> chordEdges(const Complex& cx) {
     for (int k : {0, 1}) out.push_back({ch.slots[0].hex, 4 * ch.slots[0].axis + k});
   return out;
 }
+// One step per edge: everyStepAfterRandomAtomic's lists of every sheet's or every chord's step.
+inline std::vector<OpStep> stepsOn(const std::vector<EdgeRef>& edges, const std::function<OpStep(EdgeRef)>& make) {
+  std::vector<OpStep> out;
+  for (EdgeRef e : edges) out.push_back(make(e));
+  return out;
+}
 // Δ(V, E, F, H) of a result.
 inline void checkDelta(const OpResult& r, int64_t dV, int64_t dE, int64_t dF, int64_t dH) {
   CHECK(r.dV == dV);

@@ -138,9 +138,7 @@ TEST_CASE("column-collapse: random runs on grids and an O-grid (fixed seeds)") {
 
 TEST_CASE("column-collapse: every chord, both diagonals, after random collapses, pushes and pillows (fixed seeds)") {
   auto tally = everyStepAfterRandomAtomic(20261606, 12, [](const Complex& cx) {
-    std::vector<OpStep> steps;
-    for (EdgeRef e : chordEdges(cx)) steps.push_back(makeStep(OpKind::ColumnCollapse, e));
-    return steps;
+    return stepsOn(chordEdges(cx), [](EdgeRef e) { return makeStep(OpKind::ColumnCollapse, e); });
   });
   CHECK(tally["column-collapse applied, no inverse"] > 300);
 }

@@ -89,8 +89,7 @@ TEST_CASE("sheet-dice: random runs on grids and an O-grid (fixed seeds)") {
 
 TEST_CASE("sheet-dice and sheet-pillow after random collapses, pushes and pillows (fixed seeds)") {
   auto tally = everyStepAfterRandomAtomic(20261806, 12, [](const Complex& cx) {
-    std::vector<OpStep> steps;
-    for (EdgeRef e : sheetEdges(cx)) steps.push_back(makeStep(OpKind::SheetDice, e, Count{2}));
+    auto steps = stepsOn(sheetEdges(cx), [](EdgeRef e) { return makeStep(OpKind::SheetDice, e, Count{2}); });
     for (HexId h : cx.hexes()) steps.push_back(makeStep(OpKind::SheetPillow, h));
     return steps;
   });

@@ -181,9 +181,7 @@ TEST_CASE("sheet-extract: random runs on grids and an O-grid (fixed seeds)") {
 
 TEST_CASE("sheet-extract: every sheet after random atomic steps (collapses, pushes, pillows; fixed seeds)") {
   auto tally = everyStepAfterRandomAtomic(20261206, 24, [](const Complex& cx) {
-    std::vector<OpStep> steps;
-    for (EdgeRef e : sheetEdges(cx)) steps.push_back(makeStep(OpKind::SheetExtract, e));
-    return steps;
+    return stepsOn(sheetEdges(cx), [](EdgeRef e) { return makeStep(OpKind::SheetExtract, e); });
   });
   CHECK(tally["sheet-extract applied"] > 100);
   CHECK(tally["sheet-extract self-touching"] > 0);
