@@ -20,6 +20,11 @@
 #include "layout/sheet_diagram.hpp"
 #include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
+#include "ops/sheet_ops.hpp"
+#include "complex/canonical.hpp"
+#include "io/io.hpp"
+#include <map>
+#include <optional>
 
 using namespace hexdual;
 // CPU time of this process: the machine is shared, so wall time measures the neighbours.
@@ -225,8 +230,140 @@ static int benchLayoutFile(const char* file, int reps) {
   return 0;
 }
 
+// The sheet operations on an N^3 grid: extraction of the middle x-layer (N^2 hexes) and its
+// inverse insertion, dicing it in two, pillowing the centre hex, collapsing the middle x-chord.
+// Each is applied and undone REPS times (minimum CPU time): the operation alone, and with the
+// dual tracker's update; slots: what the update visited.
+static int benchSheetOps(int n, int reps) {
+  Complex cx = makeGrid(n, n, n);
+  DualTracker tracker(cx);
+  const int c = n / 2;
+  const std::string mid = std::to_string(c + n * (c + n * c));
+  OpResult extracted = applyStep(cx, "sheet-extract h" + mid + "e0");
+  const std::string insert = formatOpStep(*extracted.inverse);
+  cx.undo(extracted.edits);
+  struct Case {
+    const char* name;
+    std::string setup, step;
+  };
+  std::vector<Case> cases = {
+      {"sheetExtract", "", "sheet-extract h" + mid + "e0"},
+      {"sheetInsert", "sheet-extract h" + mid + "e0", insert},
+      {"sheetDice2", "", "sheet-dice h" + mid + "e0 2"},
+      {"sheetPillow", "", "sheet-pillow h" + mid},
+      {"columnCollapse", "", "column-collapse h" + mid + "e0"},
+  };
+  for (const Case& k : cases) {
+    Complex::EditLog setupLog;
+    if (!k.setup.empty()) {
+      OpResult s = applyStep(cx, k.setup);
+      tracker.update(cx, s.edits, keepsSheetTopology(s));
+      setupLog = s.edits;
+    }
+    std::vector<double> opOnly, withDual;
+    size_t slots = 0;
+    for (int r = 0; r < reps; ++r) {
+      auto t0 = Clock::now();
+      OpResult res = applyStep(cx, k.step);
+      auto t1 = Clock::now();
+      cx.undo(res.edits);
+      opOnly.push_back(ms(t1 - t0));
+    }
+    for (int r = 0; r < reps; ++r) {
+      auto t2 = Clock::now();
+      OpResult res = applyStep(cx, k.step);
+      tracker.update(cx, res.edits, keepsSheetTopology(res));
+      auto t3 = Clock::now();
+      slots = tracker.slotsTouched();
+      cx.undo(res.edits);
+      tracker.update(cx, res.edits, keepsSheetTopology(res));
+      tracker.releaseRetiredTail();
+      withDual.push_back(ms(t3 - t2));
+    }
+    if (!k.setup.empty()) {
+      cx.undo(setupLog);
+      tracker.update(cx, setupLog, true);
+      tracker.releaseRetiredTail();
+    }
+    std::sort(opOnly.begin(), opOnly.end());
+    std::sort(withDual.begin(), withDual.end());
+    std::printf("{\"bench\":\"sheetop\",\"n\":%d,\"op\":\"%s\",\"opMs\":%.3f,\"opPlusDualMs\":%.3f,\"slotsTouched\":%zu}\n", n,
+                k.name, opOnly[0], withDual[0], slots);
+  }
+  return 0;
+}
+
+// Every sheet of a mesh file: extracted (or refused, by rule), checked (validate, H - |sheet|, one
+// sheet fewer, the tracked dual against a fresh extraction), undone (exact state and canonical
+// hash), then extracted again and inserted back with its inverse (isomorphic around a hex that
+// stayed). One JSON line per mesh: counts per rule, inverses, and the CPU time of the steps.
+static int benchSheetsDevset(const char* path) {
+  Complex cx = io::readFile(path);
+  DualTracker tracker(cx);
+  const uint64_t hash = canonicalHash(cx);
+  const Dual d = extractDual(cx);
+  std::map<std::string, int> tally;
+  int inverses = 0, isomorphicBack = 0, checksFailed = 0;
+  double opMs = 0, dualMs = 0, maxOpMs = 0;
+  auto live = [](const Dual& x) { return std::count_if(x.sheets.begin(), x.sheets.end(), [](const Sheet& s) { return s.alive; }); };
+  const auto sheets0 = live(tracker.dual());
+  for (const Sheet& s : d.sheets) {
+    const OpStep step = makeStep(OpKind::SheetExtract, EdgeRef{s.slots[0].hex, 4 * s.slots[0].axis});
+    std::string why;
+    auto t0 = Clock::now();
+    std::optional<OpResult> r = tryApplyStep(cx, step, &why);
+    auto t1 = Clock::now();
+    if (!r) {
+      ++tally[ruleOf(why)];
+      continue;
+    }
+    ++tally["applied"];
+    tracker.update(cx, r->edits, keepsSheetTopology(*r));
+    auto t2 = Clock::now();
+    opMs += ms(t1 - t0), dualMs += ms(t2 - t1), maxOpMs = std::max(maxOpMs, ms(t1 - t0));
+    try {
+      cx.validate();
+      compareDuals(cx, tracker.dual(), extractDual(cx));
+      if (r->dH != -int64_t(s.slots.size()) || live(tracker.dual()) != sheets0 - 1) throw Error("counts");
+      if (r->inverse) {
+        Complex back = cx, original = cx;
+        applyStep(back, *r->inverse);
+        original.undo(r->edits);
+        ++inverses;
+        for (HexId h : back.hexes())
+          if (original.isHex(h)) {  // a hex the extraction left in place anchors the isomorphism
+            isomorphicBack += isomorphicAt(back, h, original, h);
+            break;
+          }
+      }
+    } catch (const Error&) {
+      ++checksFailed;
+    }
+    cx.undo(r->edits);
+    tracker.update(cx, r->edits, true);
+    tracker.releaseRetiredTail();
+    checksFailed += canonicalHash(cx) != hash;
+  }
+  std::printf("{\"bench\":\"sheetsDevset\",\"file\":\"%s\",\"hexes\":%lld,\"sheets\":%zu,\"rules\":{", path,
+              (long long)cx.numHexes(), d.sheets.size());
+  bool first = true;
+  for (auto& [k, v] : tally) std::printf("%s\"%s\":%d", first ? "" : ",", k.c_str(), v), first = false;
+  std::printf("},\"inverses\":%d,\"isomorphicBack\":%d,\"checksFailed\":%d,\"opMsTotal\":%.2f,\"opMsMax\":%.2f,\"dualMsTotal\":%.2f}\n",
+              inverses, isomorphicBack, checksFailed, opMs, maxOpMs, dualMs);
+  return checksFailed ? 1 : 0;
+}
+
 int main(int argc, char** argv) {
   if (argc >= 3 && !std::strcmp(argv[1], "layout-file")) return benchLayoutFile(argv[2], argc > 3 ? std::atoi(argv[3]) : 3);
+  if (argc >= 3 && !std::strcmp(argv[1], "sheets-devset")) {
+    try {
+      return benchSheetsDevset(argv[2]);
+    } catch (const std::exception& e) {  // a file the readers refuse
+      std::fprintf(stderr, "%s\n", e.what());
+      return 2;
+    }
+  }
+  if (argc >= 3 && !std::strcmp(argv[1], "sheetops")) return benchSheetOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "layout")) return benchLayout(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "build")) return benchBuild(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "ops")) return benchOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 21);

@@ -45,5 +45,18 @@ fig op-facecollapse-after "$T/facecollapse.hxd" 6                  # ... merge i
 fig torus-polygon docs/examples/torus-shell.hxd 0              # a torus sheet cut open: a b a^-1 b^-1
 fig klein-polygon docs/examples/klein-shell.hxd 0              # a Klein-bottle sheet: three seams, two twisted
 fig mobius-polygon docs/examples/twisted-ring.hxd 0            # a Moebius-band sheet: a boundary a boundary
+# docs/operations.md, sheet operations: a sheet they cross or cut, before and after (ids as `hexdual select` reads them).
+$H apply "$T/g4.hxd" --ops 'v1;sheet-extract h21e0' -o "$T/sheetextract.hxd" >/dev/null
+$H apply "$T/g3.hxd" --ops 'v1;sheet-pillow h0' -o "$T/sheetpillow.hxd" >/dev/null
+$H apply "$T/g3.hxd" --ops 'v1;column-collapse h13e0' -o "$T/columncollapse.hxd" >/dev/null
+$H apply "$T/g3.hxd" --ops 'v1;sheet-dice h13e0 2' -o "$T/sheetdice.hxd" >/dev/null
+fig op-sheetextract-before "$T/g4.hxd" 9                           # the z=1 layer, crossed by the x=1 layer's chords
+fig op-sheetextract-after "$T/sheetextract.hxd" 8                  # ... one chord fewer each way: 12 hexes
+fig op-sheetpillow-new "$T/sheetpillow.hxd" 9                      # the new disk round the corner hex
+fig op-sheetpillow-crossed "$T/sheetpillow.hxd" 0                  # the x=0 layer, 2 hexes more
+fig op-columncollapse-before "$T/g3.hxd" 5                         # the y=1 layer holding the chord
+fig op-columncollapse-after "$T/columncollapse.hxd" 5              # ... without it
+fig op-sheetdice-before "$T/g3.hxd" 7                              # the z=1 layer crossing the diced sheet
+fig op-sheetdice-after "$T/sheetdice.hxd" 7                        # ... one more chord across it
 node docs/primal-figures.mjs                                   # primal before/after of each operation
 rm -rf "$T"

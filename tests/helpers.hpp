@@ -79,6 +79,9 @@ inline std::string stateDump(const Complex& cx) {
 }
 }  // namespace hexdual::test
 
+// The development-set meshes: devMeshDir(), readDevMesh().
+#include "dev_mesh.hpp"
+
 #ifdef HEXDUAL_CLI
 #include <array>
 #include <cstdio>

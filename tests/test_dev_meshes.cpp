@@ -13,6 +13,8 @@
 #include "layout/sheet_diagram.hpp"
 
 using namespace hexdual;
+using hexdual::test::devMeshDir;
+using hexdual::test::readDevMesh;
 namespace fs = std::filesystem;
 
 namespace {

@@ -70,5 +70,6 @@ EMSCRIPTEN_BINDINGS(hexdual) {
       .function("indices", &WasmMesh::indices)
       .function("triangleHex", &WasmMesh::triangleHex)
       .function("complexAddress", &WasmMesh::complexAddress)
-      .function("dualAddress", &WasmMesh::dualAddress);
+      .function("dualAddress", &WasmMesh::dualAddress)
+      .function("trackerAddress", &WasmMesh::trackerAddress);
 }

@@ -40,6 +40,11 @@ double WasmMesh::dualAddress() {
       "PRECONDITION", [&] { return double(uintptr_t(&dual())); }, 0.0);
 }
 
+double WasmMesh::trackerAddress() {
+  return guarded(
+      "PRECONDITION", [&] { return double(uintptr_t(&tracker())); }, 0.0);
+}
+
 val WasmMesh::slotsToArray(int id, bool sheet) {
   const Dual& d = dual();
   size_t n = sheet ? d.sheets.size() : d.chords.size();

@@ -125,7 +125,8 @@ std::string WasmMesh::candidatesJson(const std::string& op, const std::string& n
       [&] {
         std::vector<OpKind> ops;
         for (const OpInfo& info : allOps())
-          if (info.candidates != CandidateSet::None && (op.empty() || op == info.name)) ops.push_back(info.kind);
+          if (info.candidates != CandidateSet::None && (op.empty() ? info.family == OpFamily::Atomic : op == info.name))
+            ops.push_back(info.kind);  // without a name: the atomic family (the sheet operations are listed by name)
         if (ops.empty()) throw Error("candidates: unknown operation '" + op + "'");
         if (!nearKind.empty()) requireNear(nearKind, hex, local);
         io::JsonWriter w;

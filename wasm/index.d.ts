@@ -126,6 +126,10 @@ export function hexTables(): { faceCorners: Int32Array; edgeCorners: Int32Array 
 export type Format = 'vtk' | 'mesh' | 'hxd';
 export type OpName =
   | 'pillow' | 'unpillow' | 'chordpush' | 'chordpull' | 'hexpush' | 'hexpull' | 'ringcollapse' | 'facecollapse' | 'facesplit';
+/** The sheet operations: a family apart that changes the boundary quad mesh (docs/operations.md). */
+export type SheetOpName = 'sheet-extract' | 'sheet-insert' | 'sheet-pillow' | 'column-collapse' | 'sheet-dice';
+/** The sheet operations candidates() lists when named (sheet-insert and sheet-pillow take a surface or set you choose). */
+export type SheetCandidateOp = 'sheet-extract' | 'column-collapse' | 'sheet-dice';
 export type FlipName = '1-7' | '2-6' | '3-5c' | '3-5e' | '4-4m' | '4-4v' | '5-3c' | '5-3e' | '6-2' | '7-1';
 
 export interface IdChanges {
@@ -138,8 +142,8 @@ export interface IdChanges {
 export interface StepReport {
   /** The step as applied, normalised ('pillow h13f5'); a direct flip reads 'flip 2-6 [13,22]'. */
   step: string;
-  /** The operation-log name: 'pillow', 'chordpush', ..., or 'flip' for a direct flip. */
-  op: OpName | 'flip';
+  /** The operation-log name: 'pillow', 'chordpush', ..., 'sheet-extract', ..., or 'flip' for a direct flip. */
+  op: OpName | SheetOpName | 'flip';
   /** The step that undoes this one (up to ids), or null when there is none (use undo()). */
   inverse: string | null;
   /** Why there is no inverse step (only when `inverse` is null). */
@@ -149,6 +153,42 @@ export interface StepReport {
   delta: { V: number; E: number; F: number; H: number };
   changedSheets: IdChanges;
   changedChords: IdChanges;
+}
+/** What applying a step would do (mesh.preview): the report apply would return, or the refusal. */
+export type Preview =
+  | {
+      applies: true;
+      family: 'atomic' | 'sheet';
+      /** The step, normalised. */
+      step: string;
+      hexesRemoved: number;
+      hexesCreated: number;
+      report: StepReport;
+    }
+  | {
+      applies: false;
+      family: 'atomic' | 'sheet';
+      step: string;
+      /** The rule a sheet operation names ('self-touching', 'no-sides', ...); null for other refusals. */
+      rule: string | null;
+      error: string;
+    };
+/** A picked sheet (through an edge) or chord (through a quad), and the steps that act on it. */
+export interface Selection {
+  kind: 'sheet' | 'chord';
+  id: number;
+  /** The pick: 'h13e8' or 'h13f5'. */
+  through: string;
+  /** Sheets only. */
+  topology?: SheetTopology;
+  boundaryLoops?: number;
+  /** Chords only. */
+  closed?: boolean;
+  selfIntersecting: boolean;
+  /** One per slot (a self-intersecting one lists a hex twice); a chord's in order along it. */
+  hexes: number[];
+  /** Operation-log steps: 'sheet-extract h13e8', 'sheet-dice h13e8 2', or the chord's two 'column-collapse' diagonals. */
+  steps: string[];
 }
 /** Where candidates() looks: a hex, a quad (hex + local face) or an edge (hex + local edge). */
 export type Near = { hex: number } | { hex: number; face: number } | { hex: number; edge: number };
@@ -261,7 +301,11 @@ export class Mesh {
   readonly canRedo: boolean;
   readonly log: string;
   readonly logUrl: string;
-  candidates(op?: OpName, options?: { near?: Near }): string[];
+  candidates(op?: OpName | SheetCandidateOp, options?: { near?: Near }): string[];
+  /** What applying `step` would do, without doing it (the mesh, its dual and the undo list are not changed). */
+  preview(step: string): Preview;
+  /** The sheet through a picked edge or the chord through a picked quad. */
+  select(pick: { hex: number; edge: number } | { hex: number; face: number }): Selection;
   flip(name: FlipName, hexes: Iterable<number>, options?: { viaAtomic?: boolean }): StepReport[];
   canonicalHash(): string;
   memoryBytes(): number;

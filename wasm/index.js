@@ -146,7 +146,8 @@ function toReport({ flip, report: r }) {
   if (report.inverse === null) report.noInverse = flip ? 'a flip applied directly has no inverse step; use undo()' : r.noInverse;
   return report;
 }
-const OPS = ['pillow', 'unpillow', 'chordpush', 'chordpull', 'hexpush', 'hexpull', 'ringcollapse', 'facecollapse', 'facesplit'];
+const OPS = ['pillow', 'unpillow', 'chordpush', 'chordpull', 'hexpush', 'hexpull', 'ringcollapse', 'facecollapse', 'facesplit',
+  'sheet-extract', 'column-collapse', 'sheet-dice'];  // the sheet operations candidates() enumerates when named
 const FORMATS = ['vtk', 'mesh', 'hxd'];
 
 // ---- view data (explorer) ----
@@ -284,6 +285,38 @@ export class Mesh {
     this.#changed();
     return reports;
   }
+  /**
+   * What applying `step` would do, without doing it: `{ applies: true, report }` (the report apply
+   * would return, with the same ids) or `{ applies: false, rule, error }` (the refusal and, for a
+   * sheet operation, its rule). The mesh, its dual and the undo list are not changed.
+   */
+  preview(step) {
+    if (typeof step !== 'string') throw new HexdualError('PRECONDITION', 'preview: step must be a string such as "sheet-extract h13e8"');
+    const raw = this.#live();
+    const tracker = raw.trackerAddress();
+    if (!tracker) check(null);
+    const out = JSON.parse(module().sheetopsPreview(raw.complexAddress(), tracker, step));
+    if (out.code !== undefined) throw new HexdualError(out.code, out.error);  // the binding's failure, not a refusal
+    const base = { applies: out.applies, family: out.family, step: out.text };
+    if (!out.applies) return { ...base, rule: out.rule, error: out.error };
+    return { ...base, hexesRemoved: out.hexesRemoved, hexesCreated: out.hexesCreated, report: toReport({ flip: null, report: out.report }) };
+  }
+  /**
+   * The sheet through a picked edge ({ hex, edge }) or the chord through a picked quad ({ hex, face }):
+   * its id, hexes, topology, and the operation-log steps of the sheet operations that act on it.
+   */
+  select(pick) {
+    const hex = integer('select: pick.hex', pick?.hex);
+    if ((pick.edge === undefined) === (pick.face === undefined)) throw new HexdualError('PRECONDITION', 'select: pick an edge ({ hex, edge }) or a quad ({ hex, face })');
+    const kind = pick.edge !== undefined ? 'edge' : 'face';
+    const local = integer(`select: pick.${kind}`, pick[kind]);
+    const raw = this.#live();
+    const dual = raw.dualAddress();
+    if (!dual) check(null);
+    const out = JSON.parse(module().sheetopsSelect(raw.complexAddress(), dual, hex, kind, local));
+    if (out.code !== undefined) throw new HexdualError(out.code, out.error);  // the binding's failure, not a refusal
+    return out;
+  }
   /** Undoes the last applied step exactly (ids included); returns that step's text. */
   undo() {
     const step = check(this.#live().undo());
@@ -311,7 +344,8 @@ export class Mesh {
     return check(this.#live().log(true));
   }
   /**
-   * Steps that apply, as operation-log text: of one operation or of all; with `near` only those
+   * Steps that apply, as operation-log text: of one operation or of all the atomic ones (a sheet
+   * operation is listed when named: 'sheet-extract', 'column-collapse', 'sheet-dice'); with `near` only those
    * naming a hex ({ hex: 13 }), a quad ({ hex: 13, face: 5 }) or an edge ({ hex: 13, edge: 2 }).
    */
   candidates(op, { near } = {}) {

@@ -53,6 +53,8 @@ class WasmMesh {
   // For wasm/bindings_view.cpp (same module): where the complex and its current dual live.
   double complexAddress() const { return double(uintptr_t(&cx_)); }
   double dualAddress();
+  // For wasm/bindings_sheetops.cpp: the tracker (a preview copies it, to report the ids a step would give).
+  double trackerAddress();
   val positions() const { return val(emscripten::typed_memory_view(rb_.positions.size(), rb_.positions.data())); }
   val normals() const { return val(emscripten::typed_memory_view(rb_.normals.size(), rb_.normals.data())); }
   val indices() const { return val(emscripten::typed_memory_view(rb_.indices.size(), rb_.indices.data())); }

@@ -24,6 +24,7 @@
 #include "ops/report.hpp"
 #include "io/io.hpp"
 #include "io/json.hpp"
+#include "io/preview_json.hpp"
 #include "layout/sheet_diagram.hpp"
 
 using namespace hexdual;
@@ -40,6 +41,10 @@ const char* kUsage =
     "  hexdual apply FILE --ops LOG -o OUT [--json]\n"
     "                                            apply an operation log (text, URL form, or @file)\n"
     "  hexdual candidates FILE OP                steps of operation OP that apply to FILE\n"
+    "  hexdual apply FILE --ops LOG --dry-run [--json]\n"
+    "                                            the same reports, nothing written\n"
+    "  hexdual preview FILE --ops LOG [--json]   what the log's last step would change (after the others)\n"
+    "  hexdual select FILE h12e3|h12f5 [--json]  the sheet through an edge, the chord through a quad\n"
     "  hexdual sheets FILE [--sheet ID | --all] [--local H1,H2,.. --rings K] --json|--svg OUTDIR\n"
     "                                            sheet diagrams as JSON or SVG files\n"
     "  hexdual flip list [--json]                the cubical flips and their stored decompositions\n"
@@ -59,6 +64,7 @@ struct Args {
   std::string output, ops, at, local, jsonDir, svgDir, checkpoint, resume;
   double checkpointEvery = 0;
   bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false, lookupLast = false, reversible = false;
+  bool dryRun = false;
   int sheet = -1, rings = 2;
   int maxDepth = 4;
   double maxSeconds = 60;
@@ -118,6 +124,8 @@ Args parseArgs(int argc, char** argv, int from) {
       a.lookupLast = true;
     } else if (s == "--reversible") {
       a.reversible = true;
+    } else if (s == "--dry-run") {
+      a.dryRun = true;
     } else if (s == "--via-atomic") {
       a.viaAtomic = true;
     } else if (s == "--all") {
@@ -179,7 +187,7 @@ OpLog readLog(const std::string& arg) {
 int runApply(const Args& a) {
   need(a, 1, "one input file");
   if (a.ops.empty()) throw Error("apply needs --ops LOG");
-  if (a.output.empty()) throw Error("apply needs -o OUT");
+  if (a.output.empty() && !a.dryRun) throw Error("apply needs -o OUT (or --dry-run)");
   Complex cx = readInput(a, a.positional[0]);
   OpLog log = readLog(a.ops);
   DualTracker tracker(cx);
@@ -194,8 +202,50 @@ int runApply(const Args& a) {
     }
     text += io::stepReportText(reports.back(), k + 1);
   }
-  io::writeFile(cx, a.output, a.binary);
+  if (!a.dryRun) io::writeFile(cx, a.output, a.binary);
   std::cout << (a.json ? io::applyReportJson(reports, cx) + "\n" : text);
+  return 0;
+}
+
+// hexdual preview FILE --ops LOG: the steps but the last are applied, the last is previewed (ops/preview.hpp).
+int runPreview(const Args& a) {
+  need(a, 1, "one input file");
+  if (a.ops.empty()) throw Error("preview needs --ops LOG (its last step is previewed)");
+  Complex cx = readInput(a, a.positional[0]);
+  OpLog log = readLog(a.ops);
+  if (log.steps.empty()) throw Error("preview: the log has no step");
+  DualTracker tracker(cx);
+  for (size_t k = 0; k + 1 < log.steps.size(); ++k) {
+    try {
+      applyStepTracked(cx, tracker, log.steps[k]);
+    } catch (const Error& e) {
+      throw Error("step " + std::to_string(k + 1) + " (" + formatOpStep(log.steps[k]) + "): " + e.what());
+    }
+  }
+  const Preview p = previewStep(cx, tracker, log.steps.back());
+  std::cout << (a.json ? io::previewJson(p, log.steps.back()) + "\n" : io::previewText(p, log.steps.back()));
+  return p.applies ? 0 : 1;
+}
+
+// hexdual select FILE h12e3 | h12f5: the sheet through an edge or the chord through a quad.
+int runSelect(const Args& a) {
+  need(a, 2, "an input file and an edge (h12e3) or a quad (h12f5)");
+  Complex cx = readInput(a, a.positional[0]);
+  const std::string& t = a.positional[1];
+  const size_t kind = t.find_first_of("ef");
+  int hex = -1, local = -1;
+  try {
+    size_t used = 0, usedLocal = 0;
+    if (t.size() < 4 || t[0] != 'h' || kind == std::string::npos) throw Error("");
+    hex = std::stoi(t.substr(1, kind - 1), &used);
+    local = std::stoi(t.substr(kind + 1), &usedLocal);
+    if (used != kind - 1 || usedLocal != t.size() - kind - 1) throw Error("");
+  } catch (const std::exception&) {
+    throw Error("select takes an edge (h12e3) or a quad (h12f5), not '" + t.substr(0, 40) + "'");
+  }
+  const Dual dual = extractDual(cx);
+  const Selection s = t[kind] == 'e' ? selectSheet(cx, dual, {hex, local}) : selectChord(cx, dual, {hex, local});
+  std::cout << (a.json ? io::selectionJson(s) + "\n" : io::selectionText(s));
   return 0;
 }
 
@@ -441,6 +491,8 @@ int run(int argc, char** argv) {
   if (cmd == "apply") return runApply(a);
   if (cmd == "flip") return runFlip(a);
   if (cmd == "sheets") return runSheets(a);
+  if (cmd == "preview") return runPreview(a);
+  if (cmd == "select") return runSelect(a);
   if (cmd == "candidates") {
     need(a, 2, "an input file and an operation name");
     Complex cx = readInput(a, a.positional[0]);

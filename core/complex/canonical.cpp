@@ -208,4 +208,11 @@ bool isomorphic(const Complex& a, const Complex& b, bool fixedBoundary) {
   return canonicalForm(a, fixedBoundary) == canonicalForm(b, fixedBoundary);
 }
 
+bool isomorphicAt(const Complex& a, HexId ha, const Complex& b, HexId hb) {
+  if (a.numHexes() != b.numHexes() || a.numVertices() != b.numVertices() || !a.isHex(ha) || !b.isHex(hb)) return false;
+  const Frame identity = frameOf(0);  // canonical bit-corners are the local corners
+  return encodeFrom(a, ha, identity, std::vector<uint8_t>(size_t(a.vertexCapacity()), 0)) ==
+         encodeFrom(b, hb, identity, std::vector<uint8_t>(size_t(b.vertexCapacity()), 0));
+}
+
 }  // namespace hexdual

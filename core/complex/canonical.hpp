@@ -17,6 +17,11 @@ std::vector<int64_t> canonicalForm(const Complex& cx, bool fixedBoundary = true)
 // 64-bit FNV-1a hash of the canonical form.
 uint64_t canonicalHash(const Complex& cx, bool fixedBoundary = true);
 bool isomorphic(const Complex& a, const Complex& b, bool fixedBoundary = true);
+// Whether a and b are isomorphic by a map sending hex ha of a to hex hb of b, local corner to the
+// same local corner (vertex ids free): one traversal each, linear. For a complex compared with
+// itself after steps that renumber boundary vertices (the sheet operations) around a hex they
+// left in place.
+bool isomorphicAt(const Complex& a, HexId ha, const Complex& b, HexId hb);
 
 // The labelling behind the canonical form: hexes in canonical order, and for each a frame mapping
 // canonical bit-corners (x + 2y + 4z) to its actual local corners. Two isomorphic complexes have

@@ -41,6 +41,17 @@ std::vector<OpStep> tries(const Complex& cx, OpKind op, CandidateSet set) {
         if (ch.closed)
           for (int k : {0, 1}) out.push_back(makeStep(op, EdgeRef{ch.slots[0].hex, 4 * ch.slots[0].axis + k}));
       break;
+    case CandidateSet::SheetEdges:
+    case CandidateSet::SheetEdgesByTwo:
+      for (const Sheet& s : extractDual(cx).sheets) {
+        const EdgeRef e{s.slots[0].hex, 4 * s.slots[0].axis};
+        out.push_back(set == CandidateSet::SheetEdges ? makeStep(op, e) : makeStep(op, e, Count{2}));
+      }
+      break;
+    case CandidateSet::ChordEdges:
+      for (const Chord& ch : extractDual(cx).chords)
+        for (int k : {0, 1}) out.push_back(makeStep(op, EdgeRef{ch.slots[0].hex, 4 * ch.slots[0].axis + k}));
+      break;
     case CandidateSet::SameVertexQuadPairs: {
       auto qs = cx.quads();
       for (size_t i = 0; i < qs.size(); ++i)
@@ -62,7 +73,9 @@ std::vector<OpStep> tries(const Complex& cx, OpKind op, CandidateSet set) {
 std::vector<OpStep> candidates(const Complex& cx, OpKind op) {
   const OpInfo& info = opInfo(op);
   if (info.candidates == CandidateSet::None)
-    throw Error(std::string("candidates: ") + info.name + " steps are not enumerated; ringcollapse prints its inverse");
+    throw Error(std::string("candidates: ") + info.name + " steps are not enumerated; " +
+                (info.family == OpFamily::Sheet ? "they take a surface or set you choose (sheet-extract prints the one that undoes it)"
+                                                : "ringcollapse prints its inverse"));
   Complex work = cx;
   std::vector<OpStep> ok;
   for (const OpStep& t : tries(cx, op, info.candidates))

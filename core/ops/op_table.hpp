@@ -20,7 +20,14 @@ enum class CandidateSet : uint8_t {
   EdgeStarQuadPairs,    // every closed interior edge with two quads of its cycle
   ClosedChordEdges,     // two edges along each closed chord (the two diagonals)
   SameVertexQuadPairs,  // every two interior quads on the same 4 vertices, both sides of the second
+  SheetEdges,           // one edge per sheet (of its smallest slot)
+  SheetEdgesByTwo,      // one edge per sheet, with the number 2 (sheet-dice)
+  ChordEdges,           // two edges along every chord (the two diagonals)
 };
+
+// The atomic operations keep the boundary quad mesh; the sheet operations change it (they remove,
+// insert, collapse or split whole sheets and chords, including where they meet the boundary).
+enum class OpFamily : uint8_t { Atomic, Sheet };
 
 // How an operation changes the vertex and hex counts: the same for every application (OPERATIONS.md),
 // or, for ring collapse and ring split, by the ring's length.
@@ -33,7 +40,7 @@ struct OpInfo {
   OpKind kind;
   const char* name;  // the log name, e.g. "chordpush"; also the prefix of the operation's errors
   char urlCode;      // the letter of the URL form, e.g. 'C'
-  std::vector<OpArg::Kind> args;  // a single Pair means "one or more pairs"
+  std::vector<OpArg::Kind> args;  // with `variadic`, one kind repeated one or more times
   bool keepsSheetTopology;        // never cuts, merges or re-shapes an existing sheet (DualTracker)
   CandidateSet candidates;
   CountChange counts;
@@ -41,6 +48,8 @@ struct OpInfo {
   // The operation's first checks without throwing (arguments checked): the message `apply` would
   // throw for them, or empty when they pass (apply may still reject later). Null: none.
   std::string (*precheck)(const Complex&, const OpStep&);
+  bool variadic = false;              // the operation takes a list (ringsplit's pairs, sheet-insert's quads)
+  OpFamily family = OpFamily::Atomic;
 };
 
 // Every operation, in OpKind order.
@@ -57,5 +66,6 @@ const char* argKindName(OpArg::Kind kind);
 void checkArgs(const OpStep& step);
 // Whether the dual tracker may update sheets locally after this result (false for composites).
 inline bool keepsSheetTopology(const OpResult& r) { return r.op && opInfo(*r.op).keepsSheetTopology; }
+inline bool isSheetOp(OpKind kind) { return opInfo(kind).family == OpFamily::Sheet; }
 
 }  // namespace hexdual

@@ -61,17 +61,22 @@ OpStep parseOpStep(std::string_view text, size_t offset) {
   const OpInfo* spec = findOp(tokens[0].first);
   if (!spec) fail(tokens[0].second, "unknown operation", tokens[0].first);
   step.op = spec->kind;
-  bool pairs = spec->args.size() == 1 && spec->args[0] == OpArg::Pair;
+  const bool list = spec->variadic;
   size_t want = spec->args.size();
-  if (pairs ? tokens.size() < 2 : tokens.size() - 1 != want)
-    fail(tokens[0].second, std::string(spec->name) + " takes " + (pairs ? "one or more" : std::to_string(want)) +
+  if (list ? tokens.size() < 2 : tokens.size() - 1 != want)
+    fail(tokens[0].second, std::string(spec->name) + " takes " + (list ? "one or more" : std::to_string(want)) +
                                " argument(s), not " + std::to_string(tokens.size() - 1),
          text);
   for (size_t k = 1; k < tokens.size(); ++k) {
     auto [tok, pos] = tokens[k];
-    OpArg::Kind kind = pairs ? OpArg::Pair : spec->args[k - 1];
+    OpArg::Kind kind = list ? spec->args[0] : spec->args[k - 1];
     OpArg a;
-    if (kind == OpArg::Pair) {
+    if (kind == OpArg::Number) {
+      size_t i = 0;
+      const int64_t v = readInt(tok, i);
+      if (v < 0 || i != tok.size()) fail(pos, std::string("expected ") + argKindName(kind), tok);
+      a = OpArg::of(Count{int(v)});
+    } else if (kind == OpArg::Pair) {
       size_t slash = tok.find('/');
       OpArg second;
       if (slash == std::string_view::npos || !parseEntity(tok.substr(0, slash), a) ||
@@ -121,6 +126,10 @@ std::string encodeOpLogUrl(const OpLog& log) {
     for (size_t k = 0; k < st.args.size(); ++k) {
       const OpArg& a = st.args[k];
       if (k) s += "_";
+      if (a.kind == OpArg::Number) {  // a number keeps its digits: the decoder knows the argument kinds
+        s += std::to_string(a.local);
+        continue;
+      }
       s += std::to_string(a.hex);
       if (a.kind == OpArg::Quad || a.kind == OpArg::Pair) s += "f" + std::to_string(a.local);
       if (a.kind == OpArg::Edge) s += "e" + std::to_string(a.local);
@@ -148,10 +157,16 @@ OpLog decodeOpLogUrl(std::string_view text) {
     if (!spec) fail(pos + 1, "unknown operation code", step.substr(0, 1));
     out += ";" + std::string(spec->name);
     std::string args(step.substr(1));
+    // An entity gets its 'h' back; a number argument (none before the sheet family) does not.
+    auto argStart = [&](size_t k) {
+      const size_t i = spec->variadic ? 0 : k;
+      return i < spec->args.size() && spec->args[i] == OpArg::Number ? " " : " h";
+    };
     if (!args.empty()) {
-      out += " h";
+      size_t k = 0;
+      out += argStart(k);
       for (char c : args) {
-        if (c == '_') out += " h";
+        if (c == '_') out += argStart(++k);
         else if (c == '~') out += "/h";
         else out += c;
       }

@@ -2,7 +2,7 @@
 import {
   init, Mesh, HexdualError, heapBytes, diagramToSVG, flips, decompositions,
   type DecompositionRecord,
-  type Info, type RenderBuffers, type SheetTopology, type StepReport, type SheetDiagram, type ErrorCode,
+  type Info, type RenderBuffers, type SheetTopology, type StepReport, type SheetDiagram, type ErrorCode, type Preview, type Selection,
 } from '../../wasm/index.js';
 
 async function example(): Promise<number> {
@@ -28,6 +28,14 @@ async function example(): Promise<number> {
   const hash: string = m.canonicalHash();
   const splits: string[] = m.ringSplits({ hex: 0, edge: 0 }, { maxEdges: 6 });
   const records: DecompositionRecord[] = decompositions();
+  const p: Preview = m.preview('sheet-extract h13e0');
+  const previewed: number = p.applies ? p.report.delta.H + p.hexesRemoved : (p.rule ?? p.error).length;
+  const sel: Selection = m.select({ hex: 13, edge: 0 });
+  const chordSel: Selection = m.select({ hex: 13, face: 1 });
+  const sheetOp: StepReport['op'] = 'sheet-dice';
+  const sheetCands: string[] = m.candidates('column-collapse');
+  // @ts-expect-error: sheet-insert takes a surface you choose: not listed by candidates()
+  m.candidates('sheet-insert');
   let code: ErrorCode | undefined;
   try {
     m.validate();
@@ -44,6 +52,7 @@ async function example(): Promise<number> {
   return info.hexes + rb.indices.length + hexes.length + bytes.length + heapBytes() + (topo === 'disk' ? 1 : 0) +
     (inverse ?? '').length + reports.length + undone.length + redone.delta.H + log.length + cands.length + flipped.length +
     svg.length + centres.length + (same ? 1 : 0) + hash.length + (code ? 1 : 0) + flips().length +
-    splits.length + records.filter((r) => r.found && r.steps !== null).length;
+    splits.length + records.filter((r) => r.found && r.steps !== null).length + previewed +
+    sel.hexes.length + chordSel.steps.length + sheetOp.length + sheetCands.length;
 }
 void example;

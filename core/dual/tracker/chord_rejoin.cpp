@@ -6,6 +6,8 @@
 // Owns nothing between updates; refuses, writing nothing, when the state is not one it can follow.
 #include <algorithm>
 #include <numeric>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "dual/dual_tracker.hpp"
 #include "dual/tracker/slots.hpp"
@@ -39,6 +41,12 @@ struct DualTracker::ChordRejoin {
     int32_t link[2] = {-1, -1};  // the walk from or to each end
   };
   std::vector<Stretch> stretches;
+  // The touched slots of each changed chord, found once (a sheet operation changes thousands of
+  // chords): (old chord, index into ts), sorted.
+  std::vector<std::pair<int32_t, int32_t>> byOld;
+  // The first stretch end (2 * stretch + side) at a slot leaving through a face, by endKey.
+  std::unordered_map<int64_t, int32_t> endIndex;
+  static int64_t endKey(Slot s, int face) { return (int64_t(s.hex) * 3 + s.axis) * 8 + face; }
   std::vector<int32_t> lengths, liveOld;  // per changed chord: its length, its live touched slots
   std::vector<uint8_t> contiguous;        // per changed chord: touched in one run away from its ends
   // Walks through the touched slots from stretch ends.
@@ -59,7 +67,8 @@ struct DualTracker::ChordRejoin {
   };
   std::vector<Comp> comps;
   std::vector<size_t> order;  // comps by smallest touched slot
-  std::vector<int32_t> compId, taken;
+  std::vector<int32_t> compId;
+  std::unordered_set<int32_t> taken;  // hashed: a sheet operation re-ids thousands of chords
   int32_t fresh = 0;
   std::vector<uint8_t> self;     // per comp: 0/1 self-intersecting, 2 left for the reader
   std::vector<uint8_t> spliced;  // per comp: what an in-place splice of one old chord gives
@@ -92,10 +101,8 @@ struct DualTracker::ChordRejoin {
   bool addStretch(int32_t id, int32_t a, int32_t b, int32_t len, bool closed);
   // The stretch end (2 * stretch + side) at slot s leaving through face, else -1.
   int32_t endAt(Slot s, int face) const {
-    for (size_t r = 0; r < stretches.size(); ++r)
-      for (int side = 0; side < 2; ++side)
-        if (stretches[r].face[side] == face && stretches[r].end[side] == s) return int32_t(2 * r + size_t(side));
-    return -1;
+    auto it = endIndex.find(endKey(s, face));
+    return it == endIndex.end() ? -1 : it->second;
   }
   bool walkFromStretchEnds();
   bool walkFrom(size_t r, int side);
@@ -141,9 +148,16 @@ bool DualTracker::ChordRejoin::cutStretches() {
   lengths.assign(ids.size(), 0);
   liveOld.assign(ids.size(), 0);
   contiguous.assign(ids.size(), 0);
+  for (size_t i = 0; i < ts.size(); ++i)
+    if (inIds(ts[i].old)) byOld.push_back({ts[i].old, int32_t(i)});
+  std::sort(byOld.begin(), byOld.end());
   for (size_t k = 0; k < ids.size(); ++k)
     if (!cutStretchesOf(k)) return false;
   tr.slotsTouched_ += 2 * stretches.size();
+  for (size_t r = 0; r < stretches.size(); ++r)
+    for (int side = 0; side < 2; ++side)
+      if (stretches[r].face[side] >= 0)
+        endIndex.emplace(endKey(stretches[r].end[side], stretches[r].face[side]), int32_t(2 * r + size_t(side)));
   return true;
 }
 
@@ -165,13 +179,14 @@ bool DualTracker::ChordRejoin::cutStretchesOf(size_t k) {
   const bool closed = tr.dual_.chords[size_t(id)].closed;
   lengths[k] = len;
   std::vector<int32_t> at;
-  for (const Touched& t : ts)
-    if (t.old == id) {
-      const int32_t p = tr.placeInChord(id, t.slot);
-      if (p < 0) return false;
-      at.push_back(p);
-      liveOld[k] += t.live;
-    }
+  for (auto it = std::lower_bound(byOld.begin(), byOld.end(), std::pair<int32_t, int32_t>{id, -1});
+       it != byOld.end() && it->first == id; ++it) {
+    const Touched& t = ts[size_t(it->second)];
+    const int32_t p = tr.placeInChord(id, t.slot);
+    if (p < 0) return false;
+    at.push_back(p);
+    liveOld[k] += t.live;
+  }
   if (at.empty()) return false;
   std::sort(at.begin(), at.end());
   contiguous[k] = !closed && at.front() > 0 && at.back() + 1 < len && at.back() - at.front() + 1 == int32_t(at.size());
@@ -397,9 +412,9 @@ void DualTracker::ChordRejoin::chooseIds() {
     int32_t best = -1;
     for (const Item& it : comps[ci].items) {
       const int32_t o = oldOf(it);
-      if (o >= 0 && (best < 0 || o < best) && std::find(taken.begin(), taken.end(), o) == taken.end()) best = o;
+      if (o >= 0 && (best < 0 || o < best) && !taken.count(o)) best = o;
     }
-    if (best >= 0) taken.push_back(best);
+    if (best >= 0) taken.insert(best);
     compId[ci] = best >= 0 ? best : fresh++;
   }
 }
@@ -519,7 +534,7 @@ void DualTracker::ChordRejoin::commit(DualChange& change) {
   std::sort(splicedIds.begin(), splicedIds.end());
   change.chordsChanged.insert(change.chordsChanged.begin(), splicedIds.begin(), splicedIds.end());
   for (int32_t id : ids)
-    if (std::find(taken.begin(), taken.end(), id) == taken.end()) {
+    if (!taken.count(id)) {
       Chord& ch = d.chords[size_t(id)];
       ch.alive = false;
       ch.slots.clear();

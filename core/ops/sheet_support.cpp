@@ -1,0 +1,291 @@
+// Helpers of the sheet operations: refusals with rule names, the sheet through an edge, its
+// two sides, and vertex merges (sheet_support.hpp).
+#include "ops/sheet_support.hpp"
+
+#include <algorithm>
+#include <unordered_set>
+
+#include "complex/manifold.hpp"
+#include "dual/dual.hpp"
+#include "ops/support.hpp"
+
+namespace hexdual {
+
+std::string ruleOf(const std::string& message) {
+  // "<op>: <rule>: ...": both words are lower-case with hyphens, so a sentence is never a rule.
+  auto word = [&](size_t from) {
+    size_t i = from;
+    while (i < message.size() && ((message[i] >= 'a' && message[i] <= 'z') || message[i] == '-')) ++i;
+    return i > from && message.compare(i, 2, ": ") == 0 ? i : std::string::npos;
+  };
+  const size_t opEnd = word(0);
+  if (opEnd == std::string::npos) return "";
+  const size_t ruleEnd = word(opEnd + 2);
+  return ruleEnd == std::string::npos ? "" : message.substr(opEnd + 2, ruleEnd - opEnd - 2);
+}
+
+}  // namespace hexdual
+
+namespace hexdual::ops {
+using namespace tables;
+
+void refuse(const std::string& op, const char* rule, const std::string& details) {
+  throw Error(op + ": " + rule + ": " + details);
+}
+
+void requireEdge(const Complex& cx, EdgeRef e, const std::string& op) {
+  if (!cx.isHex(e.hex)) refuse(op, "no-such-entity", hexName(e.hex) + " does not exist");
+  if (e.edge < 0 || e.edge > 11) refuse(op, "no-such-entity", "local edge " + std::to_string(e.edge) + " is not 0..11");
+}
+
+void requireManifold(const Complex& cx, const std::vector<HexId>& hexes, const std::string& op) {
+  requireManifoldVertices(cx, hexes, op + ": non-manifold-vertex");
+}
+
+void commitOrRefuse(Transaction& tx, OpResult& r, const std::vector<HexId>& touched, const std::string& op) {
+  try {
+    tx.commit(r, touched);
+  } catch (const Error& e) {  // still open: the transaction rolls back as this unwinds
+    const std::string why = e.what();
+    const bool link = why.find("link") != std::string::npos || why.find("non-manifold") != std::string::npos;
+    refuse(op, link ? "non-manifold-result" : "invalid-result", "the result would not be a valid complex (" + why + ")");
+  }
+}
+
+SheetHexes sheetThrough(const Complex& cx, EdgeRef e, const std::string& op) {
+  requireEdge(cx, e, op);
+  SheetHexes s;
+  std::vector<std::pair<HexId, int>> stack{{e.hex, axisOfEdge(e.edge)}};
+  s.axis.emplace(e.hex, axisOfEdge(e.edge));
+  while (!stack.empty()) {
+    auto [h, a] = stack.back();
+    stack.pop_back();
+    s.hexes.push_back(h);
+    for (int f : kParallelFaces[size_t(a)]) {
+      const Gluing g = cx.gluing(h, f);
+      if (g.boundary()) continue;
+      const int a2 = kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))].axis;
+      auto [it, fresh] = s.axis.emplace(g.hex, a2);
+      if (fresh) stack.push_back({g.hex, a2});
+      else if (it->second != a2)
+        refuse(op, "self-intersecting",
+               "the sheet through " + entityName(e) + " passes " + hexName(g.hex) + " twice (along its local axes " +
+                   std::to_string(it->second) + " and " + std::to_string(a2) + ")");
+    }
+  }
+  std::sort(s.hexes.begin(), s.hexes.end());
+  return s;
+}
+
+std::unordered_map<HexId, int8_t> sheetUp(const Complex& cx, const SheetHexes& sheet) {
+  std::unordered_map<HexId, int8_t> up;
+  up.reserve(sheet.hexes.size());
+  for (HexId start : sheet.hexes) {
+    if (up.count(start)) continue;
+    up.emplace(start, int8_t(1));
+    std::vector<HexId> stack{start};
+    while (!stack.empty()) {
+      const HexId h = stack.back();
+      stack.pop_back();
+      const int a = sheet.axisOf(h);
+      for (int f : kParallelFaces[size_t(a)]) {
+        const Gluing g = cx.gluing(h, f);
+        if (g.boundary()) continue;
+        // A corner low along a: its image is low along the neighbour's axis when the senses agree.
+        const int c = kFaceCorners[size_t(f)][0];  // f is parallel to a: flipping along a stays on f
+        const int low = cornerBit(c, a) == 0 ? c : flipAxis(c, a);
+        const int image = cx.mappedCorner(h, f, low);
+        const int8_t sense = int8_t(up.at(h) * (cornerBit(image, sheet.axisOf(g.hex)) == 0 ? 1 : -1));
+        auto [it, fresh] = up.emplace(g.hex, sense);
+        if (fresh) stack.push_back(g.hex);
+        else if (it->second != sense) return {};
+      }
+    }
+  }
+  return up;
+}
+
+namespace {
+using Corners = std::vector<std::pair<HexId, int>>;
+
+// The corners of the vertex at corner c of hex h, into `out` (its storage reused: no allocation
+// per vertex once it has grown), as Complex::cornersOfVertex lists them.
+void starInto(const Complex& cx, HexId h, int c, Corners& out) {
+  out.clear();
+  out.push_back({h, c});
+  for (size_t i = 0; i < out.size(); ++i) {
+    auto [hh, cc] = out[i];
+    for (int f : facesOfCorner(cc)) {
+      if (cx.isBoundary({hh, f})) continue;
+      const std::pair<HexId, int> n{cx.gluing(hh, f).hex, cx.mappedCorner(hh, f, cc)};
+      if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+    }
+  }
+}
+
+// Whether these corners of one vertex are connected across the faces between them.
+bool faceConnected(const Complex& cx, const Corners& corners, std::vector<uint8_t>& seen, std::vector<size_t>& stack) {
+  if (corners.empty()) return true;
+  seen.assign(corners.size(), 0);
+  stack.assign(1, 0);
+  seen[0] = 1;
+  size_t reached = 1;
+  while (!stack.empty()) {
+    auto [h, c] = corners[stack.back()];
+    stack.pop_back();
+    for (int f : facesOfCorner(c)) {
+      if (cx.isBoundary({h, f})) continue;
+      const std::pair<HexId, int> n{cx.gluing(h, f).hex, cx.mappedCorner(h, f, c)};
+      const size_t j = size_t(std::find(corners.begin(), corners.end(), n) - corners.begin());
+      if (j < corners.size() && !seen[j]) seen[j] = 1, ++reached, stack.push_back(j);
+    }
+  }
+  return reached == corners.size();
+}
+}  // namespace
+
+VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pair<HexId, int>>>& classes,
+                        const std::function<bool(HexId)>& removed) {
+  VertexMerges m;
+  m.into.reserve(2 * classes.size());
+  Corners star;
+  std::vector<Corners> outside;  // per vertex of the class: its corners off the removed hexes
+  std::vector<uint8_t> seen;
+  std::vector<size_t> stack;
+  for (const auto& cls : classes) {
+    VertexId keep = -1, keepAny = -1;
+    Vec3 sumB, sumAll;
+    int nB = 0;
+    outside.resize(std::max(outside.size(), cls.size()));
+    for (size_t k = 0; k < cls.size(); ++k) {
+      const auto [h, c] = cls[k];
+      const VertexId v = cx.vertex(h, c);
+      starInto(cx, h, c, star);
+      const bool onBoundary = cornersOnBoundary(cx, star);
+      sumAll = sumAll + cx.position(v);
+      keepAny = keepAny < 0 ? v : std::min(keepAny, v);
+      if (onBoundary) {
+        sumB = sumB + cx.position(v);
+        ++nB;
+        keep = keep < 0 ? v : std::min(keep, v);
+      }
+      outside[k].clear();
+      for (auto corner : star)
+        if (!removed(corner.first)) outside[k].push_back(corner);
+      if (m.split < 0 && !faceConnected(cx, outside[k], seen, stack)) m.split = v;
+    }
+    if (keep < 0) keep = keepAny;
+    std::pair<HexId, int> anchor{-1, 0};
+    for (size_t k = 0; k < cls.size() && anchor.first < 0; ++k)
+      if (!outside[k].empty()) anchor = outside[k][0];
+    if (anchor.first >= 0) m.anchors.push_back(anchor);
+    m.members.insert(m.members.end(), cls.begin(), cls.end());
+    m.boundaryMembers.push_back(nB);
+    for (size_t k = 0; k < cls.size(); ++k) {
+      const VertexId v = cx.vertex(cls[k].first, cls[k].second);
+      m.into[v] = keep;
+      if (v == keep) continue;
+      m.dropped.push_back(v);
+      m.renamed.insert(m.renamed.end(), outside[k].begin(), outside[k].end());  // only corners whose vertex changes
+    }
+    m.placed.push_back({keep, nB ? (1.0 / nB) * sumB : (1.0 / double(cls.size())) * sumAll});
+  }
+  std::sort(m.dropped.begin(), m.dropped.end());
+  return m;
+}
+
+int64_t edgesAt(const Complex& cx, const std::vector<std::pair<HexId, int>>& vertices) {
+  // Per vertex, its edges are the vertices of its link: the (corner, axis) pairs of its star joined
+  // across the faces between the corners (a small union-find, no hashing of incidences). An edge
+  // is counted once at each end in the set, twice at an end whose other end is not.
+  std::unordered_set<VertexId> in;
+  for (auto [h, c] : vertices) in.insert(cx.vertex(h, c));
+  std::unordered_set<VertexId> done;
+  Corners star;
+  std::vector<int> parent;
+  int64_t twice = 0;
+  for (auto [h, c] : vertices) {
+    if (!done.insert(cx.vertex(h, c)).second) continue;
+    starInto(cx, h, c, star);
+    parent.resize(3 * star.size());
+    for (size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
+    auto find = [&](int x) {
+      while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+      return x;
+    };
+    for (size_t i = 0; i < star.size(); ++i) {
+      auto [hh, cc] = star[i];
+      for (int k = 0; k < 3; ++k) {
+        const int f = facesOfCorner(cc)[size_t(k)];
+        if (cx.isBoundary({hh, f})) continue;
+        const Gluing g = cx.gluing(hh, f);
+        const CornerStep& st = kCornerSteps[size_t(cornerStepIndex(cc, k, g.face, g.orient))];
+        const size_t j = size_t(std::find(star.begin(), star.end(), std::pair<HexId, int>{g.hex, st.corner}) - star.begin());
+        for (int t = 0; t < 2; ++t) parent[size_t(find(int(3 * i) + (k + 1 + t) % 3))] = find(int(3 * j) + st.axis[size_t(t)]);
+      }
+    }
+    for (size_t x = 0; x < parent.size(); ++x)
+      if (find(int(x)) == int(x)) {
+        auto [eh, ec] = star[x / 3];
+        twice += in.count(cx.vertex(eh, flipAxis(ec, int(x % 3)))) ? 1 : 2;
+      }
+  }
+  return twice / 2;
+}
+
+void keepTopologyOrUndo(Complex& cx, const EulerBefore& before, int64_t edgesAfter, const OpResult& r, const std::string& op) {
+  const int64_t dChi = (cx.numVertices() - before.vertices) - (edgesAfter - before.edgesAround) +
+                       (cx.numQuads() - before.quads) - (cx.numHexes() - before.hexes);
+  if (dChi == 0) return;
+  cx.undo(r.edits);  // exact: the complex as before the operation, revision included
+  refuse(op, "topology-change",
+         "the result would have Euler characteristic V-E+F-H " + std::string(dChi > 0 ? "+" : "") + std::to_string(dChi) +
+             " from the mesh's: merging these vertices would " + (dChi < 0 ? "open a handle (a tunnel)" : "close a tunnel or split the mesh"));
+}
+
+void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMerges& m,
+                    const std::vector<std::pair<QuadSide, QuadSide>>& glues, const EulerBefore& before,
+                    const std::vector<std::pair<HexId, int>>& after, const std::string& op) {
+  std::vector<HexId> touched = renamedHexes(m);
+  for (auto [a, b] : glues) {
+    const int o = a == b ? -1 : orientByVertices(cx, a.hex, a.face, b.hex, b.face);
+    if (o < 0) refuse(op, "invalid-result", "after the collapse " + entityName(a) + " and " + entityName(b) + " cannot be glued");
+    cx.glue(a.hex, a.face, b.hex, b.face, o);
+    touched.push_back(a.hex);
+    touched.push_back(b.hex);
+  }
+  commitOrRefuse(tx, res, touched, op);
+  if (before.edgesAround >= 0) keepTopologyOrUndo(cx, before, edgesAt(cx, after), res, op);
+  res.removedVertices = m.dropped;
+  for (auto [v, p] : m.placed)
+    if (!cx.isVertex(v)) res.removedVertices.push_back(v);
+  std::sort(res.removedVertices.begin(), res.removedVertices.end());
+}
+
+std::vector<HexId> renamedHexes(const VertexMerges& m) {
+  std::vector<HexId> hexes;
+  for (auto [h, c] : m.renamed) hexes.push_back(h);
+  std::sort(hexes.begin(), hexes.end());
+  hexes.erase(std::unique(hexes.begin(), hexes.end()), hexes.end());
+  return hexes;
+}
+
+void requireDistinctCorners(const Complex& cx, const VertexMerges& m, const std::string& op) {
+  for (HexId h : renamedHexes(m)) {
+    std::array<VertexId, 8> v = cx.hexVertices(h);
+    for (VertexId& x : v) x = m.target(x);
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < i; ++j)
+        if (v[size_t(i)] == v[size_t(j)])
+          refuse(op, "hex-vertices-merge",
+                 hexName(h) + " would lose a corner: its vertices " + std::to_string(cx.vertex(h, j)) + " and " +
+                     std::to_string(cx.vertex(h, i)) + " would merge into " + std::to_string(v[size_t(i)]));
+  }
+}
+
+void applyMerges(Complex& cx, const VertexMerges& m) {
+  for (auto [h, c] : m.renamed) cx.setCorner(h, c, m.target(cx.vertex(h, c)));
+  for (auto [v, p] : m.placed) cx.setPosition(v, p);
+}
+
+}  // namespace hexdual::ops
