@@ -18,6 +18,8 @@
 #include "flips/flip.hpp"
 #include "flips/fourcube.hpp"
 #include "flips/search.hpp"
+#include "geometry/quality_stats.hpp"
+#include "io/geometry_json.hpp"
 #include "ops/candidates.hpp"
 #include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
@@ -37,8 +39,10 @@ const char* kUsage =
     "  hexdual info FILE [--json]                counts, sheets and chords, and what the file held\n"
     "  hexdual validate FILE                     check every invariant; list non-manifold vertices\n"
     "  hexdual convert IN OUT [--binary]         read any supported format, write .vtk, .mesh or .hxd\n"
-    "  hexdual apply FILE --ops LOG -o OUT [--json]\n"
-    "                                            apply an operation log (text, URL form, or @file)\n"
+    "  hexdual apply FILE --ops LOG -o OUT [--json] [--no-smooth]\n"
+    "                                            apply an operation log (text, URL form, or @file);\n"
+    "                                            --no-smooth: new vertices stay at the operations' offsets\n"
+    "  hexdual quality FILE [--json]             scaled-Jacobian distribution (min, mean, histogram)\n"
     "  hexdual candidates FILE OP                steps of operation OP that apply to FILE\n"
     "  hexdual sheets FILE [--sheet ID | --all] [--local H1,H2,.. --rings K] --json|--svg OUTDIR\n"
     "                                            sheet diagrams as JSON or SVG files\n"
@@ -58,7 +62,7 @@ struct Args {
   std::vector<std::string> positional;
   std::string output, ops, at, local, jsonDir, svgDir, checkpoint, resume;
   double checkpointEvery = 0;
-  bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false, lookupLast = false, reversible = false;
+  bool json = false, binary = false, noSmooth = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false, lookupLast = false, reversible = false;
   int sheet = -1, rings = 2;
   int maxDepth = 4;
   double maxSeconds = 60;
@@ -124,6 +128,8 @@ Args parseArgs(int argc, char** argv, int from) {
       a.all = true;
     } else if (s == "--json") {
       a.json = true;
+    } else if (s == "--no-smooth") {
+      a.noSmooth = true;
     } else if (s == "--binary") {
       a.binary = true;
     } else if (s == "--hexes-only") {
@@ -187,7 +193,7 @@ int runApply(const Args& a) {
   std::string text;
   for (size_t k = 0; k < log.steps.size(); ++k) {
     try {
-      reports.push_back(applyStepTracked(cx, tracker, log.steps[k]));
+      reports.push_back(applyStepTracked(cx, tracker, log.steps[k], StepOptions{!a.noSmooth}));
     } catch (const Error& e) {
       throw Error("step " + std::to_string(k + 1) + " (" + formatOpStep(log.steps[k]) + "): " + e.what() +
                   "; nothing was written");
@@ -425,6 +431,12 @@ int run(int argc, char** argv) {
     return 0;
   }
   if (cmd == "apply") return runApply(a);
+  if (cmd == "quality") {
+    need(a, 1, "one input file");
+    QualityStats q = qualityStats(readInput(a, a.positional[0]));
+    std::cout << (a.json ? io::qualityStatsJson(q) + "\n" : io::qualityStatsText(q));
+    return 0;
+  }
   if (cmd == "flip") return runFlip(a);
   if (cmd == "sheets") return runSheets(a);
   if (cmd == "candidates") {

@@ -79,6 +79,7 @@ std::string stepReportJson(const StepReport& r, size_t index);
 // The same as four lines of text ("step 1: pillow h13f5\n  hexes created ...").
 std::string stepReportText(const StepReport& r, size_t index);
 // {"steps":[..],"counts":{"vertices","edges","quads","hexes"}}: the report of a whole log.
+// {"steps":[..],"counts":{..},"positionsHash": positionsHash(after)}
 std::string applyReportJson(const std::vector<StepReport>& steps, const Complex& after);
 
 // The flips list: [{"name","inverse","before":[V,E,F,H],"after":[..],"geometric","decomposition":
