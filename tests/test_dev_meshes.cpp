@@ -6,35 +6,17 @@
 #include <filesystem>
 #include <map>
 
+#include "dev_mesh.hpp"
 #include "helpers.hpp"
 #include "io/io.hpp"
 #include "layout/sheet_diagram.hpp"
 
 using namespace hexdual;
+using hexdual::test::devMeshDir;
+using hexdual::test::readDevMesh;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path devMeshDir() {
-  if (const char* dir = std::getenv("HEXDUAL_MESHES")) return dir;  // for worktrees not next to ../shared
-  return fs::path(__FILE__).parent_path().parent_path().parent_path() / "shared" / "meshes";
-}
-
-// The mesh, gunzipped into a temporary file when needed; throws Error when it is refused.
-Complex readDevMesh(const fs::path& file) {
-  if (file.extension() != ".gz") return io::readFile(file.string());
-  fs::path tmp = fs::temp_directory_path() / ("hexdual-devset-" + file.stem().string());
-  std::string cmd = "gzip -dc '" + file.string() + "' > '" + tmp.string() + "'";
-  if (std::system(cmd.c_str()) != 0) throw Error(file.string() + ": gzip -dc failed");
-  try {
-    Complex cx = io::readFile(tmp.string());
-    fs::remove(tmp);
-    return cx;
-  } catch (...) {
-    fs::remove(tmp);
-    throw;
-  }
-}
 
 struct Expected {
   int64_t hexes;

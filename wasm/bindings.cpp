@@ -432,6 +432,9 @@ class WasmMesh {
   }
   // For wasm/bindings_view.cpp (same module): where the complex and its current dual live.
   double complexAddress() const { return double(uintptr_t(&cx_)); }
+  // Whether steps place their new and moved vertices by the local smoothing (StepOptions).
+  void setSmoothing(bool on) { smooth_ = on; }
+  bool smoothing() const { return smooth_; }
   double dualAddress() { return guarded("PRECONDITION", [&] { return double(uintptr_t(&dual())); }, 0.0); }
   val positions() const { return val(typed_memory_view(rb_.positions.size(), rb_.positions.data())); }
   val normals() const { return val(typed_memory_view(rb_.normals.size(), rb_.normals.data())); }
@@ -461,7 +464,7 @@ class WasmMesh {
   std::string apply(const OpStep& step) {
     tracker();  // the tracker must see the state before the step
     StepRecord s;
-    s.report = applyStepTracked(cx_, *tracker_, step);
+    s.report = applyStepTracked(cx_, *tracker_, step, StepOptions{smooth_});
     return record(std::move(s));
   }
   std::string applyFlip(const std::string& name, const std::vector<int>& hexes, bool viaAtomic) {
@@ -542,6 +545,7 @@ class WasmMesh {
   Complex cx_;
   std::unique_ptr<DualTracker> tracker_;
   std::vector<StepRecord> history_, redo_;
+  bool smooth_ = true;
   RenderBuffers rb_;
   std::vector<int32_t> scratch_;
 };
@@ -632,5 +636,7 @@ EMSCRIPTEN_BINDINGS(hexdual) {
       .function("indices", &WasmMesh::indices)
       .function("triangleHex", &WasmMesh::triangleHex)
       .function("complexAddress", &WasmMesh::complexAddress)
+      .function("setSmoothing", &WasmMesh::setSmoothing)
+      .function("smoothing", &WasmMesh::smoothing)
       .function("dualAddress", &WasmMesh::dualAddress);
 }

@@ -99,6 +99,85 @@ export interface Quality {
   inverted: Int32Array;
   min: number;
   max: number;
+  /** Live hexes, and the distribution as `hexdual quality --json` gives it. */
+  hexes: number;
+  mean: number;
+  /** Hexes with scaled Jacobian <= 0. */
+  nonPositive: number;
+  /** 20 counts: bucket k holds [-1 + k/10, -1 + (k+1)/10), the last one includes 1. */
+  buckets: number[];
+}
+/** What a step did to the geometry (docs/operations.md, "Geometry"). */
+export interface StepQuality {
+  /** Whether new and moved vertices were placed by the local smoothing (Mesh.smoothing). */
+  smoothed: boolean;
+  /** Minimum scaled Jacobian of the measured hexes before and after the step (1 when none). */
+  before: number;
+  after: number;
+  /** `after` without the hexes degenerate by construction. */
+  afterRegular: number;
+  /** Measured hexes with scaled Jacobian <= 0 that some embedding could make valid. */
+  inverted: number[];
+  /** Measured hexes with an interior edge of valence <= 2: never valid (a pillow's or blind chord's pair). */
+  degenerate: number[];
+  /** Vertices the smoothing placed. */
+  moved: number[];
+}
+/** Irregular edges by valence and the rest of the singularity graph's size. */
+export interface SingularityCounts {
+  interiorEdges: number;
+  boundaryEdges: number;
+  interiorByValence: Record<string, number>;
+  boundaryByValence: Record<string, number>;
+  vertices: number;
+  boundaryVertices: number;
+  curves: number;
+}
+export interface SingularEdge {
+  /** The edge's smallest (hex, local edge) incidence: pass it to edgeDual(). */
+  hex: number;
+  edge: number;
+  vertices: [number, number];
+  valence: number;
+  boundary: boolean;
+  /** Index into `curves`. */
+  curve: number;
+}
+export interface SingularVertex {
+  vertex: number;
+  boundary: boolean;
+  /** Singular edges at the vertex (1: a curve ends, 3 or more: curves branch, 2: of different kinds). */
+  degree: number;
+}
+export interface SingularCurve {
+  /** Indices into `edges`, in order along the curve. */
+  edges: number[];
+  valence: number;
+  boundary: boolean;
+  closed: boolean;
+  /** The end vertices of an open curve; [] for a closed one. */
+  ends: number[];
+}
+export interface Singularities {
+  counts: SingularityCounts;
+  edges: SingularEdge[];
+  vertices: SingularVertex[];
+  curves: SingularCurve[];
+}
+/** The dual through one edge. */
+export interface EdgeDual {
+  hex: number;
+  edge: number;
+  valence: number;
+  boundary: boolean;
+  /** The sheet crossing the edge. */
+  sheet: number;
+  /** Hexes around the edge in cycle (fan) order. */
+  hexes: number[];
+  /** Each quad containing the edge (canonical side) with the chord through it and that chord's other sheet. */
+  quads: { hex: number; face: number; chord: number; sheet: number }[];
+  chords: number[];
+  sheets: number[];
 }
 export interface HexDual {
   sheetOf: Int32Array;
@@ -132,6 +211,8 @@ export interface StepReport {
   delta: { V: number; E: number; F: number; H: number };
   changedSheets: IdChanges;
   changedChords: IdChanges;
+  /** Scaled Jacobians of the touched hexes before and after, and what the smoothing did. */
+  quality: StepQuality;
 }
 /** Where candidates() looks: a hex, a quad (hex + local face) or an edge (hex + local edge). */
 export type Near = { hex: number } | { hex: number; face: number } | { hex: number; edge: number };
@@ -263,5 +344,13 @@ export class Mesh {
   /** Flips with a stored atomic decomposition that apply near the pick, for flip(name, hexes, { viaAtomic: true }). */
   flipPlaces(near: Near): { name: FlipName; hexes: number[] }[];
   // ---- end of view data (explorer) ----
+  // ---- geometry and singularities ----
+  singularities(): Singularities;
+  /** The dual through an edge (any incidence of it); throws for a hex or edge that does not exist. */
+  edgeDual(hex: number, edge: number): EdgeDual;
+  /** Hash of every live vertex's id and position bits (equal to `hexdual apply --json`'s positionsHash). */
+  positionsHash(): string;
+  /** Whether steps place new and moved vertices by the local smoothing (default true). */
+  smoothing: boolean;
   delete(): void;
 }

@@ -142,6 +142,7 @@ function toReport({ flip, report: r }) {
     delta: r.delta,
     changedSheets: r.sheets,
     changedChords: r.chords,
+    quality: r.quality,
   };
   if (report.inverse === null) report.noInverse = flip ? 'a flip applied directly has no inverse step; use undo()' : r.noInverse;
   return report;
@@ -150,6 +151,11 @@ const OPS = ['pillow', 'unpillow', 'chordpush', 'chordpull', 'hexpush', 'hexpull
 const FORMATS = ['vtk', 'mesh', 'hxd'];
 
 // ---- view data (explorer) ----
+// A geometry call's {json} or {error, code} (bindings_geometry.cpp).
+function jsonCall(result) {
+  if (result.error !== undefined) throw new HexdualError(result.code ?? 'PRECONDITION', result.error);
+  return JSON.parse(result.json);
+}
 function viewCall(result) {
   if (result.error !== undefined) throw new HexdualError(result.code ?? 'PRECONDITION', result.error);
   return result;
@@ -398,9 +404,13 @@ export class Mesh {
     if (!dual) check(null);
     return viewCall(module().viewDualOverlay(raw.complexAddress(), dual, ids));
   }
-  /** Scaled Jacobian per hex id, the inverted hexes (<= 0), and the range over live hexes. */
+  /**
+   * Scaled Jacobian per hex id, the inverted hexes (<= 0), the range over live hexes, and the
+   * distribution as `hexdual quality --json` gives it (hexes, mean, nonPositive, 20 buckets).
+   */
   quality() {
-    return viewCall(module().viewQuality(this.#live().complexAddress()));
+    const address = this.#live().complexAddress();
+    return { ...jsonCall(module().geometryQualityStats(address)), ...viewCall(module().viewQuality(address)) };
   }
   /** Sheet and chord ids through each hex: `sheetOf[3*h+axis]`, `chordOf[3*h+axis]` (-1 for removed hexes). */
   hexDual() {
@@ -419,6 +429,32 @@ export class Mesh {
     return viewCall(module().viewFlipPlaces(this.#live().complexAddress(), hex, kind, local)).places.map((p) => ({ name: p.name, hexes: [...p.hexes] }));
   }
   // ---- end of view data (explorer) ----
+
+  // ---- geometry and singularities ----
+  /** The singularity graph: irregular edges (with their curve), irregular vertices, curves, counts. */
+  singularities() {
+    return jsonCall(module().geometrySingularities(this.#live().complexAddress()));
+  }
+  /** The sheet crossing an edge and the chords (with their other sheets) through the quads around it. */
+  edgeDual(hex, edge) {
+    const raw = this.#live();
+    const h = integer('edgeDual: hex', hex), e = integer('edgeDual: edge', edge);
+    const dual = raw.dualAddress();
+    if (!dual) check(null);
+    return jsonCall(module().geometryEdgeDual(raw.complexAddress(), dual, h, e));
+  }
+  /** FNV-1a hash of every live vertex's id and position bits (as `hexdual apply --json` prints). */
+  positionsHash() {
+    return module().geometryPositionsHash(this.#live().complexAddress());
+  }
+  /** Whether steps place new and moved vertices by the local smoothing (default true). */
+  get smoothing() {
+    return this.#live().smoothing();
+  }
+  set smoothing(on) {
+    if (typeof on !== 'boolean') throw new HexdualError('PRECONDITION', 'smoothing must be true or false');
+    this.#live().setSmoothing(on);
+  }
 
   /** Frees the wasm memory of this mesh. */
   delete() {
