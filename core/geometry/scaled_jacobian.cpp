@@ -16,7 +16,9 @@ double det(Vec3 a, Vec3 b, Vec3 c) {
 }
 }  // namespace
 
-double scaledJacobian(const std::array<Vec3, 8>& p) {
+double scaledJacobian(const std::array<Vec3, 8>& p) { return scaledJacobian(p, nullptr); }
+
+double scaledJacobian(const std::array<Vec3, 8>& p, double* cornerSum) {
   double worst = 1;
   for (int k = 0; k < 8; ++k) {
     Vec3 e[3];
@@ -27,6 +29,7 @@ double scaledJacobian(const std::array<Vec3, 8>& p) {
     }
     double sj = len > 0 ? det(e[0], e[1], e[2]) / len : 0;
     worst = std::min(worst, sj);
+    if (cornerSum) *cornerSum += sj;
   }
   return worst;
 }

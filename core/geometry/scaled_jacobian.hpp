@@ -11,6 +11,9 @@ namespace hexdual {
 // Of 8 corner positions in VTK order: in [-1, 1], 1 for a cube, <= 0 when inverted or degenerate
 // (a corner with a zero-length edge counts as 0).
 double scaledJacobian(const std::array<Vec3, 8>& p);
+// The same, adding the 8 corner values to *cornerSum (the smoothing's tie-break: it moves when a
+// single corner improves, where the minimum alone would not).
+double scaledJacobian(const std::array<Vec3, 8>& p, double* cornerSum);
 // Of a live hex at its vertices' positions.
 double scaledJacobian(const Complex& cx, HexId h);
 // The 8 positions of a hex's corners.

@@ -84,7 +84,7 @@ Region buildRegion(const Complex& cx, const std::vector<FreeVertex>& free) {
 }
 
 struct Score {
-  double min = 1, sum = 0;
+  double min = 1, sum = 0;  // minimum over the hexes, sum over their corners
   bool betterThan(const Score& o) const { return min > o.min + 1e-12 || (min >= o.min && sum > o.sum + 1e-9); }
 };
 
@@ -97,9 +97,7 @@ Score evaluate(const Complex& cx, Region& r, size_t i, Vec3 p) {
       const int n = r.src[size_t(k)][c];
       pts[c] = n == int(i) ? p : at(cx, r, n);
     }
-    const double sj = scaledJacobian(pts);
-    s.min = std::min(s.min, sj);
-    s.sum += sj;
+    s.min = std::min(s.min, scaledJacobian(pts, &s.sum));
     ++r.evaluations;
   }
   return s;
@@ -131,7 +129,7 @@ bool compassVertex(const Complex& cx, Region& r, size_t i) {
   Score best = evaluate(cx, r, i, r.pos[i]);
   bool moved = false;
   int accepted = 0;
-  for (double step = 0.25 * r.scale[i]; step > 1e-3 * r.scale[i] && accepted < 16;) {
+  for (double step = 0.25 * r.scale[i]; step > 0.01 * r.scale[i] && accepted < 8;) {
     bool found = false;
     for (const auto& dir : kDirs) {
       const Vec3 p = r.pos[i] + step * Vec3{dir[0], dir[1], dir[2]};
@@ -153,7 +151,7 @@ SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free) {
   std::sort(free.begin(), free.end(), [](const FreeVertex& a, const FreeVertex& b) { return a.vertex < b.vertex; });
   Region r = buildRegion(cx, free);
   laplacian(cx, r, 8);
-  for (int sweep = 0; sweep < 8; ++sweep) {
+  for (int sweep = 0; sweep < 6; ++sweep) {
     bool any = false;
     for (size_t i = 0; i < r.free.size(); ++i) any = compassVertex(cx, r, i) || any;
     if (!any) break;

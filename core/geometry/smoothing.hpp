@@ -1,6 +1,6 @@
 // Local untangling and smoothing of a few free vertices (the ones an operation created or moved):
 // each is moved, in id order, to raise the minimum scaled Jacobian of the hexes around it that are
-// not degenerate by construction (degenerate.hpp), ties broken by their sum. No vertex's minimum
+// not degenerate by construction (degenerate.hpp), ties broken by the sum over their corners. No vertex's minimum
 // ever drops, so the smoothing never makes the worst hex around the free vertices worse; nothing
 // else moves. Plain scalar arithmetic in a fixed order: the same bits natively and in wasm.
 #pragma once
