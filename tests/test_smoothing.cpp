@@ -37,7 +37,7 @@ OpResult applyAndCheckLocal(Complex& cx, const OpStep& step) {
   const std::string before = stateDump(cx);
   const std::vector<Vec3> old = cx.positions();
   const std::set<VertexId> boundary = boundaryVertices(cx);
-  OpResult r = applyStep(cx, step);
+  OpResult r = applyStep(cx, step, kSmoothStep);
   const std::set<VertexId> moved(r.quality.moved.begin(), r.quality.moved.end());
   for (VertexId v = 0; v < VertexId(old.size()); ++v)
     if (!samePosition(old[size_t(v)], cx.position(v))) {
@@ -47,7 +47,7 @@ OpResult applyAndCheckLocal(Complex& cx, const OpStep& step) {
   Complex::EditLog edits = r.edits;
   cx.undo(edits);
   CHECK(stateDump(cx) == before);
-  applyStep(cx, step);
+  applyStep(cx, step, kSmoothStep);
   return r;
 }
 
@@ -79,7 +79,7 @@ TEST_CASE("quality stats: a grid is all cubes; an inverted hex counts as <= 0") 
 
 TEST_CASE("degenerate by construction: a pillow's pair and a chord push's blind pair, not their neighbours") {
   Complex cx = makeGrid(3, 3, 3);
-  OpResult p = applyStep(cx, "pillow h13f1");
+  OpResult p = applyStep(cx, "pillow h13f1", kSmoothStep);
   REQUIRE(p.createdHexes.size() == 2);
   for (HexId h : p.createdHexes) CHECK(degenerateByConstruction(cx, h));
   CHECK(!degenerateByConstruction(cx, 13));
@@ -87,7 +87,7 @@ TEST_CASE("degenerate by construction: a pillow's pair and a chord push's blind 
   CHECK(p.quality.inverted.empty());
   CHECK(p.quality.afterRegular == 1);  // hexes 13 and 14 keep their cubes
   Complex c2 = makeGrid(3, 3, 3);
-  OpResult c = applyStep(c2, "chordpush h13e0 h13f2 h13f4");
+  OpResult c = applyStep(c2, "chordpush h13e0 h13f2 h13f4", kSmoothStep);
   for (HexId h : c.createdHexes) CHECK(degenerateByConstruction(c2, h));
   // Here arc L is hex 13 alone: it shares two quads with X, so it is degenerate too.
   CHECK(c.quality.degenerate == std::vector<HexId>{13, 27, 28});
@@ -106,7 +106,7 @@ TEST_CASE("smoothing: hex push in a grid keeps every hex valid") {
   // go: the widening moves q's (interior) vertices too.
   for (VertexId v : r.createdVertices) CHECK(std::count(r.quality.moved.begin(), r.quality.moved.end(), v) == 1);
   Complex off = makeGrid(4, 4, 4);
-  OpResult o = applyStep(off, "hexpush h21f1", StepOptions{false});
+  OpResult o = applyStep(off, "hexpush h21f1", StepOptions{StepGeometry::Measure});
   CHECK(!o.quality.smoothed);
   CHECK(o.quality.moved.empty());
   CHECK(r.quality.after >= o.quality.after);  // never worse than the operation's own placement
@@ -138,14 +138,14 @@ TEST_CASE("smoothing: every candidate step of every kind on a curved ring is loc
 TEST_CASE("smoothing: the same log gives the same position bits; --no-smooth gives the operations' offsets") {
   const char* log = "v1;hexpush h21f1;pillow h5f1;chordpush h42e0 h42f2 h42f4";
   Complex a = makeGrid(4, 4, 4), b = makeGrid(4, 4, 4);
-  REQUIRE(applyLog(a, log).failedStep == 0);
-  REQUIRE(applyLog(b, log).failedStep == 0);
+  REQUIRE(applyLog(a, log, kSmoothStep).failedStep == 0);
+  REQUIRE(applyLog(b, log, kSmoothStep).failedStep == 0);
   CHECK(positionsHash(a) == positionsHash(b));
   Complex c = makeGrid(4, 4, 4);
-  REQUIRE(applyLog(c, log, StepOptions{false}).failedStep == 0);
+  REQUIRE(applyLog(c, log, StepOptions{StepGeometry::Measure}).failedStep == 0);
   CHECK(positionsHash(a) != positionsHash(c));
   Complex d = makeGrid(4, 4, 4);
-  OpResult r = applyStep(d, "hexpush h21f1", StepOptions{false});
+  OpResult r = applyStep(d, "hexpush h21f1", StepOptions{StepGeometry::Measure});
   // hex_push.cpp: each new vertex halfway from its corner of the quad to the quad's centre.
   for (VertexId v : r.createdVertices) {
     const Vec3 p = d.position(v);

@@ -435,6 +435,8 @@ class WasmMesh {
   // Whether steps place their new and moved vertices by the local smoothing (StepOptions).
   void setSmoothing(bool on) { smooth_ = on; }
   bool smoothing() const { return smooth_; }
+  // Steps are smoothed, or (smoothing off) only measured, like the CLI's apply and --no-smooth.
+  StepOptions stepOptions() const { return {smooth_ ? StepGeometry::Smooth : StepGeometry::Measure}; }
   double dualAddress() { return guarded("PRECONDITION", [&] { return double(uintptr_t(&dual())); }, 0.0); }
   val positions() const { return val(typed_memory_view(rb_.positions.size(), rb_.positions.data())); }
   val normals() const { return val(typed_memory_view(rb_.normals.size(), rb_.normals.data())); }
@@ -464,7 +466,7 @@ class WasmMesh {
   std::string apply(const OpStep& step) {
     tracker();  // the tracker must see the state before the step
     StepRecord s;
-    s.report = applyStepTracked(cx_, *tracker_, step, StepOptions{smooth_});
+    s.report = applyStepTracked(cx_, *tracker_, step, stepOptions());
     return record(std::move(s));
   }
   std::string applyFlip(const std::string& name, const std::vector<int>& hexes, bool viaAtomic) {
@@ -473,6 +475,7 @@ class WasmMesh {
     if (!viaAtomic) {
       StepRecord s;
       s.report.result = hexdual::flip(cx_, name, hexes);
+      s.report.result.quality = placeStepGeometry(cx_, s.report.result.edits, stepOptions().geometry);
       s.flipName = name;
       s.flipHexes = hexes;
       s.report.dual = tracker_->update(cx_, s.report.result.edits, false);

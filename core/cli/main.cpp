@@ -40,15 +40,16 @@ const char* kUsage =
     "  hexdual validate FILE                     check every invariant; list non-manifold vertices\n"
     "  hexdual convert IN OUT [--binary]         read any supported format, write .vtk, .mesh or .hxd\n"
     "  hexdual apply FILE --ops LOG -o OUT [--json] [--no-smooth]\n"
-    "                                            apply an operation log (text, URL form, or @file);\n"
-    "                                            --no-smooth: new vertices stay at the operations' offsets\n"
+    "                                            apply an operation log (text, URL form, or @file); each\n"
+    "                                            step is untangled and smoothed locally (--no-smooth: new\n"
+    "                                            vertices stay at the operations' offsets)\n"
     "  hexdual quality FILE [--json]             scaled-Jacobian distribution (min, mean, histogram)\n"
     "  hexdual candidates FILE OP                steps of operation OP that apply to FILE\n"
     "  hexdual sheets FILE [--sheet ID | --all] [--local H1,H2,.. --rings K] --json|--svg OUTDIR\n"
     "                                            sheet diagrams as JSON or SVG files\n"
     "  hexdual flip list [--json]                the cubical flips and their stored decompositions\n"
-    "  hexdual flip NAME --at H1,H2,.. FILE -o OUT [--via-atomic]\n"
-    "                                            apply a flip to the named hexes\n"
+    "  hexdual flip NAME --at H1,H2,.. FILE -o OUT [--via-atomic] [--no-smooth]\n"
+    "                                            apply a flip to the named hexes (smoothed like apply)\n"
     "  hexdual flip verify --all [--json]        check every stored decomposition in host meshes\n"
     "  hexdual flip search NAME --max-depth D [--max-seconds S] [--max-states N] [--ops a,b]\n"
     "                   [--threads T] [--max-memory MB] [--max-region H] [--ring-split L] [--symmetry]\n"
@@ -182,6 +183,9 @@ OpLog readLog(const std::string& arg) {
   return parseOpLog(text);
 }
 
+// Steps from the CLI are smoothed, unless --no-smooth (then only measured).
+StepOptions stepOptions(const Args& a) { return {a.noSmooth ? StepGeometry::Measure : StepGeometry::Smooth}; }
+
 int runApply(const Args& a) {
   need(a, 1, "one input file");
   if (a.ops.empty()) throw Error("apply needs --ops LOG");
@@ -193,7 +197,7 @@ int runApply(const Args& a) {
   std::string text;
   for (size_t k = 0; k < log.steps.size(); ++k) {
     try {
-      reports.push_back(applyStepTracked(cx, tracker, log.steps[k], StepOptions{!a.noSmooth}));
+      reports.push_back(applyStepTracked(cx, tracker, log.steps[k], stepOptions(a)));
     } catch (const Error& e) {
       throw Error("step " + std::to_string(k + 1) + " (" + formatOpStep(log.steps[k]) + "): " + e.what() +
                   "; nothing was written");
@@ -337,11 +341,15 @@ int runFlip(const Args& a) {
   if (a.viaAtomic) {
     const StoredDecomposition* d = storedFor(name);
     if (!d || !d->found) throw Error("flip " + name + " has no stored atomic decomposition (see hexdual flip list)");
-    auto steps = replayInEmbedding(problemFor(name), d->steps, cx, hexes, "the mesh");
+    Complex trial = cx;  // the steps are found on a copy, then applied like `apply` applies them
+    auto steps = replayInEmbedding(problemFor(name), d->steps, trial, hexes, "the mesh");
+    for (const OpStep& st : steps) applyStep(cx, st, stepOptions(a));
     std::cout << formatOpLog({1, steps}) << "\n";
   } else {
     OpResult r = flip(cx, name, hexes);
-    std::cout << "flip " << name << ": hexes created " << io::idList(r.createdHexes) << " removed " << io::idList(r.removedHexes) << "\n";
+    r.quality = placeStepGeometry(cx, r.edits, stepOptions(a).geometry);
+    std::cout << "flip " << name << ": hexes created " << io::idList(r.createdHexes) << " removed " << io::idList(r.removedHexes) << "\n"
+              << io::stepQualityText(r.quality);
   }
   io::writeFile(cx, a.output, a.binary);
   return 0;

@@ -9,7 +9,8 @@
 namespace hexdual {
 
 struct QualityStats {
-  static constexpr int kBuckets = 20;  // of width 0.1 over [-1, 1]; bucket k holds [-1+k/10, -1+(k+1)/10), the last includes 1
+  static constexpr int kBuckets =
+      20;  // of width 0.1 over [-1, 1]; bucket k holds [-1+k/10, -1+(k+1)/10), the last includes 1
   int64_t hexes = 0;
   double min = 1, max = -1, mean = 0;  // min 1, max -1, mean 0 when there are no hexes
   int64_t nonPositive = 0;             // hexes with scaled Jacobian <= 0 (inverted or degenerate)

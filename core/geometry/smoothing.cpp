@@ -1,162 +1,190 @@
 #include "geometry/smoothing.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-
-#include "geometry/degenerate.hpp"
-#include "geometry/scaled_jacobian.hpp"
+#include <limits>
 
 namespace hexdual {
 
 namespace {
 
-// The hexes around the free vertices, with each corner either a free vertex (its index) or a
-// fixed one (-1), and working positions of the free vertices.
-struct Region {
-  std::vector<VertexId> free;                     // ascending
-  std::vector<Vec3> pos;                          // working positions, per free vertex
-  std::vector<HexId> hexes;                       // ascending
-  std::vector<std::array<int, 8>> src;            // per region hex, per corner
-  std::vector<std::vector<int>> around;           // per free vertex: its region hexes that count
-  std::vector<std::vector<int>> neighbours;       // per free vertex: edge neighbours (free index, or -1 - vertex id)
-  std::vector<double> scale;                      // per free vertex: mean edge length
-  int64_t evaluations = 0;
-};
+constexpr int kMaxSweeps = 60;
+constexpr int kMaxUntangleSweeps = 30;
+constexpr double kEpsilon = 1e-3;    // Escobar's epsilon, times the region's volume scale
+constexpr double kConverged = 1e-2;  // a sweep whose largest move is below this (times the vertex scale) ends them
+constexpr double kArmijo = 1e-4;
 
-int freeIndex(const Region& r, VertexId v) {
-  auto it = std::lower_bound(r.free.begin(), r.free.end(), v);
-  return it != r.free.end() && *it == v ? int(it - r.free.begin()) : -1;
-}
+double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+double& coord(Vec3& p, int d) { return d == 0 ? p.x : d == 1 ? p.y : p.z; }
 
-Vec3 at(const Complex& cx, const Region& r, int n) { return n >= 0 ? r.pos[size_t(n)] : cx.position(VertexId(-1 - n)); }
-
-double length(Vec3 a) { return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z); }
-
-void collectNeighbours(const Complex& cx, Region& r, size_t i, const std::vector<std::pair<HexId, int>>& corners) {
-  // The three neighbours of each VTK corner (the frame of scaled_jacobian.cpp, order irrelevant here).
-  static constexpr int kAdjacent[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7}, {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
-  std::vector<VertexId> ids;
-  for (auto [h, c] : corners)
-    for (int k : kAdjacent[c]) ids.push_back(cx.vertex(h, k));
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  double sum = 0;
-  for (VertexId v : ids) {
-    const int f = freeIndex(r, v);
-    r.neighbours[i].push_back(f >= 0 ? f : -1 - v);
-    sum += length(cx.position(v) - r.pos[i]);
-  }
-  r.scale[i] = ids.empty() ? 0 : sum / double(ids.size());
-}
-
-Region buildRegion(const Complex& cx, const std::vector<FreeVertex>& free) {
-  Region r;
-  for (const FreeVertex& f : free) r.free.push_back(f.vertex), r.pos.push_back(cx.position(f.vertex));
-  r.around.resize(free.size());
-  r.neighbours.resize(free.size());
-  r.scale.resize(free.size());
-  std::vector<std::vector<std::pair<HexId, int>>> stars;
-  for (const FreeVertex& f : free) {
-    stars.push_back(cx.cornersOfVertex(f.hex, f.corner));
-    for (auto [h, c] : stars.back()) r.hexes.push_back(h);
-  }
-  std::sort(r.hexes.begin(), r.hexes.end());
-  r.hexes.erase(std::unique(r.hexes.begin(), r.hexes.end()), r.hexes.end());
-  for (HexId h : r.hexes) {
-    std::array<int, 8> s;
-    for (int c = 0; c < 8; ++c) {
-      const int f = freeIndex(r, cx.vertex(h, c));
-      s[size_t(c)] = f >= 0 ? f : -1 - cx.vertex(h, c);
-    }
-    r.src.push_back(s);
-  }
-  for (size_t i = 0; i < free.size(); ++i) {
-    for (auto [h, c] : stars[i]) {
-      const int k = int(std::lower_bound(r.hexes.begin(), r.hexes.end(), h) - r.hexes.begin());
-      if (!degenerateByConstruction(cx, h) && std::find(r.around[i].begin(), r.around[i].end(), k) == r.around[i].end())
-        r.around[i].push_back(k);
-    }
-    std::sort(r.around[i].begin(), r.around[i].end());
-    collectNeighbours(cx, r, i, stars[i]);
-  }
-  return r;
-}
-
-struct Score {
-  double min = 1, sum = 0;  // minimum over the hexes, sum over their corners
-  bool betterThan(const Score& o) const { return min > o.min + 1e-12 || (min >= o.min && sum > o.sum + 1e-9); }
-};
-
-// The hexes around free vertex i with it placed at p.
-Score evaluate(const Complex& cx, Region& r, size_t i, Vec3 p) {
-  Score s;
-  for (int k : r.around[i]) {
-    std::array<Vec3, 8> pts;
-    for (size_t c = 0; c < 8; ++c) {
-      const int n = r.src[size_t(k)][c];
-      pts[c] = n == int(i) ? p : at(cx, r, n);
-    }
-    s.min = std::min(s.min, scaledJacobian(pts, &s.sum));
-    ++r.evaluations;
-  }
-  return s;
-}
-
-Vec3 average(const Complex& cx, const Region& r, size_t i) {
-  Vec3 sum;
-  for (int n : r.neighbours[i]) sum = sum + at(cx, r, n);
-  return (1.0 / double(r.neighbours[i].size())) * sum;
-}
-
-// Gauss-Seidel Laplacian steps, each kept only when it improves the vertex's score.
-void laplacian(const Complex& cx, Region& r, int iterations) {
-  for (int it = 0; it < iterations; ++it)
-    for (size_t i = 0; i < r.free.size(); ++i) {
-      if (r.around[i].empty() || r.neighbours[i].empty()) continue;
-      const Vec3 p = average(cx, r, i);
-      if (evaluate(cx, r, i, p).betterThan(evaluate(cx, r, i, r.pos[i]))) r.pos[i] = p;
-    }
-}
-
-// Compass search on each vertex's score: 14 directions (axes and diagonals), the step halved
-// when none improves; sweeps until a sweep moves nothing.
-bool compassVertex(const Complex& cx, Region& r, size_t i) {
-  static constexpr double d = 0.5773502691896258;  // 1/sqrt(3), a literal so every platform has the same bits
-  static constexpr double kDirs[14][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {d, d, d},
-                                          {-d, d, d}, {d, -d, d}, {-d, -d, d}, {d, d, -d}, {-d, d, -d}, {d, -d, -d}, {-d, -d, -d}};
-  if (r.around[i].empty() || r.scale[i] <= 0) return false;
-  Score best = evaluate(cx, r, i, r.pos[i]);
-  bool moved = false;
-  int accepted = 0;
-  for (double step = 0.25 * r.scale[i]; step > 0.01 * r.scale[i] && accepted < 8;) {
-    bool found = false;
-    for (const auto& dir : kDirs) {
-      const Vec3 p = r.pos[i] + step * Vec3{dir[0], dir[1], dir[2]};
-      const Score s = evaluate(cx, r, i, p);
-      if (s.betterThan(best)) {
-        best = s, r.pos[i] = p, found = moved = true;
-        ++accepted;
-        break;
+// Cholesky of the symmetric 3x3 `a` plus mu on the diagonal; false when not positive definite.
+bool cholesky(const double a[3][3], double mu, double l[3][3]) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j <= i; ++j) {
+      double s = a[i][j] + (i == j ? mu : 0);
+      for (int k = 0; k < j; ++k) s -= l[i][k] * l[j][k];
+      if (i == j) {
+        if (!(s > 0)) return false;
+        l[i][i] = std::sqrt(s);
+      } else {
+        l[i][j] = s / l[j][j];
       }
     }
-    if (!found) step *= 0.5;
-  }
-  return moved;
+  return true;
 }
+
+// Solves (H + mu I) d = -g with the smallest mu in 0, m, 10m, ... that makes it positive definite
+// (m: a thousandth of H's largest diagonal entry); false when none of them does.
+bool newtonDirection(const double h[3][3], Vec3 g, Vec3& d) {
+  double l[3][3] = {};
+  const double m = 1e-3 * std::max({std::fabs(h[0][0]), std::fabs(h[1][1]), std::fabs(h[2][2]), 1e-300});
+  double mu = 0;
+  for (int tries = 0; !cholesky(h, mu, l); ++tries) {
+    if (tries == 12) return false;
+    mu = tries == 0 ? m : 10 * mu;
+  }
+  const double b[3] = {-g.x, -g.y, -g.z};
+  double y[3], x[3];
+  for (int i = 0; i < 3; ++i) {
+    double s = b[i];
+    for (int k = 0; k < i; ++k) s -= l[i][k] * y[k];
+    y[i] = s / l[i][i];
+  }
+  for (int i = 2; i >= 0; --i) {
+    double s = y[i];
+    for (int k = i + 1; k < 3; ++k) s -= l[k][i] * x[k];
+    x[i] = s / l[i][i];
+  }
+  d = {x[0], x[1], x[2]};
+  return true;
+}
+
+// The Hessian of vertex i's energy at p by forward differences of the gradient g there (symmetrised);
+// false when a probe hits the barrier.
+bool hessian(SmoothingRegion& r, size_t i, Vec3 p, Vec3 g, double delta2, double out[3][3]) {
+  const double step = 1e-6 * r.scale[i];
+  double col[3][3];
+  for (int d = 0; d < 3; ++d) {
+    Vec3 q = p, gd;
+    coord(q, d) += step;
+    if (std::isinf(vertexEnergy(r, i, q, delta2, &gd))) return false;
+    const Vec3 diff = (1 / step) * (gd - g);
+    col[d][0] = diff.x, col[d][1] = diff.y, col[d][2] = diff.z;
+  }
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) out[a][b] = 0.5 * (col[a][b] + col[b][a]);
+  return true;
+}
+
+// One damped Newton step of free vertex i (steepest descent when the Hessian is unusable), at most
+// one vertex scale long, backtracked until the energy falls enough. Returns the move / scale.
+double newtonStep(SmoothingRegion& r, size_t i, double delta2) {
+  const double s = r.scale[i];
+  if (s <= 0 || r.incidence[i].empty()) return 0;
+  const Vec3 p = r.pos[i];
+  Vec3 g;
+  const double f0 = vertexEnergy(r, i, p, delta2, &g);
+  const double gn = std::sqrt(dot(g, g));
+  if (!std::isfinite(f0) || gn == 0) return 0;
+  double h[3][3];
+  Vec3 dir;
+  if (!hessian(r, i, p, g, delta2, h) || !newtonDirection(h, g, dir) || !(dot(g, dir) < 0)) dir = (-s / gn) * g;
+  const double len = std::sqrt(dot(dir, dir));
+  if (len > s) dir = (s / len) * dir;
+  const double slope = dot(g, dir);
+  for (double t = 1; t > 1e-4; t *= 0.5) {
+    const Vec3 q = p + t * dir;
+    if (vertexEnergy(r, i, q, delta2, nullptr) <= f0 + kArmijo * t * slope) {
+      r.pos[i] = q;
+      return t * std::sqrt(dot(dir, dir)) / s;
+    }
+  }
+  return 0;
+}
+
+// Sweeps until the barrier phase converges, the softened phase stalls, or kMaxSweeps.
+int sweep(SmoothingRegion& r) {
+  const double eps = kEpsilon * r.volumeScale;
+  r.doomedDelta2 = eps * eps;
+  int n = 0;
+  while (n < kMaxSweeps) {
+    const double sigma = minCornerDeterminant(r);
+    const double delta2 = sigma < eps ? eps * (eps - sigma) : 0;
+    double largest = 0;
+    for (size_t i = 0; i < r.free.size(); ++i) largest = std::max(largest, newtonStep(r, i, delta2));
+    ++n;
+    if (largest < kConverged) break;
+  }
+  return n;
+}
+
+double minimumOf(const std::vector<AffineFunction>& fs, Vec3 p) {
+  double m = std::numeric_limits<double>::infinity();
+  for (const AffineFunction& f : fs) m = std::min(m, dot(f.g, p) + f.h);
+  return m;
+}
+
+// Freitag-Plassmann sweeps: each free vertex in turn to where the smallest (scaled) determinant
+// of its corners is largest, within half its scale; until every corner in the energy is positive,
+// a sweep gains nothing, or kMaxUntangleSweeps.
+int untangle(SmoothingRegion& r) {
+  int n = 0;
+  while (n < kMaxUntangleSweeps && !(minCornerDeterminant(r) > 0)) {
+    bool gained = false;
+    for (size_t i = 0; i < r.free.size(); ++i) {
+      const std::vector<AffineFunction> fs = cornerFunctions(r, i);
+      const Vec3 q = maximiseMinimum(fs, r.pos[i], 0.5 * r.scale[i]);
+      if (minimumOf(fs, q) > minimumOf(fs, r.pos[i]) + 1e-9) r.pos[i] = q, gained = true;
+    }
+    ++n;
+    if (!gained) break;
+  }
+  return n;
+}
+
+// One attempt from the current positions: Escobar sweeps, and while tangled max-min untangling
+// then Escobar again; with maxMinFirst the untangling goes first.
+int attempt(SmoothingRegion& r, bool maxMinFirst) {
+  int n = 0;
+  if (maxMinFirst && !(minCornerDeterminant(r) > 0)) n += untangle(r);
+  n += sweep(r);
+  if (!(minCornerDeterminant(r) > 0)) n += untangle(r), n += sweep(r);
+  return n;
+}
+
+// How good the positions are: fewer inverted counted hexes, then a larger smallest scaled corner.
+struct Outcome {
+  int inverted = 0;
+  double worst = 0;
+  bool betterThan(const Outcome& o) const {
+    return inverted < o.inverted || (inverted == o.inverted && worst > o.worst);
+  }
+};
+Outcome outcome(const SmoothingRegion& r) { return {invertedHexes(r), worstScaledCorner(r)}; }
 
 }  // namespace
 
 SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free) {
   std::sort(free.begin(), free.end(), [](const FreeVertex& a, const FreeVertex& b) { return a.vertex < b.vertex; });
-  Region r = buildRegion(cx, free);
-  laplacian(cx, r, 8);
-  for (int sweep = 0; sweep < 6; ++sweep) {
-    bool any = false;
-    for (size_t i = 0; i < r.free.size(); ++i) any = compassVertex(cx, r, i) || any;
-    if (!any) break;
-  }
+  SmoothingRegion r = buildSmoothingRegion(cx, free);
   SmoothingStats st;
+  const std::vector<Vec3> start = r.pos;
+  const Outcome before = outcome(r);
+  st.sweeps = attempt(r, false);
+  Outcome best = outcome(r);
+  if (!(minCornerDeterminant(r) > 0)) {  // still tangled: again from the start, max-min untangling first
+    const std::vector<Vec3> first = r.pos;
+    r.pos = start;
+    st.sweeps += attempt(r, true);
+    const Outcome second = outcome(r);
+    if (second.betterThan(best))
+      best = second;
+    else
+      r.pos = first;
+  }
+  if (before.betterThan(best)) r.pos = start, best = before;  // never worse than the operation's own placement
+  st.invertedBefore = before.inverted;
+  st.invertedAfter = best.inverted;
   st.evaluations = r.evaluations;
   for (size_t i = 0; i < r.free.size(); ++i) {
     const Vec3 old = cx.position(r.free[i]);

@@ -1,29 +1,32 @@
-// Local untangling and smoothing of a few free vertices (the ones an operation created or moved):
-// each is moved, in id order, to raise the minimum scaled Jacobian of the hexes around it that are
-// not degenerate by construction (degenerate.hpp), ties broken by the sum over their corners. No vertex's minimum
-// ever drops, so the smoothing never makes the worst hex around the free vertices worse; nothing
-// else moves. Plain scalar arithmetic in a fixed order: the same bits natively and in wasm.
+// Local untangling and smoothing of a few free vertices (the ones a step created or moved, and the
+// interior vertices around them; step_geometry.hpp chooses them). Minimises the sum of the corner
+// energies (corner_energy.hpp: Knupp's squared condition number with Escobar's modified
+// determinant) of the hexes around them that are not degenerate by construction (degenerate.hpp):
+// Gauss-Seidel sweeps over the free vertices in id order, each a Newton step (Hessian by forward
+// differences of the exact gradient) with backtracking. While a corner is tangled (determinant
+// below epsilon) delta > 0 softens the barrier so vertices can pass through it (untangling); once
+// none is, delta = 0 and the energy is a barrier no step crosses (smoothing keeps every corner
+// valid). Nothing else moves. Plain scalar arithmetic in a fixed order: the same bits natively
+// and in wasm.
 #pragma once
-#include <utility>
+#include <cstdint>
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "geometry/smoothing_region.hpp"
 
 namespace hexdual {
 
-struct FreeVertex {
-  VertexId vertex;
-  HexId hex;   // a hex with the vertex at `corner`: where the walk over its star starts
-  int corner;
-};
-
 struct SmoothingStats {
   std::vector<VertexId> moved;  // ascending
-  int64_t evaluations = 0;      // hex scaled Jacobians computed (the cost: independent of mesh size)
+  int64_t evaluations = 0;      // corner energies evaluated (the cost: independent of mesh size)
+  int sweeps = 0;
+  int invertedBefore = 0, invertedAfter = 0;  // counted hexes with a corner determinant <= 0
 };
 
 // Moves the free vertices (interior ones: the caller leaves boundary vertices out) through
-// Complex::setPosition, so an open transaction journals the moves.
+// Complex::setPosition, so an open transaction journals the moves. When the sweeps would leave
+// more counted hexes inverted than there were, nothing moves.
 SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free);
 
 }  // namespace hexdual

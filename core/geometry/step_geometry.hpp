@@ -1,16 +1,27 @@
-// Geometry after an operation: places the vertices it created or re-used (merged) by the local
-// smoothing (smoothing.hpp) and measures the step (step_quality.hpp). Run by applyStep after every
-// operation (oplog.hpp); the position edits join the operation's edit log, so undo stays exact.
+// Geometry after an operation: places the vertices around it by the local untangling and
+// smoothing (smoothing.hpp) and measures the step (step_quality.hpp). Run by applyStep when its
+// options ask (oplog.hpp: the CLI and the package do, the flip search and `candidates` do not);
+// the position edits join the operation's edit log, so undo stays exact.
 #pragma once
 #include "complex/complex.hpp"
 #include "geometry/step_quality.hpp"
 
 namespace hexdual {
 
-// `log` is the committed edit log of the operation just applied to cx (no transaction open). With
-// `smooth`, the free vertices are the interior ones among those it created or set as a hex corner;
-// when a hex not degenerate by construction is still inverted after placing them, every interior
-// vertex of the touched hexes is freed and placed again. Boundary vertices never move.
-StepQuality placeStepGeometry(Complex& cx, Complex::EditLog& log, bool smooth);
+// What a step does about geometry.
+enum class StepGeometry {
+  Keep,     // nothing: the operation's own placement, not measured (the hot paths)
+  Measure,  // the operation's own placement, measured (StepQuality)
+  Smooth,   // placed by the local smoothing, then measured
+};
+
+// `log` is the committed edit log of the operation just applied to cx (no transaction open).
+// With Smooth, the free vertices are the interior vertices (not on the boundary, manifold) of the
+// hexes the step touched; while a hex that is not degenerate by construction stays inverted, they
+// widen to the interior vertices of the hexes around them, at most kWideningRings times. Boundary
+// vertices never move, nor any vertex outside that region.
+StepQuality placeStepGeometry(Complex& cx, Complex::EditLog& log, StepGeometry mode);
+
+inline constexpr int kWideningRings = 2;
 
 }  // namespace hexdual

@@ -95,17 +95,25 @@ std::string qualityStatsText(const QualityStats& s) {
 }
 
 std::string stepQualityJson(const StepQuality& q) {
+  if (!q.measured) return "null";
   JsonWriter w;
   w.beginObject().key("smoothed").value(q.smoothed).key("before").value(q.before).key("after").value(q.after);
-  w.key("afterRegular").value(q.afterRegular).key("inverted").raw(idList(q.inverted)).key("degenerate").raw(idList(q.degenerate));
-  w.key("moved").raw(idList(q.moved));
+  w.key("afterRegular").value(q.afterRegular).key("inverted").raw(idList(q.inverted)).key("pinned").raw(idList(q.pinned));
+  w.key("degenerate").raw(idList(q.degenerate)).key("moved").raw(idList(q.moved)).key("rings").value(int64_t(q.rings));
+  w.key("evaluations").value(q.evaluations);
   return w.endObject().str();
 }
 
 std::string stepQualityText(const StepQuality& q) {
+  if (!q.measured) return "";
   std::string text = "  quality: min scaled Jacobian " + number(q.before) + " -> " + number(q.after);
-  text += q.smoothed ? " (smoothed, " + std::to_string(q.moved.size()) + " vertices placed)" : " (not smoothed)";
+  if (q.smoothed)
+    text += " (smoothed, " + std::to_string(q.moved.size()) + " vertices moved" +
+            (q.rings ? ", region widened " + std::to_string(q.rings) + (q.rings == 1 ? " ring" : " rings") : "") + ")";
+  else
+    text += " (not smoothed)";
   if (!q.inverted.empty()) text += "; inverted " + idList(q.inverted);
+  if (!q.pinned.empty()) text += " (pinned by the boundary: " + idList(q.pinned) + ")";
   if (!q.degenerate.empty()) text += "; degenerate by construction " + idList(q.degenerate) + ", min of the others " + number(q.afterRegular);
   return text + "\n";
 }

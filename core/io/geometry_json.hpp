@@ -28,9 +28,11 @@ std::string edgeDualJson(const EdgeDual& d);
 std::string qualityStatsJson(const QualityStats& s);
 std::string qualityStatsText(const QualityStats& s);
 
-// {"smoothed","before","after","afterRegular","inverted":[..],"degenerate":[..],"moved":[..]}
+// {"smoothed","before","after","afterRegular","inverted":[..],"pinned":[..],"degenerate":[..],"moved":[..],
+//  "rings","evaluations"}, or null when the step was not measured (StepGeometry::Keep).
 std::string stepQualityJson(const StepQuality& q);
-// "  quality: min scaled Jacobian 0.41 -> 0.52 (smoothed, 4 vertices placed); inverted [..]; degenerate by construction [..]"
+// "  quality: min scaled Jacobian 0.41 -> 0.52 (smoothed, 16 vertices moved); inverted [..]; degenerate by
+// construction [..], min of the others 0.5"; "" when not measured.
 std::string stepQualityText(const StepQuality& q);
 
 }  // namespace hexdual::io

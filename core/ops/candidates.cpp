@@ -66,7 +66,7 @@ std::vector<OpStep> candidates(const Complex& cx, OpKind op) {
   Complex work = cx;
   std::vector<OpStep> ok;
   for (const OpStep& t : tries(cx, op, info.candidates))
-    if (std::optional<OpResult> r = tryApplyStep(work, t, nullptr, StepOptions{false})) {  // topology only: no smoothing
+    if (std::optional<OpResult> r = tryApplyStep(work, t)) {
       work.undo(r->edits);
       ok.push_back(t);
     }

@@ -165,7 +165,7 @@ OpLog decodeOpLogUrl(std::string_view text) {
 namespace {
 // The operation's result with its geometry placed and measured (after the operation committed).
 OpResult withGeometry(Complex& cx, OpResult r, const StepOptions& options) {
-  r.quality = placeStepGeometry(cx, r.edits, options.smooth);
+  r.quality = placeStepGeometry(cx, r.edits, options.geometry);
   return r;
 }
 }  // namespace

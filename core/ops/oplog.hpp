@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "geometry/step_geometry.hpp"
 #include "ops/op_step.hpp"
 #include "ops/ops.hpp"
 
@@ -28,13 +29,16 @@ std::string formatOpStep(const OpStep& step);
 std::string encodeOpLogUrl(const OpLog& log);
 OpLog decodeOpLogUrl(std::string_view text);
 
-// How applyStep treats geometry. With `smooth` (the default) the vertices a step creates or moves
-// are placed by the local smoothing (geometry/step_geometry.hpp) and the moves join its edit log;
-// without, they stay where the operation put them (fixed offsets: logs recorded before the
-// smoothing replay to the same positions). OpResult::quality is measured either way.
+// How applyStep treats geometry (geometry/step_geometry.hpp). The default, Keep, is the operation
+// alone: new vertices stay at its fixed offsets and nothing is measured, for callers that only
+// need topology (the flip search, `candidates`, property tests). The CLI and the package pass
+// Smooth (the local untangling and smoothing; its moves join the step's edit log, so undo stays
+// exact) or, with --no-smooth / mesh.smoothing = false, Measure; OpResult::quality holds the
+// measurement.
 struct StepOptions {
-  bool smooth = true;
+  StepGeometry geometry = StepGeometry::Keep;
 };
+inline constexpr StepOptions kSmoothStep{StepGeometry::Smooth};
 
 // Applies one step (text or parsed). Throws as the operation does; the complex is then unchanged.
 // A parsed step with the wrong number or kinds of arguments is rejected before anything runs.
