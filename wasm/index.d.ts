@@ -107,21 +107,27 @@ export interface Quality {
   /** 20 counts: bucket k holds [-1 + k/10, -1 + (k+1)/10), the last one includes 1. */
   buckets: number[];
 }
-/** What a step did to the geometry (docs/operations.md, "Geometry"). */
+/** What a step did to the geometry (docs/operations.md, "Geometry after every step"). */
 export interface StepQuality {
-  /** Whether new and moved vertices were placed by the local smoothing (Mesh.smoothing). */
+  /** Whether the local untangling and smoothing placed the vertices around the step (Mesh.smoothing). */
   smoothed: boolean;
-  /** Minimum scaled Jacobian of the measured hexes before and after the step (1 when none). */
+  /** Minimum scaled Jacobian of the measured hexes (touched by the step or reshaped by the smoothing) before and after (1 when none). */
   before: number;
   after: number;
   /** `after` without the hexes degenerate by construction. */
   afterRegular: number;
-  /** Measured hexes with scaled Jacobian <= 0 that some embedding could make valid. */
+  /** Measured hexes with scaled Jacobian <= 0 that are not degenerate by construction. */
   inverted: number[];
-  /** Measured hexes with an interior edge of valence <= 2: never valid (a pillow's or blind chord's pair). */
+  /** Those of `inverted` that no smoothing keeping the boundary fixed can make valid (a certified corner). */
+  pinned: number[];
+  /** Measured hexes no embedding makes valid: an interior edge of valence <= 2, or a corner frame mirrored by another hex. */
   degenerate: number[];
-  /** Vertices the smoothing placed. */
+  /** Vertices the smoothing moved. */
   moved: number[];
+  /** How many rings the smoothing's region was widened by (0, 1 or 2). */
+  rings: number;
+  /** Corner-energy evaluations: the smoothing's cost, independent of the mesh's size. */
+  evaluations: number;
 }
 /** Irregular edges by valence and the rest of the singularity graph's size. */
 export interface SingularityCounts {
@@ -350,7 +356,7 @@ export class Mesh {
   edgeDual(hex: number, edge: number): EdgeDual;
   /** Hash of every live vertex's id and position bits (equal to `hexdual apply --json`'s positionsHash). */
   positionsHash(): string;
-  /** Whether steps place new and moved vertices by the local smoothing (default true). */
+  /** Whether steps (and flips) untangle and smooth the vertices around them (default true); false keeps the operations' own placement (still measured). */
   smoothing: boolean;
   delete(): void;
 }

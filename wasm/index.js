@@ -447,7 +447,7 @@ export class Mesh {
   positionsHash() {
     return module().geometryPositionsHash(this.#live().complexAddress());
   }
-  /** Whether steps place new and moved vertices by the local smoothing (default true). */
+  /** Whether steps and flips untangle and smooth the vertices around them (default true; false: the operations' own placement, still measured). */
   get smoothing() {
     return this.#live().smoothing();
   }

@@ -31,7 +31,12 @@ test('a hex push makes 8 valence-3 edges; edgeDual names the sheet and 3 chords 
   assert.equal(r.quality.smoothed, true);
   assert.deepEqual(r.quality.inverted, []);
   assert.deepEqual(r.quality.degenerate, []);
-  assert.deepEqual(r.quality.moved, r.created.vertices);
+  // A flat hex push moves the 16 vertices of its 6 hexes: the 4 new ones and q's own among them.
+  assert.equal(r.quality.moved.length, 16);
+  assert.ok(r.created.vertices.every((v) => r.quality.moved.includes(v)));
+  assert.deepEqual(r.quality.pinned, []);
+  assert.equal(r.quality.rings, 0);
+  assert.ok(r.quality.evaluations > 0);
   assert.equal(r.quality.before, 1);
   assert.ok(r.quality.after > 0.3);
   const s = m.singularities();
