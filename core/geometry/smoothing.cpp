@@ -102,12 +102,12 @@ double newtonStep(SmoothingRegion& r, size_t i, double delta2) {
   return 0;
 }
 
-// Sweeps until the barrier phase converges, the softened phase stalls, or kMaxSweeps.
+// Sweeps until the barrier phase converges, the softened phase stalls, kMaxSweeps, or the budget.
 int sweep(SmoothingRegion& r) {
   const double eps = kEpsilon * r.volumeScale;
   r.doomedDelta2 = eps * eps;
   int n = 0;
-  while (n < kMaxSweeps) {
+  while (n < kMaxSweeps && r.evaluations < r.budget) {
     const double sigma = minCornerDeterminant(r);
     const double delta2 = sigma < eps ? eps * (eps - sigma) : 0;
     double largest = 0;
@@ -129,12 +129,12 @@ double minimumOf(const std::vector<AffineFunction>& fs, Vec3 p) {
 // a sweep gains nothing, or kMaxUntangleSweeps.
 int untangle(SmoothingRegion& r) {
   int n = 0;
-  while (n < kMaxUntangleSweeps && !(minCornerDeterminant(r) > 0)) {
+  while (n < kMaxUntangleSweeps && r.evaluations < r.budget && !(minCornerDeterminant(r) > 0)) {
     bool gained = false;
     for (size_t i = 0; i < r.free.size(); ++i) {
       const std::vector<AffineFunction> fs = cornerFunctions(r, i);
       const Vec3 q = maximiseMinimum(fs, r.pos[i], 0.5 * r.scale[i]);
-      if (minimumOf(fs, q) > minimumOf(fs, r.pos[i]) + 1e-9) r.pos[i] = q, gained = true;
+      if (minimumOf(fs, q) > minimumOf(fs, r.pos[i]) + 1e-9 && keepsFloors(r, i, q)) r.pos[i] = q, gained = true;
     }
     ++n;
     if (!gained) break;
@@ -164,9 +164,11 @@ Outcome outcome(const SmoothingRegion& r) { return {invertedHexes(r), worstScale
 
 }  // namespace
 
-SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free) {
+SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free, const std::vector<HexId>& near,
+                              int64_t budget) {
   std::sort(free.begin(), free.end(), [](const FreeVertex& a, const FreeVertex& b) { return a.vertex < b.vertex; });
-  SmoothingRegion r = buildSmoothingRegion(cx, free);
+  SmoothingRegion r = buildSmoothingRegion(cx, free, near);
+  r.budget = budget;
   SmoothingStats st;
   const std::vector<Vec3> start = r.pos;
   const Outcome before = outcome(r);

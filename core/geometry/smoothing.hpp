@@ -27,6 +27,9 @@ struct SmoothingStats {
 // Moves the free vertices (interior ones: the caller leaves boundary vertices out) through
 // Complex::setPosition, so an open transaction journals the moves. When the sweeps would leave
 // more counted hexes inverted than there were, nothing moves.
-SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free);
+// `near` (ascending): the hexes sharing a vertex with a hex the step touched (buildSmoothingRegion).
+// Sweeps stop once `budget` corner energies were evaluated (a bound on the worst case).
+SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free, const std::vector<HexId>& near,
+                              int64_t budget);
 
 }  // namespace hexdual

@@ -61,6 +61,13 @@ double cornerDeterminant(const SmoothingRegion& r, const std::array<int32_t, 8>&
   return det3(p[1] - p[0], p[2] - p[0], p[3] - p[0]);
 }
 
+uint8_t nonPositiveCorners(const SmoothingRegion& r, const std::array<int32_t, 8>& hc) {
+  uint8_t mask = 0;
+  for (int j = 0; j < 8; ++j)
+    if (!(cornerDeterminant(r, hc, j) > 0)) mask = uint8_t(mask | 1 << j);
+  return mask;
+}
+
 // Marks the counted corners whose only free vertex is i when they cannot all be positive at once.
 void markDoomed(SmoothingRegion& r, size_t i) {
   std::vector<OneFreeCorner> corners;
@@ -83,7 +90,8 @@ void markDoomed(SmoothingRegion& r, size_t i) {
 
 }  // namespace
 
-SmoothingRegion buildSmoothingRegion(const Complex& cx, const std::vector<FreeVertex>& free) {
+SmoothingRegion buildSmoothingRegion(const Complex& cx, const std::vector<FreeVertex>& free,
+                                     const std::vector<HexId>& near) {
   SmoothingRegion r;
   r.cx = &cx;
   for (const FreeVertex& f : free) r.free.push_back(f.vertex), r.pos.push_back(cx.position(f.vertex));
@@ -104,6 +112,10 @@ SmoothingRegion buildSmoothingRegion(const Complex& cx, const std::vector<FreeVe
     r.corners.push_back(hc);
     r.counted.push_back(countedCorners(r, hc));
     r.doomed.push_back(0);
+    r.frozen.push_back(
+        std::binary_search(near.begin(), near.end(), h) ? 0 : uint8_t(nonPositiveCorners(r, hc) & r.counted.back()));
+    r.floors.emplace_back();
+    for (int j = 0; j < 8; ++j) r.floors.back()[size_t(j)] = cornerDeterminant(r, hc, j);
   }
   r.incidence.resize(free.size());
   for (size_t i = 0; i < free.size(); ++i)
@@ -132,6 +144,11 @@ double vertexEnergy(SmoothingRegion& r, size_t i, Vec3 p, double delta2, Vec3* g
       std::array<Vec3, 4> pts = framePoints(r, hc, j);
       const int at = m == 0 ? 0 : 1 + int(std::find(f, f + 3, c) - f);
       pts[size_t(at)] = p;
+      if (r.frozen[size_t(k)] >> j & 1) {
+        if (det3(pts[1] - pts[0], pts[2] - pts[0], pts[3] - pts[0]) < r.floors[size_t(k)][size_t(j)])
+          return std::numeric_limits<double>::infinity();
+        continue;
+      }
       Vec3 cg;
       const double e =
           cornerEnergy(pts, doomed >> j & 1 ? std::max(delta2, r.doomedDelta2) : delta2, at, grad ? &cg : nullptr);
@@ -145,11 +162,27 @@ double vertexEnergy(SmoothingRegion& r, size_t i, Vec3 p, double delta2, Vec3* g
   return sum;
 }
 
+bool keepsFloors(const SmoothingRegion& r, size_t i, Vec3 p) {
+  for (auto [k, c] : r.incidence[i]) {
+    const uint8_t frozen = r.frozen[size_t(k)];
+    if (!frozen) continue;
+    for (int m = 0; m < 4; ++m) {
+      const int j = m == 0 ? c : kCornerFrame[c][m - 1];
+      if (!(frozen >> j & 1)) continue;
+      std::array<Vec3, 4> pts = framePoints(r, r.corners[size_t(k)], j);
+      const int* f = kCornerFrame[j];
+      pts[size_t(m == 0 ? 0 : 1 + int(std::find(f, f + 3, c) - f))] = p;
+      if (det3(pts[1] - pts[0], pts[2] - pts[0], pts[3] - pts[0]) < r.floors[size_t(k)][size_t(j)]) return false;
+    }
+  }
+  return true;
+}
+
 double minCornerDeterminant(const SmoothingRegion& r) {
   double m = std::numeric_limits<double>::infinity();
   for (size_t k = 0; k < r.corners.size(); ++k)
     for (int j = 0; j < 8; ++j)
-      if ((r.counted[k] & ~r.doomed[k]) >> j & 1) m = std::min(m, cornerDeterminant(r, r.corners[k], j));
+      if ((r.counted[k] & ~r.doomed[k] & ~r.frozen[k]) >> j & 1) m = std::min(m, cornerDeterminant(r, r.corners[k], j));
   return m;
 }
 
@@ -159,7 +192,7 @@ std::vector<AffineFunction> cornerFunctions(SmoothingRegion& r, size_t i) {
     const auto& hc = r.corners[size_t(k)];
     const int moved[4] = {c, kCornerFrame[c][0], kCornerFrame[c][1], kCornerFrame[c][2]};
     for (int j : moved) {
-      if (!((r.counted[size_t(k)] & ~r.doomed[size_t(k)]) >> j & 1)) continue;
+      if (!((r.counted[size_t(k)] & ~r.doomed[size_t(k)] & ~r.frozen[size_t(k)]) >> j & 1)) continue;
       const std::array<Vec3, 4> p = framePoints(r, hc, j);
       const int* f = kCornerFrame[j];
       const int at = j == c ? 0 : 1 + int(std::find(f, f + 3, c) - f);
@@ -177,7 +210,7 @@ double worstScaledCorner(const SmoothingRegion& r) {
   double m = 1;
   for (size_t k = 0; k < r.corners.size(); ++k)
     for (int j = 0; j < 8; ++j) {
-      if (!((r.counted[k] & ~r.doomed[k]) >> j & 1)) continue;
+      if (!((r.counted[k] & ~r.doomed[k] & ~r.frozen[k]) >> j & 1)) continue;
       const std::array<Vec3, 4> p = framePoints(r, r.corners[k], j);
       const Vec3 a = p[1] - p[0], b = p[2] - p[0], c = p[3] - p[0];
       const double len = length(a) * length(b) * length(c);

@@ -64,22 +64,39 @@ std::vector<HexId> reshapedByStep(const Complex& cx, const Complex::EditLog& log
 struct RingResult {
   int ring = 0;
   std::vector<std::pair<VertexId, Vec3>> moves;
-  std::vector<HexId> around;  // the hexes around its free vertices, and the step's
-  size_t inverted = 0;        // regular hexes among `around` left inverted
+  std::vector<HexId> around;    // the hexes around its free vertices, and the step's
+  std::vector<HexId> inverted;  // regular hexes among `around` left inverted (and not inverted before the step)
 };
 
-// Smooths the interior vertices of `hexes` (undone by cx.undo(edits)).
+// Every hex with a vertex of one of `hexes` (ascending): beyond them, the step changed neither
+// the positions nor whether a hex is degenerate by construction (its edges' cycles and its
+// vertices' stars are as they were).
+std::vector<HexId> nearHexes(const Complex& cx, const std::vector<HexId>& hexes) {
+  std::vector<FreeVertex> corners;
+  for (HexId h : hexes)
+    for (int c = 0; c < 8; ++c) corners.push_back({cx.vertex(h, c), h, c});
+  return merged(hexesAround(cx, corners), hexes);
+}
+
+// Smooths the interior vertices of `hexes` (undone by cx.undo(edits)); `alive`: the live hexes
+// the step touched; `near`: nearHexes(alive). Hexes not near that are inverted before the
+// smoothing were inverted and regular before the step (the smoothing keeps their corners from
+// getting lower): not counted.
 RingResult smoothRing(Complex& cx, const std::vector<HexId>& hexes, const std::vector<HexId>& alive,
-                      Complex::EditLog& edits, StepQuality& q) {
+                      const std::vector<HexId>& near, Complex::EditLog& edits, StepQuality& q) {
   RingResult res;
   const std::vector<FreeVertex> free = interiorCorners(cx, hexes);
+  res.around = merged(hexesAround(cx, free), alive);
+  std::vector<HexId> already;
+  for (HexId h : invertedRegular(cx, res.around))
+    if (!std::binary_search(near.begin(), near.end(), h)) already.push_back(h);
   cx.beginTransaction();
-  const SmoothingStats st = smoothVertices(cx, free);
+  const SmoothingStats st = smoothVertices(cx, free, near, kStepEvaluationBudget - q.evaluations);
   edits = cx.commitTransaction();
   q.evaluations += st.evaluations;
   for (VertexId v : st.moved) res.moves.push_back({v, cx.position(v)});
-  res.around = merged(hexesAround(cx, free), alive);
-  res.inverted = invertedRegular(cx, res.around).size();
+  for (HexId h : invertedRegular(cx, res.around))
+    if (!std::binary_search(already.begin(), already.end(), h)) res.inverted.push_back(h);
   return res;
 }
 
@@ -90,17 +107,16 @@ RingResult smoothRing(Complex& cx, const std::vector<HexId>& hexes, const std::v
 // narrowest on ties. Its moves join `log`; returns the hexes around its free vertices.
 std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vector<HexId>& alive, StepQuality& q) {
   std::vector<HexId> hexes = reshapedByStep(cx, log);
+  const std::vector<HexId> near = nearHexes(cx, alive);
   RingResult best;
   Complex::EditLog edits;
   for (int ring = 0;; ++ring) {
     if (ring > 0) cx.undo(edits);
-    RingResult res = smoothRing(cx, hexes, alive, edits, q);
+    RingResult res = smoothRing(cx, hexes, alive, near, edits, q);
     res.ring = ring;
-    const bool better = ring == 0 || res.inverted < best.inverted;
-    if (better) best = res;
-    if (res.inverted == 0 || ring == kWideningRings) break;
-    const std::vector<HexId> inverted = invertedRegular(cx, res.around);
-    if (std::all_of(inverted.begin(), inverted.end(), [&](HexId h) { return pinnedInversion(cx, h); })) break;
+    if (ring == 0 || res.inverted.size() < best.inverted.size()) best = res;
+    if (res.inverted.empty() || ring == kWideningRings || q.evaluations >= kStepEvaluationBudget) break;
+    if (std::all_of(res.inverted.begin(), res.inverted.end(), [&](HexId h) { return pinnedInversion(cx, h); })) break;
     hexes = res.around;
   }
   cx.undo(edits);

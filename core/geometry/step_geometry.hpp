@@ -3,6 +3,8 @@
 // options ask (oplog.hpp: the CLI and the package do, the flip search and `candidates` do not);
 // the position edits join the operation's edit log, so undo stays exact.
 #pragma once
+#include <cstdint>
+
 #include "complex/complex.hpp"
 #include "geometry/step_quality.hpp"
 
@@ -23,5 +25,8 @@ enum class StepGeometry {
 StepQuality placeStepGeometry(Complex& cx, Complex::EditLog& log, StepGeometry mode);
 
 inline constexpr int kWideningRings = 2;
+// At most this many corner-energy evaluations per step (all rings and attempts; about 0.3 s
+// natively): a bound for steps in meshes that are tangled already. Typical steps need 10^3-10^5.
+inline constexpr int64_t kStepEvaluationBudget = 3000000;
 
 }  // namespace hexdual
