@@ -122,3 +122,18 @@ test('the parity logs: CLI and package reach the same positionsHash and step qua
   }
   assert.ok(compared >= lines.length * 6 / 5, `${compared} replays of ${lines.length} logs`);
 });
+
+test('a flip applied directly is smoothed and measured like a step; smoothing off leaves its hexes inverted', () => {
+  const m = Mesh.grid(4, 4, 4);
+  const [r] = m.flip('2-6', [21, 22]);
+  assert.equal(r.quality.smoothed, true);
+  assert.deepEqual(r.quality.inverted, []);
+  assert.equal(r.quality.moved.length, 16);
+  assert.ok(r.quality.after > 0.5);
+  m.undo();
+  m.smoothing = false;
+  const [off] = m.flip('2-6', [21, 22]);
+  assert.equal(off.quality.smoothed, false);
+  assert.deepEqual(off.quality.inverted, [64, 66, 67, 68, 69]);  // as `hexdual flip 2-6 --at 21,22 --no-smooth` prints
+  m.delete();
+});
