@@ -1,13 +1,14 @@
-// Local untangling and smoothing of a few free vertices (the ones a step created or moved, and the
-// interior vertices around them; step_geometry.hpp chooses them). Minimises the sum of the corner
-// energies (corner_energy.hpp: Knupp's squared condition number with Escobar's modified
-// determinant) of the hexes around them that are not degenerate by construction (degenerate.hpp):
-// Gauss-Seidel sweeps over the free vertices in id order, each a Newton step (Hessian by forward
-// differences of the exact gradient) with backtracking. While a corner is tangled (determinant
-// below epsilon) delta > 0 softens the barrier so vertices can pass through it (untangling); once
-// none is, delta = 0 and the energy is a barrier no step crosses (smoothing keeps every corner
-// valid). Nothing else moves. Plain scalar arithmetic in a fixed order: the same bits natively
-// and in wasm.
+// Local untangling and smoothing of a few free vertices (the interior vertices around a step;
+// step_geometry.hpp chooses them). Minimises the sum of the corner energies (corner_energy.hpp:
+// Knupp's squared condition number with Escobar's modified determinant) of the hexes around them
+// that are not degenerate by construction (degenerate.hpp): Gauss-Seidel sweeps over the free
+// vertices in id order, each a Newton step (Hessian by forward differences of the exact gradient)
+// with backtracking. While a corner is tangled (determinant below epsilon) delta > 0 softens the
+// barrier so vertices can pass through it (untangling); once none is, delta = 0 and the energy is a
+// barrier no step crosses. When the sweeps stall tangled, Freitag & Plassmann's max-min untangling
+// (max_min.hpp) runs and the sweeps again; failing that, the whole attempt again from the start with
+// the max-min first. Nothing else moves. Plain scalar arithmetic in a fixed order: the same bits
+// natively and in wasm.
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -16,8 +16,7 @@ struct StepQuality {
   double before = 1, after = 1;
   double afterRegular = 1;        // `after` without the hexes degenerate by construction
   std::vector<HexId> inverted;    // measured hexes with scaled Jacobian <= 0, not degenerate by construction
-  std::vector<HexId> pinned;      // those of `inverted` with a non-positive corner whose 4 vertices are all
-                                  // on the boundary (or non-manifold): no smoothing that keeps them can fix it
+  std::vector<HexId> pinned;      // those of `inverted` certified impossible with the boundary fixed (pinned.hpp)
   std::vector<HexId> degenerate;  // measured hexes degenerate by construction (never valid)
   std::vector<VertexId> moved;    // vertices the smoothing moved, ascending
   int rings = 0;                  // how many times the smoothing widened its region (0..kWideningRings)
