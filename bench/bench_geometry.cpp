@@ -241,12 +241,17 @@ int main(int argc, char** argv) {
     std::printf("seed %u, %d random candidate steps per kind (each applied measured, undone, smoothed, undone)\n", seed,
                 perKind);
     for (const std::string& f : files) {
-      Complex cx = readMesh(f);
-      randomSteps(f.substr(f.rfind('/') + 1), cx, perKind, seed);
+      try {
+        Complex cx = readMesh(f);
+        randomSteps(f.substr(f.rfind('/') + 1), cx, perKind, seed);
+      } catch (const Error& e) {  // a refused file (P_hex_sphere is mislabelled): say so, go on
+        std::printf("%s: refused: %s\n", f.c_str(), e.what());
+      }
+      std::fflush(stdout);
     }
   }
   if (!costs) return 0;
-  std::printf("cost per step at the centre of a grid (CPU us, minimum of 7, measured/smoothed interleaved)\n");
+  std::printf("cost per step at the centre of a grid (wall-clock us, minimum of 7, measured/smoothed interleaved)\n");
   for (const OpInfo& info : allOps())
     for (int n : {10, 60}) cost(n, info.kind, 7);
   return 0;
