@@ -22,7 +22,11 @@ TEST_CASE("cli: grid, info --json, validate, convert") {
   CHECK(info.status == 0);
   CHECK(contains(info.out, "{\"vertices\":64,\"edges\":144,\"quads\":108,\"hexes\":27,\"boundaryQuads\":54,\"sheets\":["));
   CHECK(contains(info.out, "{\"id\":0,\"hexes\":9,\"topology\":\"disk\",\"boundaryLoops\":1,\"euler\":1,\"selfIntersecting\":false}"));
-  CHECK(contains(info.out, "{\"id\":26,\"hexes\":3,\"closed\":false,\"selfIntersecting\":false}],\"file\":{\"format\":\"vtk 3.0 ascii\""));
+  // The singularity graph of the block: its 12 edges of 3 unit edges each (valence 1 on the
+  // boundary) and its 8 corners.
+  CHECK(contains(info.out, "{\"id\":26,\"hexes\":3,\"closed\":false,\"selfIntersecting\":false}],\"singularities\":{\"interiorEdges\":0,"
+                           "\"boundaryEdges\":36,\"interiorByValence\":{},\"boundaryByValence\":{\"1\":36},\"vertices\":8,"
+                           "\"boundaryVertices\":8,\"curves\":12},\"file\":{\"format\":\"vtk 3.0 ascii\""));
   CHECK(run("convert /tmp/hexdual_cli_g.vtk /tmp/hexdual_cli_g.mesh").status == 0);
   CHECK(run("convert /tmp/hexdual_cli_g.mesh /tmp/hexdual_cli_g.hxd").status == 0);
   Run v = run("validate /tmp/hexdual_cli_g.hxd");

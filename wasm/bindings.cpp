@@ -70,6 +70,8 @@ EMSCRIPTEN_BINDINGS(hexdual) {
       .function("indices", &WasmMesh::indices)
       .function("triangleHex", &WasmMesh::triangleHex)
       .function("complexAddress", &WasmMesh::complexAddress)
+      .function("setSmoothing", &WasmMesh::setSmoothing)
+      .function("smoothing", &WasmMesh::smoothing)
       .function("dualAddress", &WasmMesh::dualAddress)
       .function("trackerAddress", &WasmMesh::trackerAddress);
 }

@@ -156,7 +156,7 @@ std::string WasmMesh::record(StepRecord s) {
 std::string WasmMesh::apply(const OpStep& step) {
   tracker();  // the tracker must see the state before the step
   StepRecord s;
-  s.report = applyStepTracked(cx_, *tracker_, step);
+  s.report = applyStepTracked(cx_, *tracker_, step, stepOptions());
   return record(std::move(s));
 }
 
@@ -166,6 +166,7 @@ std::string WasmMesh::applyFlip(const std::string& name, const std::vector<int>&
   if (!viaAtomic) {
     StepRecord s;
     s.report.result = hexdual::flip(cx_, name, hexes);
+    s.report.result.quality = placeStepGeometry(cx_, s.report.result.edits, stepOptions().geometry);
     s.flipName = name;
     s.flipHexes = hexes;
     s.report.dual = tracker_->update(cx_, s.report.result.edits, false);

@@ -34,11 +34,12 @@ std::string guardedJson(const char* code, F&& f) {
 }
 
 // What `step` would change, or its refusal with the rule; the mesh and its dual unchanged.
-std::string sheetopsPreview(double complexAddress, double trackerAddress, const std::string& step) {
+std::string sheetopsPreview(double complexAddress, double trackerAddress, const std::string& step, bool smooth) {
   return guardedJson("PRECONDITION", [&] {
     const OpStep s = parseOpStep(step);
     const auto& tracker = *reinterpret_cast<const DualTracker*>(uintptr_t(trackerAddress));
-    return io::previewJson(previewStep(complexAt(complexAddress), tracker, s), s);
+    const StepOptions options{smooth ? StepGeometry::Smooth : StepGeometry::Measure};  // as WasmMesh::stepOptions
+    return io::previewJson(previewStep(complexAt(complexAddress), tracker, s, options), s);
   });
 }
 

@@ -116,6 +116,91 @@ export interface Quality {
   inverted: Int32Array;
   min: number;
   max: number;
+  /** Live hexes, and the distribution as `hexdual quality --json` gives it. */
+  hexes: number;
+  mean: number;
+  /** Hexes with scaled Jacobian <= 0. */
+  nonPositive: number;
+  /** 20 counts: bucket k holds [-1 + k/10, -1 + (k+1)/10), the last one includes 1. */
+  buckets: number[];
+}
+/** What a step did to the geometry (docs/operations.md, "Geometry after every step"). */
+export interface StepQuality {
+  /** Whether the local untangling and smoothing placed the vertices around the step (Mesh.smoothing). */
+  smoothed: boolean;
+  /** Minimum scaled Jacobian of the measured hexes (touched by the step or reshaped by the smoothing) before and after (1 when none). */
+  before: number;
+  after: number;
+  /** `after` without the hexes degenerate by construction. */
+  afterRegular: number;
+  /** Measured hexes with scaled Jacobian <= 0 that are not degenerate by construction. */
+  inverted: number[];
+  /** Those of `inverted` that no smoothing keeping the boundary fixed can make valid (a certified corner). */
+  pinned: number[];
+  /** Measured hexes no embedding makes valid: an interior edge of valence <= 2, or a corner frame mirrored by another hex. */
+  degenerate: number[];
+  /** Vertices the smoothing moved. */
+  moved: number[];
+  /** How many rings the smoothing's region was widened by (0, 1 or 2). */
+  rings: number;
+  /** Corner-energy evaluations: the smoothing's cost, independent of the mesh's size. */
+  evaluations: number;
+}
+/** Irregular edges by valence and the rest of the singularity graph's size. */
+export interface SingularityCounts {
+  interiorEdges: number;
+  boundaryEdges: number;
+  interiorByValence: Record<string, number>;
+  boundaryByValence: Record<string, number>;
+  vertices: number;
+  boundaryVertices: number;
+  curves: number;
+}
+export interface SingularEdge {
+  /** The edge's smallest (hex, local edge) incidence: pass it to edgeDual(). */
+  hex: number;
+  edge: number;
+  vertices: [number, number];
+  valence: number;
+  boundary: boolean;
+  /** Index into `curves`. */
+  curve: number;
+}
+export interface SingularVertex {
+  vertex: number;
+  boundary: boolean;
+  /** Singular edges at the vertex (1: a curve ends, 3 or more: curves branch, 2: of different kinds). */
+  degree: number;
+}
+export interface SingularCurve {
+  /** Indices into `edges`, in order along the curve. */
+  edges: number[];
+  valence: number;
+  boundary: boolean;
+  closed: boolean;
+  /** The end vertices of an open curve; [] for a closed one. */
+  ends: number[];
+}
+export interface Singularities {
+  counts: SingularityCounts;
+  edges: SingularEdge[];
+  vertices: SingularVertex[];
+  curves: SingularCurve[];
+}
+/** The dual through one edge. */
+export interface EdgeDual {
+  hex: number;
+  edge: number;
+  valence: number;
+  boundary: boolean;
+  /** The sheet crossing the edge. */
+  sheet: number;
+  /** Hexes around the edge in cycle (fan) order. */
+  hexes: number[];
+  /** Each quad containing the edge (canonical side) with the chord through it and that chord's other sheet. */
+  quads: { hex: number; face: number; chord: number; sheet: number }[];
+  chords: number[];
+  sheets: number[];
 }
 export interface HexDual {
   sheetOf: Int32Array;
@@ -153,6 +238,8 @@ export interface StepReport {
   delta: { V: number; E: number; F: number; H: number };
   changedSheets: IdChanges;
   changedChords: IdChanges;
+  /** Scaled Jacobians of the touched hexes before and after, and what the smoothing did. */
+  quality: StepQuality;
 }
 /** What applying a step would do (mesh.preview): the report apply would return, or the refusal. */
 export type Preview =
@@ -327,5 +414,15 @@ export class Mesh {
   // ---- end of view data (explorer) ----
   /** Ring splits whose loop passes through the edge (loops of at most maxEdges edges, default 8). */
   ringSplits(near: { hex: number; edge: number }, options?: { maxEdges?: number }): string[];
+  // ---- geometry and singularities ----
+  singularities(): Singularities;
+  /** The dual through an edge (any incidence of it); throws for a hex or edge that does not exist. */
+  edgeDual(hex: number, edge: number): EdgeDual;
+  /** Hash of every live vertex's id and position bits (equal to `hexdual apply --json`'s positionsHash). */
+  positionsHash(): string;
+  /** x, y, z of each vertex id, in order (3 numbers per vertex); throws PRECONDITION for an id that is not a live vertex. */
+  vertexPositions(ids: number[]): Float64Array;
+  /** Whether steps (and flips) untangle and smooth the vertices around them (default true); false keeps the operations' own placement (still measured). */
+  smoothing: boolean;
   delete(): void;
 }

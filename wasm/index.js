@@ -142,6 +142,7 @@ function toReport({ flip, report: r }) {
     delta: r.delta,
     changedSheets: r.sheets,
     changedChords: r.chords,
+    quality: r.quality,
   };
   if (report.inverse === null) report.noInverse = flip ? 'a flip applied directly has no inverse step; use undo()' : r.noInverse;
   return report;
@@ -151,6 +152,11 @@ const OPS = ['pillow', 'unpillow', 'chordpush', 'chordpull', 'hexpush', 'hexpull
 const FORMATS = ['vtk', 'mesh', 'hxd'];
 
 // ---- view data (explorer) ----
+// A geometry call's {json} or {error, code} (bindings_geometry.cpp).
+function jsonCall(result) {
+  if (result.error !== undefined) throw new HexdualError(result.code ?? 'PRECONDITION', result.error);
+  return JSON.parse(result.json);
+}
 function viewCall(result) {
   if (result.error !== undefined) throw new HexdualError(result.code ?? 'PRECONDITION', result.error);
   return result;
@@ -295,7 +301,7 @@ export class Mesh {
     const raw = this.#live();
     const tracker = raw.trackerAddress();
     if (!tracker) check(null);
-    const out = JSON.parse(module().sheetopsPreview(raw.complexAddress(), tracker, step));
+    const out = JSON.parse(module().sheetopsPreview(raw.complexAddress(), tracker, step, raw.smoothing()));
     if (out.code !== undefined) throw new HexdualError(out.code, out.error);  // the binding's failure, not a refusal
     const base = { applies: out.applies, family: out.family, step: out.text };
     if (!out.applies) return { ...base, rule: out.rule, error: out.error };
@@ -432,9 +438,13 @@ export class Mesh {
     if (!dual) check(null);
     return viewCall(module().viewDualOverlay(raw.complexAddress(), dual, ids));
   }
-  /** Scaled Jacobian per hex id, the inverted hexes (<= 0), and the range over live hexes. */
+  /**
+   * Scaled Jacobian per hex id, the inverted hexes (<= 0), the range over live hexes, and the
+   * distribution as `hexdual quality --json` gives it (hexes, mean, nonPositive, 20 buckets).
+   */
   quality() {
-    return viewCall(module().viewQuality(this.#live().complexAddress()));
+    const address = this.#live().complexAddress();
+    return { ...jsonCall(module().geometryQualityStats(address)), ...viewCall(module().viewQuality(address)) };
   }
   /** Sheet and chord ids through each hex: `sheetOf[3*h+axis]`, `chordOf[3*h+axis]` (-1 for removed hexes). */
   hexDual() {
@@ -464,6 +474,39 @@ export class Mesh {
     const edge = integer('ringSplits: near.edge', near?.edge);
     const max = integer('ringSplits: maxEdges', maxEdges);
     return viewCall(module().tutorialRingSplits(this.#live().complexAddress(), hex, edge, max)).steps;
+  }
+
+  // ---- geometry and singularities ----
+  /** The singularity graph: irregular edges (with their curve), irregular vertices, curves, counts. */
+  singularities() {
+    return jsonCall(module().geometrySingularities(this.#live().complexAddress()));
+  }
+  /** The sheet crossing an edge and the chords (with their other sheets) through the quads around it. */
+  edgeDual(hex, edge) {
+    const raw = this.#live();
+    const h = integer('edgeDual: hex', hex), e = integer('edgeDual: edge', edge);
+    const dual = raw.dualAddress();
+    if (!dual) check(null);
+    return jsonCall(module().geometryEdgeDual(raw.complexAddress(), dual, h, e));
+  }
+  /** Positions of vertices: x, y, z of each id in `ids`, in order (3 numbers per vertex). */
+  vertexPositions(ids) {
+    if (!Array.isArray(ids) || !ids.every((v) => Number.isInteger(v))) throw new HexdualError('PRECONDITION', 'vertexPositions: ids must be an array of integers');
+    const out = module().geometryVertexPositions(this.#live().complexAddress(), ids);
+    if (out.error !== undefined) throw new HexdualError(out.code, out.error);
+    return out.xyz;
+  }
+  /** FNV-1a hash of every live vertex's id and position bits (as `hexdual apply --json` prints). */
+  positionsHash() {
+    return module().geometryPositionsHash(this.#live().complexAddress());
+  }
+  /** Whether steps and flips untangle and smooth the vertices around them (default true; false: the operations' own placement, still measured). */
+  get smoothing() {
+    return this.#live().smoothing();
+  }
+  set smoothing(on) {
+    if (typeof on !== 'boolean') throw new HexdualError('PRECONDITION', 'smoothing must be true or false');
+    this.#live().setSmoothing(on);
   }
 
   /** Frees the wasm memory of this mesh. */

@@ -52,6 +52,11 @@ class WasmMesh {
   bool buildRender(double shrink);
   // For wasm/bindings_view.cpp (same module): where the complex and its current dual live.
   double complexAddress() const { return double(uintptr_t(&cx_)); }
+  // Whether steps place their new and moved vertices by the local smoothing (StepOptions).
+  void setSmoothing(bool on) { smooth_ = on; }
+  bool smoothing() const { return smooth_; }
+  // Steps are smoothed, or (smoothing off) only measured, like the CLI's apply and --no-smooth.
+  StepOptions stepOptions() const { return {smooth_ ? StepGeometry::Smooth : StepGeometry::Measure}; }
   double dualAddress();
   // For wasm/bindings_sheetops.cpp: the tracker (a preview copies it, to report the ids a step would give).
   double trackerAddress();
@@ -128,6 +133,7 @@ class WasmMesh {
   Complex cx_;
   std::unique_ptr<DualTracker> tracker_;
   std::vector<StepRecord> history_, redo_;
+  bool smooth_ = true;
   RenderBuffers rb_;
   std::vector<int32_t> scratch_;
 };

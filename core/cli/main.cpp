@@ -18,6 +18,8 @@
 #include "flips/flip.hpp"
 #include "flips/fourcube.hpp"
 #include "flips/search.hpp"
+#include "geometry/quality_stats.hpp"
+#include "io/geometry_json.hpp"
 #include "ops/candidates.hpp"
 #include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
@@ -38,8 +40,11 @@ const char* kUsage =
     "  hexdual info FILE [--json]                counts, sheets and chords, and what the file held\n"
     "  hexdual validate FILE                     check every invariant; list non-manifold vertices\n"
     "  hexdual convert IN OUT [--binary]         read any supported format, write .vtk, .mesh or .hxd\n"
-    "  hexdual apply FILE --ops LOG -o OUT [--json]\n"
-    "                                            apply an operation log (text, URL form, or @file)\n"
+    "  hexdual apply FILE --ops LOG -o OUT [--json] [--no-smooth]\n"
+    "                                            apply an operation log (text, URL form, or @file); each\n"
+    "                                            step is untangled and smoothed locally (--no-smooth: new\n"
+    "                                            vertices stay at the operations' offsets)\n"
+    "  hexdual quality FILE [--json]             scaled-Jacobian distribution (min, mean, histogram)\n"
     "  hexdual candidates FILE OP                steps of operation OP that apply to FILE\n"
     "  hexdual apply FILE --ops LOG --dry-run [--json]\n"
     "                                            the same reports, nothing written\n"
@@ -48,8 +53,8 @@ const char* kUsage =
     "  hexdual sheets FILE [--sheet ID | --all] [--local H1,H2,.. --rings K] --json|--svg OUTDIR\n"
     "                                            sheet diagrams as JSON or SVG files\n"
     "  hexdual flip list [--json]                the cubical flips and their stored decompositions\n"
-    "  hexdual flip NAME --at H1,H2,.. FILE -o OUT [--via-atomic]\n"
-    "                                            apply a flip to the named hexes\n"
+    "  hexdual flip NAME --at H1,H2,.. FILE -o OUT [--via-atomic] [--no-smooth]\n"
+    "                                            apply a flip to the named hexes (smoothed like apply)\n"
     "  hexdual flip verify --all [--json]        check every stored decomposition in host meshes\n"
     "  hexdual flip search NAME --max-depth D [--max-seconds S] [--max-states N] [--ops a,b]\n"
     "                   [--threads T] [--max-memory MB] [--max-region H] [--ring-split L] [--symmetry]\n"
@@ -63,7 +68,7 @@ struct Args {
   std::vector<std::string> positional;
   std::string output, ops, at, local, jsonDir, svgDir, checkpoint, resume;
   double checkpointEvery = 0;
-  bool json = false, binary = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false, lookupLast = false, reversible = false;
+  bool json = false, binary = false, noSmooth = false, viaAtomic = false, all = false, hexesOnly = false, symmetry = false, lookupLast = false, reversible = false;
   bool dryRun = false;
   int sheet = -1, rings = 2;
   int maxDepth = 4;
@@ -132,6 +137,8 @@ Args parseArgs(int argc, char** argv, int from) {
       a.all = true;
     } else if (s == "--json") {
       a.json = true;
+    } else if (s == "--no-smooth") {
+      a.noSmooth = true;
     } else if (s == "--binary") {
       a.binary = true;
     } else if (s == "--hexes-only") {
@@ -184,6 +191,9 @@ OpLog readLog(const std::string& arg) {
   return parseOpLog(text);
 }
 
+// Steps from the CLI are smoothed, unless --no-smooth (then only measured).
+StepOptions stepOptions(const Args& a) { return {a.noSmooth ? StepGeometry::Measure : StepGeometry::Smooth}; }
+
 int runApply(const Args& a) {
   need(a, 1, "one input file");
   if (a.ops.empty()) throw Error("apply needs --ops LOG");
@@ -195,7 +205,7 @@ int runApply(const Args& a) {
   std::string text;
   for (size_t k = 0; k < log.steps.size(); ++k) {
     try {
-      reports.push_back(applyStepTracked(cx, tracker, log.steps[k]));
+      reports.push_back(applyStepTracked(cx, tracker, log.steps[k], stepOptions(a)));
     } catch (const Error& e) {
       throw Error("step " + std::to_string(k + 1) + " (" + formatOpStep(log.steps[k]) + "): " + e.what() +
                   "; nothing was written");
@@ -217,12 +227,12 @@ int runPreview(const Args& a) {
   DualTracker tracker(cx);
   for (size_t k = 0; k + 1 < log.steps.size(); ++k) {
     try {
-      applyStepTracked(cx, tracker, log.steps[k]);
+      applyStepTracked(cx, tracker, log.steps[k], stepOptions(a));
     } catch (const Error& e) {
       throw Error("step " + std::to_string(k + 1) + " (" + formatOpStep(log.steps[k]) + "): " + e.what());
     }
   }
-  const Preview p = previewStep(cx, tracker, log.steps.back());
+  const Preview p = previewStep(cx, tracker, log.steps.back(), stepOptions(a));
   std::cout << (a.json ? io::previewJson(p, log.steps.back()) + "\n" : io::previewText(p, log.steps.back()));
   return p.applies ? 0 : 1;
 }
@@ -395,12 +405,15 @@ int runFlip(const Args& a) {
   if (a.viaAtomic) {
     const StoredDecomposition* d = storedFor(name);
     if (!d || !d->found) throw Error("flip " + name + " has no stored atomic decomposition (see hexdual flip list)");
-    auto steps = replayInEmbedding(problemFor(name), d->steps, cx, hexes, "the mesh");
+    Complex trial = cx;  // the steps are found on a copy, then applied like `apply` applies them
+    auto steps = replayInEmbedding(problemFor(name), d->steps, trial, hexes, "the mesh");
+    for (const OpStep& st : steps) applyStep(cx, st, stepOptions(a));
     std::cout << formatOpLog({1, steps}) << "\n";
   } else {
     OpResult r = flip(cx, name, hexes);
-    std::cout << "flip " << name << ": hexes created " << io::idList(r.createdHexes) << " removed "
-              << io::idList(r.removedHexes) << "\n";
+    r.quality = placeStepGeometry(cx, r.edits, stepOptions(a).geometry);
+    std::cout << "flip " << name << ": hexes created " << io::idList(r.createdHexes) << " removed " << io::idList(r.removedHexes) << "\n"
+              << io::stepQualityText(r.quality);
   }
   io::writeFile(cx, a.output, a.binary);
   return 0;
@@ -489,6 +502,12 @@ int run(int argc, char** argv) {
     return 0;
   }
   if (cmd == "apply") return runApply(a);
+  if (cmd == "quality") {
+    need(a, 1, "one input file");
+    QualityStats q = qualityStats(readInput(a, a.positional[0]));
+    std::cout << (a.json ? io::qualityStatsJson(q) + "\n" : io::qualityStatsText(q));
+    return 0;
+  }
   if (cmd == "flip") return runFlip(a);
   if (cmd == "sheets") return runSheets(a);
   if (cmd == "preview") return runPreview(a);

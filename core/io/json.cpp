@@ -3,6 +3,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/singularity.hpp"
+#include "geometry/positions_hash.hpp"
+#include "io/geometry_json.hpp"
 #include "ops/op_table.hpp"
 #include "ops/oplog.hpp"
 
@@ -51,7 +54,7 @@ std::string infoJson(const Complex& cx, const Dual& dual, const ReadReport* file
     w.beginObject().key("id").value(ch.id).key("hexes").value(int64_t(ch.slots.size()));
     w.key("closed").value(ch.closed).key("selfIntersecting").value(ch.selfIntersecting).endObject();
   }
-  w.endArray();
+  w.endArray().key("singularities").raw(singularityCountsJson(singularityGraph(cx).counts));
   if (file) w.key("file").raw(reportJson(*file));
   w.endObject();
   return w.str();
@@ -72,7 +75,7 @@ std::string infoText(const Complex& cx, const Dual& dual) {
   for (const Chord& ch : dual.chords)
     out += "  chord " + std::to_string(ch.id) + ": " + std::to_string(ch.slots.size()) + " hexes, " +
            (ch.closed ? "closed" : "open") + (ch.selfIntersecting ? ", self-intersecting" : "") + "\n";
-  return out;
+  return out + singularityCountsText(singularityGraph(cx).counts);
 }
 
 }  // namespace hexdual::io
@@ -114,6 +117,7 @@ void writeStepReport(JsonWriter& w, const StepReport& rep, size_t index) {
   w.key("changed").raw(idList(ch.chordsChanged)).endObject();
   w.key("inverse").value(r.inverse ? formatOpStep(*r.inverse) : std::string());
   if (!r.inverse) w.key("noInverse").value(r.noInverse);
+  w.key("quality").raw(stepQualityJson(r.quality));
   w.endObject();
 }
 
@@ -135,7 +139,7 @@ std::string stepReportText(const StepReport& rep, size_t index) {
           idList(ch.chordsRemoved) + " changed " + idList(ch.chordsChanged) + "\n";
   std::string none = r.noInverse.empty() ? "(none; use undo)" : "(none: " + r.noInverse + "; use undo)";
   text += "  inverse: " + (r.inverse ? formatOpStep(*r.inverse) : none) + "\n";
-  return text;
+  return text + stepQualityText(r.quality);
 }
 
 std::string applyReportJson(const std::vector<StepReport>& steps, const Complex& after) {
@@ -144,7 +148,7 @@ std::string applyReportJson(const std::vector<StepReport>& steps, const Complex&
   for (size_t k = 0; k < steps.size(); ++k) writeStepReport(w, steps[k], k + 1);
   Counts c = after.counts();
   w.endArray().key("counts").beginObject().key("vertices").value(c.vertices).key("edges").value(c.edges);
-  w.key("quads").value(c.quads).key("hexes").value(c.hexes).endObject().endObject();
+  w.key("quads").value(c.quads).key("hexes").value(c.hexes).endObject().key("positionsHash").value(positionsHash(after)).endObject();
   return w.str();
 }
 

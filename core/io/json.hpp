@@ -78,7 +78,7 @@ void writeStepReport(JsonWriter& w, const StepReport& r, size_t index);
 std::string stepReportJson(const StepReport& r, size_t index);
 // The same as four lines of text ("step 1: pillow h13f5\n  hexes created ...").
 std::string stepReportText(const StepReport& r, size_t index);
-// {"steps":[..],"counts":{"vertices","edges","quads","hexes"}}: the report of a whole log.
+// {"steps":[..],"counts":{"vertices","edges","quads","hexes"},"positionsHash"}: the report of a whole log.
 std::string applyReportJson(const std::vector<StepReport>& steps, const Complex& after);
 
 // The flips list: [{"name","inverse","before":[V,E,F,H],"after":[..],"geometric","decomposition":

@@ -4,12 +4,9 @@
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "geometry/scaled_jacobian.hpp"
 
 namespace hexdual {
-
-// Scaled Jacobian of one hex in [-1, 1]: 1 for a cube, <= 0 when inverted or degenerate (a corner
-// with a zero-length edge counts as 0).
-double scaledJacobian(const Complex& cx, HexId h);
 
 struct QualityReport {
   std::vector<float> scaledJacobian;  // per hex id (capacity); tombstones hold 1

@@ -1,5 +1,6 @@
 #include "ops/oplog.hpp"
 
+#include "geometry/step_geometry.hpp"
 #include "ops/op_table.hpp"
 
 namespace hexdual {
@@ -176,14 +177,24 @@ OpLog decodeOpLogUrl(std::string_view text) {
   return parseOpLog(out);
 }
 
-OpResult applyStep(Complex& cx, const OpStep& st) {
+namespace {
+// The operation's result with its geometry placed and measured (after the operation committed).
+OpResult withGeometry(Complex& cx, OpResult r, const StepOptions& options) {
+  r.quality = placeStepGeometry(cx, r.edits, options.geometry);
+  return r;
+}
+}  // namespace
+
+OpResult applyStep(Complex& cx, const OpStep& st, const StepOptions& options) {
   checkArgs(st);
-  return opInfo(st.op).apply(cx, st);
+  return withGeometry(cx, opInfo(st.op).apply(cx, st), options);
 }
 
-OpResult applyStep(Complex& cx, std::string_view stepText) { return applyStep(cx, parseOpStep(stepText)); }
+OpResult applyStep(Complex& cx, std::string_view stepText, const StepOptions& options) {
+  return applyStep(cx, parseOpStep(stepText), options);
+}
 
-std::optional<OpResult> tryApplyStep(Complex& cx, const OpStep& st, std::string* why) {
+std::optional<OpResult> tryApplyStep(Complex& cx, const OpStep& st, std::string* why, const StepOptions& options) {
   try {
     checkArgs(st);
     const OpInfo& info = opInfo(st.op);
@@ -194,14 +205,14 @@ std::optional<OpResult> tryApplyStep(Complex& cx, const OpStep& st, std::string*
         return std::nullopt;
       }
     }
-    return info.apply(cx, st);
+    return withGeometry(cx, info.apply(cx, st), options);
   } catch (const Error& e) {
     if (why) *why = e.what();
     return std::nullopt;
   }
 }
 
-std::optional<OpResult> tryApplyStep(Complex& cx, std::string_view stepText, std::string* why) {
+std::optional<OpResult> tryApplyStep(Complex& cx, std::string_view stepText, std::string* why, const StepOptions& options) {
   OpStep st;
   try {
     st = parseOpStep(stepText);
@@ -209,14 +220,14 @@ std::optional<OpResult> tryApplyStep(Complex& cx, std::string_view stepText, std
     if (why) *why = e.what();
     return std::nullopt;
   }
-  return tryApplyStep(cx, st, why);
+  return tryApplyStep(cx, st, why, options);
 }
 
-ApplyReport applyLog(Complex& cx, const OpLog& log) {
+ApplyReport applyLog(Complex& cx, const OpLog& log, const StepOptions& options) {
   ApplyReport rep;
   for (size_t k = 0; k < log.steps.size(); ++k) {
     try {
-      rep.results.push_back(applyStep(cx, log.steps[k]));
+      rep.results.push_back(applyStep(cx, log.steps[k], options));
     } catch (const Error& e) {
       rep.failedStep = int(k + 1);
       rep.error = e.what();
@@ -226,7 +237,7 @@ ApplyReport applyLog(Complex& cx, const OpLog& log) {
   return rep;
 }
 
-ApplyReport applyLog(Complex& cx, std::string_view logText) {
+ApplyReport applyLog(Complex& cx, std::string_view logText, const StepOptions& options) {
   OpLog log;
   try {
     log = parseOpLog(logText);
@@ -236,7 +247,7 @@ ApplyReport applyLog(Complex& cx, std::string_view logText) {
     rep.error = e.what();
     return rep;
   }
-  return applyLog(cx, log);
+  return applyLog(cx, log, options);
 }
 
 }  // namespace hexdual

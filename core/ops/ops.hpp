@@ -1,14 +1,17 @@
 // The atomic dual operations of Tautges & Knoop (TK03 §4) and their inverses (docs/operations.md).
 // Every operation checks its preconditions first and is transactional: on any error it throws
 // Error (message "<log name>: <rule broken>", e.g. "hexpush: ...") and the complex is exactly as
-// before — topology, ids, positions. Existing vertices never move; new vertices are placed
-// inside the opened quads; topology never depends on positions.
+// before — topology, ids, positions. The operations themselves never move existing vertices and
+// put new ones at fixed places inside the opened quads; applyStep (oplog.hpp), when asked (the CLI
+// and the package do), then untangles and smooths the vertices around the step
+// (geometry/step_geometry.hpp). Topology never depends on positions.
 #pragma once
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "geometry/step_quality.hpp"
 #include "ops/op_step.hpp"
 
 namespace hexdual {
@@ -21,6 +24,7 @@ struct OpResult {
   std::optional<OpStep> inverse;  // a step that applies to the result and undoes this one (up to ids)
   std::string noInverse;          // when there is no inverse step: why
   Complex::EditLog edits;         // cx.undo(edits) restores the exact previous state, ids included
+  StepQuality quality;            // scaled Jacobians of the touched hexes before and after (applyStep, unless Keep)
 };
 
 // ---- 1. minimal pillow (TK03 §4.3) ----

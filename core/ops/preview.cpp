@@ -5,12 +5,12 @@
 
 namespace hexdual {
 
-Preview previewStep(const Complex& cx, const DualTracker& tracker, const OpStep& step) {
+Preview previewStep(const Complex& cx, const DualTracker& tracker, const OpStep& step, const StepOptions& options) {
   Preview p;
   Complex work = cx;
   DualTracker dual = tracker;
   try {
-    p.report = applyStepTracked(work, dual, step);
+    p.report = applyStepTracked(work, dual, step, options);
     p.applies = true;
   } catch (const Error& e) {
     p.error = e.what();

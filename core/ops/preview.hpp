@@ -16,7 +16,8 @@ struct Preview {
   StepReport report;  // when it applies: hexes and vertices created and removed, Δ, sheets and chords
 };
 
-// Costs a copy of the complex and of the tracker (linear in the mesh) and the step itself.
-Preview previewStep(const Complex& cx, const DualTracker& tracker, const OpStep& step);
+// Costs a copy of the complex and of the tracker (linear in the mesh) and the step itself; `options`
+// as applying would use them (the smoothing changes the report's quality).
+Preview previewStep(const Complex& cx, const DualTracker& tracker, const OpStep& step, const StepOptions& options = {});
 
 }  // namespace hexdual

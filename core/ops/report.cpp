@@ -5,10 +5,10 @@
 
 namespace hexdual {
 
-StepReport applyStepTracked(Complex& cx, DualTracker& tracker, const OpStep& step) {
+StepReport applyStepTracked(Complex& cx, DualTracker& tracker, const OpStep& step, const StepOptions& options) {
   StepReport rep;
   rep.step = step;
-  rep.result = applyStep(cx, step);
+  rep.result = applyStep(cx, step, options);
   rep.dual = tracker.update(cx, rep.result.edits, keepsSheetTopology(rep.result));
   return rep;
 }

@@ -3,6 +3,7 @@
 #pragma once
 #include "dual/dual_tracker.hpp"
 #include "ops/op_step.hpp"
+#include "ops/oplog.hpp"
 #include "ops/ops.hpp"
 
 namespace hexdual {
@@ -15,6 +16,6 @@ struct StepReport {
 
 // Applies `step` to cx and brings `tracker` (which follows cx) up to date. Throws as applyStep
 // does; the complex and the tracker are then unchanged.
-StepReport applyStepTracked(Complex& cx, DualTracker& tracker, const OpStep& step);
+StepReport applyStepTracked(Complex& cx, DualTracker& tracker, const OpStep& step, const StepOptions& options = {});
 
 }  // namespace hexdual

@@ -28,7 +28,7 @@ function fromCli(s) {
     step: s.text, op: s.op, inverse: s.inverse === '' ? null : s.inverse,
     created: { hexes: s.createdHexes, vertices: s.createdVertices },
     removed: { hexes: s.removedHexes, vertices: s.removedVertices },
-    delta: s.delta, changedSheets: s.sheets, changedChords: s.chords,
+    delta: s.delta, changedSheets: s.sheets, changedChords: s.chords, quality: s.quality,
   };
   if (s.inverse === '') report.noInverse = s.noInverse;
   return report;

@@ -1,0 +1,206 @@
+#include "geometry/step_geometry.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "dual/dual_tracker.hpp"
+#include "geometry/degenerate.hpp"
+#include "geometry/pinned.hpp"
+#include "geometry/scaled_jacobian.hpp"
+#include "geometry/smoothing.hpp"
+
+namespace hexdual {
+
+namespace {
+
+// The movable vertices at the corners of `hexes`, each once (ascending), with a corner.
+std::vector<FreeVertex> interiorCorners(const Complex& cx, const std::vector<HexId>& hexes) {
+  std::map<VertexId, std::pair<HexId, int>> seen;
+  for (HexId h : hexes)
+    for (int c = 0; c < 8; ++c) seen.emplace(cx.vertex(h, c), std::pair{h, c});
+  std::vector<FreeVertex> out;
+  for (auto [v, hc] : seen)
+    if (!pinnedVertex(cx, hc.first, hc.second)) out.push_back({v, hc.first, hc.second});
+  return out;
+}
+
+// The hexes holding one of the vertices, ascending.
+std::vector<HexId> hexesAround(const Complex& cx, const std::vector<FreeVertex>& vertices) {
+  std::vector<HexId> out;
+  for (const FreeVertex& f : vertices)
+    for (auto [h, c] : cx.cornersOfVertex(f.hex, f.corner)) out.push_back(h);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<HexId> merged(std::vector<HexId> a, const std::vector<HexId>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  std::sort(a.begin(), a.end());
+  a.erase(std::unique(a.begin(), a.end()), a.end());
+  return a;
+}
+
+std::vector<HexId> invertedRegular(const Complex& cx, const std::vector<HexId>& hexes) {
+  std::vector<HexId> out;
+  for (HexId h : hexes)
+    if (cx.isHex(h) && scaledJacobian(cx, h) <= 0 && !degenerateByConstruction(cx, h)) out.push_back(h);
+  return out;
+}
+
+// The live hexes whose corners the step placed: created or re-cornered (re-glued neighbours keep
+// their shape).
+std::vector<HexId> reshapedByStep(const Complex& cx, const Complex::EditLog& log) {
+  std::vector<HexId> out;
+  for (const Complex::Edit& e : log.edits)
+    if ((e.kind == Complex::Edit::AddHex || e.kind == Complex::Edit::SetCorner) && cx.isHex(e.hex))
+      out.push_back(e.hex);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// The positions one ring of the smoothing reached, and what it left inverted.
+struct RingResult {
+  int ring = 0;
+  std::vector<std::pair<VertexId, Vec3>> moves;
+  std::vector<HexId> around;    // the hexes around its free vertices, and the step's
+  std::vector<HexId> inverted;  // regular hexes among `around` left inverted (and not inverted before the step)
+};
+
+// Every hex with a vertex of one of `hexes` (ascending): beyond them, the step changed neither
+// the positions nor whether a hex is degenerate by construction (its edges' cycles and its
+// vertices' stars are as they were).
+std::vector<HexId> nearHexes(const Complex& cx, const std::vector<HexId>& hexes) {
+  std::vector<FreeVertex> corners;
+  for (HexId h : hexes)
+    for (int c = 0; c < 8; ++c) corners.push_back({cx.vertex(h, c), h, c});
+  return merged(hexesAround(cx, corners), hexes);
+}
+
+// Smooths the interior vertices of `hexes` (undone by cx.undo(edits)); `alive`: the live hexes
+// the step touched; `near`: nearHexes(alive). Hexes not near that are inverted before the
+// smoothing were inverted and regular before the step (the smoothing keeps their corners from
+// getting lower): not counted.
+RingResult smoothRing(Complex& cx, const std::vector<HexId>& hexes, const std::vector<HexId>& alive,
+                      const std::vector<HexId>& near, Complex::EditLog& edits, StepQuality& q) {
+  RingResult res;
+  const std::vector<FreeVertex> free = interiorCorners(cx, hexes);
+  res.around = merged(hexesAround(cx, free), alive);
+  std::vector<HexId> already;
+  for (HexId h : invertedRegular(cx, res.around))
+    if (!std::binary_search(near.begin(), near.end(), h)) already.push_back(h);
+  cx.beginTransaction();
+  const SmoothingStats st = smoothVertices(cx, free, near, kStepEvaluationBudget - q.evaluations);
+  edits = cx.commitTransaction();
+  q.evaluations += st.evaluations;
+  for (VertexId v : st.moved) res.moves.push_back({v, cx.position(v)});
+  for (HexId h : invertedRegular(cx, res.around))
+    if (!std::binary_search(already.begin(), already.end(), h)) res.inverted.push_back(h);
+  return res;
+}
+
+// The interior vertices of the hexes the step placed, then (while a regular hex around them or
+// touched by the step stays inverted and not every such hex is pinned) those of the hexes around
+// them, ring by ring. Each ring starts again from the operation's own placement (a wider region
+// is a new, larger problem); the ring leaving the fewest regular hexes inverted wins, the
+// narrowest on ties. Its moves join `log`; returns the hexes around its free vertices.
+std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vector<HexId>& alive, StepQuality& q) {
+  std::vector<HexId> hexes = reshapedByStep(cx, log);
+  const std::vector<HexId> near = nearHexes(cx, alive);
+  RingResult best;
+  Complex::EditLog edits;
+  for (int ring = 0;; ++ring) {
+    if (ring > 0) cx.undo(edits);
+    RingResult res = smoothRing(cx, hexes, alive, near, edits, q);
+    res.ring = ring;
+    if (ring == 0 || res.inverted.size() < best.inverted.size()) best = res;
+    if (res.inverted.empty() || ring == kWideningRings || q.evaluations >= kStepEvaluationBudget) break;
+    if (std::all_of(res.inverted.begin(), res.inverted.end(), [&](HexId h) { return pinnedInversion(cx, h); })) break;
+    hexes = res.around;
+  }
+  cx.undo(edits);
+  cx.beginTransaction();
+  for (auto [v, p] : best.moves) cx.setPosition(v, p);
+  const Complex::EditLog moves = cx.commitTransaction();
+  log.edits.insert(log.edits.end(), moves.edits.begin(), moves.edits.end());
+  q.moved.clear();
+  for (auto [v, p] : best.moves) q.moved.push_back(v);
+  q.rings = best.ring;
+  return best.around;
+}
+
+// The hexes of `region` with a corner the smoothing moved.
+std::vector<HexId> reshaped(const Complex& cx, const std::vector<HexId>& region, const std::vector<VertexId>& moved) {
+  std::vector<HexId> out;
+  for (HexId h : region)
+    for (VertexId v : cx.hexVertices(h))
+      if (std::binary_search(moved.begin(), moved.end(), v)) {
+        out.push_back(h);
+        break;
+      }
+  return out;
+}
+
+// Each touched hex's corners before the operation (replaying its SetCorner edits backwards); hexes
+// it added are left out.
+std::map<HexId, std::array<VertexId, 8>> cornersBefore(const Complex& cx, const Complex::EditLog& log,
+                                                       const std::vector<HexId>& touched) {
+  std::map<HexId, std::array<VertexId, 8>> out;
+  for (HexId h : touched) out[h] = cx.hexVertices(h);
+  for (auto it = log.edits.rbegin(); it != log.edits.rend(); ++it) {
+    if (it->kind == Complex::Edit::AddHex) out.erase(it->hex);
+    if (it->kind == Complex::Edit::SetCorner && out.count(it->hex))
+      out[it->hex][size_t(it->face)] = VertexId(it->value);
+  }
+  return out;
+}
+
+// Measures `measured` (the touched hexes and those the smoothing reshaped) before and after.
+void measure(const Complex& cx, const Complex::EditLog& log, const std::vector<HexId>& measured, StepQuality& q) {
+  std::map<VertexId, Vec3> original;  // positions before the smoothing: the first recorded of each vertex
+  for (const Complex::Edit& e : log.edits)
+    if (e.kind == Complex::Edit::SetPosition) original.emplace(e.hex, e.pos);
+  auto pos = [&](VertexId v) {
+    auto it = original.find(v);
+    return it != original.end() ? it->second : cx.position(v);
+  };
+  for (const auto& [h, corners] : cornersBefore(cx, log, measured)) {
+    std::array<Vec3, 8> p;
+    for (size_t c = 0; c < 8; ++c) p[c] = pos(corners[c]);
+    q.before = std::min(q.before, scaledJacobian(p));
+  }
+  for (HexId h : measured) {
+    if (!cx.isHex(h)) continue;
+    const double sj = scaledJacobian(cx, h);
+    const bool degenerate = degenerateByConstruction(cx, h);
+    q.after = std::min(q.after, sj);
+    if (degenerate)
+      q.degenerate.push_back(h);
+    else
+      q.afterRegular = std::min(q.afterRegular, sj);
+    if (!degenerate && sj <= 0) q.inverted.push_back(h);
+    if (!degenerate && sj <= 0 && pinnedInversion(cx, h)) q.pinned.push_back(h);
+  }
+  q.measured = true;
+}
+
+}  // namespace
+
+StepQuality placeStepGeometry(Complex& cx, Complex::EditLog& log, StepGeometry mode) {
+  StepQuality q;
+  if (mode == StepGeometry::Keep) return q;
+  const std::vector<HexId> touched = touchedHexes(cx, log);
+  std::vector<HexId> alive;
+  for (HexId h : touched)
+    if (cx.isHex(h)) alive.push_back(h);
+  std::vector<HexId> measured = touched;
+  if (mode == StepGeometry::Smooth) {
+    measured = merged(reshaped(cx, smoothStep(cx, log, alive, q), q.moved), touched);
+    q.smoothed = true;
+  }
+  measure(cx, log, measured, q);
+  return q;
+}
+
+}  // namespace hexdual
