@@ -20,6 +20,7 @@ if (what === 'ops') {
   await init();
   const n = Number(nArg), reps = Number(repsArg || 11);
   const m = Mesh.grid(n, n, n);
+  m.smoothing = false;  // topology and dual only, as the native bench (the smoothing: bench_geometry)
   const id = (i, j, k) => i + n * (j + n * k);
   const c = Math.floor(n / 2), centre = id(c, c, c);
   const edge = `h${centre}e11`, f = `h${centre}f1`, g = `h${id(c, c + 1, c)}f1`;
@@ -59,6 +60,7 @@ if (what === 'throughput') {
   await init();
   const n = Number(nArg), steps = Number(repsArg || 20000);
   const m = Mesh.grid(n, n, n);
+  m.smoothing = false;  // topology and dual only, as the native bench (the smoothing: bench_geometry)
   let seed = 7;
   const rnd = (k) => { seed = (Math.imul(seed, 1103515245) + 12345) >>> 0; return (seed >>> 8) % k; };
   let applied = 0, attempted = 0, capacity = n ** 3;  // hex ids in use so far (ids are never reused here)

@@ -20,6 +20,10 @@ struct Case {
 };
 }  // namespace
 
+// Of the cases below, those the operation table's precheck rejects (pillow, hex push, chord push and
+// face collapse have one).
+constexpr int kPrechecked = 13;
+
 TEST_CASE("every rejection rule names the rule and leaves the complex exactly as it was") {
   const Case cases[] = {
       {"", "pillow h13f9", "pillow: local face 9 is not 0..5"},
@@ -53,6 +57,7 @@ TEST_CASE("every rejection rule names the rule and leaves the complex exactly as
       {"", "facesplit h13f1 h13f3", "facesplit: quads h13f1 and h13f3 are not on the same 4 vertices"},
       {"v1;pillow h13f5", "facesplit h13f5 h28f5", "facesplit: quads h13f5 and h28f5 are not a collapsed face pair"},
   };
+  int prechecked = 0;
   for (const Case& c : cases) {
     std::string step = c.step;
     CAPTURE(step);
@@ -66,7 +71,15 @@ TEST_CASE("every rejection rule names the rule and leaves the complex exactly as
     CHECK_FALSE(tryApplyStep(cx, c.step, &why).has_value());
     CHECK(why == c.message);
     CHECK(stateDump(cx) == before);
+    // The precheck (the package's apply rejects by it without an exception) gives the same message
+    // or none (the operation's later checks then reject).
+    std::string pre;
+    const std::string preThrown = errorOf([&] { pre = precheckStep(cx, parseOpStep(c.step)); });
+    CHECK((preThrown == c.message || pre.empty() || pre == c.message));
+    prechecked += !pre.empty();
   }
+  MESSAGE(prechecked << " of " << std::size(cases) << " rejected by the precheck");
+  CHECK(prechecked == kPrechecked);
 }
 
 TEST_CASE("tryApplyStep applies and rejects exactly the steps applyStep does, with the same messages and ids") {

@@ -32,9 +32,23 @@ std::string WasmMesh::applyStep(const std::string& step) {
       std::string());
 }
 
-std::string WasmMesh::applyReport(const std::string& step) {
-  return guarded(
-      "PRECONDITION", [&] { return apply(parseOpStep(step)); }, std::string());
+// A step its operation's first checks reject (most rejected steps: a boundary quad, an edge that
+// is not interior, ...) is reported without a C++ exception: the same message and code as a throw.
+std::string WasmMesh::applyReport(const std::string& text) {
+  std::string refused;
+  std::string out = guarded(
+      "PRECONDITION",
+      [&] {
+        const OpStep step = parseOpStep(text);
+        refused = precheckStep(cx_, step);
+        return refused.empty() ? apply(step) : std::string();
+      },
+      std::string());
+  if (!refused.empty()) {
+    g_lastError = refused;
+    g_lastErrorCode = classify(refused, "PRECONDITION");
+  }
+  return out;
 }
 
 std::string WasmMesh::applyLog(const std::string& logText, int stopAt) {

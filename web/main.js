@@ -20,7 +20,7 @@ timings.init = performance.now();
 
 const store = createState({
   mesh: null, spec: null, meshKey: '', steps: [], at: 0, report: null, selection: null, diagrams: [],
-  shrink: 0.15, overlay: false, ghosts: true, focusChanges: true, colorBy: 'plain', quality: null, slice: null, camera: null,
+  shrink: 0.15, overlay: false, singular: false, ghosts: true, focusChanges: true, colorBy: 'plain', quality: null, slice: null, camera: null,
   error: '', notice: '', view: 'explore', flip: null, focus: null, busy: false,
 });
 const engine = createEngine(store);
@@ -212,7 +212,7 @@ function loadFromUrlNow() {
     else errors.push(`ignored diag=${d}: there are ${ids.sheets.size} sheets (${range(ids.sheets)})`);
   }
   store.set({
-    selection: sel, diagrams: diags, camera: p.camera, overlay: p.overlay, colorBy: p.colorBy, ghosts: p.ghosts,
+    selection: sel, diagrams: diags, camera: p.camera, overlay: p.overlay, singular: p.singular, colorBy: p.colorBy, ghosts: p.ghosts,
     shrink: p.shrink ?? 0.15, slice: p.slice, view: p.view, flip: p.flip, error: errors.join('\n'), notice: '',
     quality: p.colorBy === 'quality' ? s.mesh.quality() : null,
   });

@@ -1,6 +1,8 @@
 // The operation palette: the steps the engine says apply at the selection (mesh.candidates with
 // `near`), each with a one-line explanation and its Δ(V,E,F,H), then the cubical flips whose before
-// side is there (mesh.flipPlaces); one click applies. Typed steps work too; errors show next to it.
+// side is there (mesh.flipPlaces); then the sheet operations on the sheet through a picked edge or
+// the chord through a picked quad (mesh.select), each previewed (mesh.preview) under the pointer
+// before a click applies it. Typed steps work too; errors show next to it.
 import { formatSelection } from './selection.js';
 
 export const OPS = {
@@ -13,6 +15,13 @@ export const OPS = {
   ringcollapse: ['collapses the ring chord along the edge (TK03 §4.4)', '−n,−3n,−3n,−n'],
   facecollapse: ['collapses two quads of an edge cycle into one (TK03 §4.4)', '−2,−2,0,0'],
   facesplit: ['splits two quads on the same 4 vertices apart', '+2,+2,0,0'],
+};
+// The sheet family (docs/operations.md#sheet-operations-a-separate-family): they change the
+// boundary quad mesh; Δ comes from the preview.
+export const SHEET_OPS = {
+  'sheet-extract': 'removes the whole sheet: its hexes vanish and the quads on its two sides are glued (Borden et al. 2002)',
+  'sheet-dice': 'splits the sheet into parallel sheets (refinement)',
+  'column-collapse': 'collapses the chord\'s column of hexes along a quad diagonal (Merkley et al. 2007)',
 };
 function nearOf(sel) {
   if (sel.kind === 'hex') return { hex: sel.hex };
@@ -28,12 +37,63 @@ export function createPalette(root, actions) {
   const apply = () => actions.apply(input.value.trim());
   $('#op-apply').addEventListener('click', apply);
   input.addEventListener('keydown', (e) => e.key === 'Enter' && apply());
+  const preview = $('#op-preview');
+  list.addEventListener('pointerover', (e) => {
+    const li = e.target.closest('li.sheet-op');
+    if (li && li.dataset.step !== preview.dataset.step) showPreview(li);
+  });
   list.addEventListener('click', (e) => {
     const li = e.target.closest('li[data-step], li[data-flip]');
     if (li?.dataset.step) actions.apply(li.dataset.step);
     else if (li) actions.applyFlip(li.dataset.flip, li.dataset.hexes.split(',').map(Number));
   });
   let shownKey = null;
+
+  /** What a sheet operation would change, from mesh.preview: shown before it is applied. */
+  function showPreview(li) {
+    const s = window.hexdual.store.get();
+    preview.dataset.step = li.dataset.step;
+    let p;
+    try {
+      p = s.mesh.preview(li.dataset.step);
+    } catch (e) {
+      preview.textContent = `${li.dataset.step}: ${e.message}`;
+      return;
+    }
+    li.classList.toggle('refused', !p.applies);
+    if (!p.applies) {
+      preview.textContent = `${p.step} is refused${p.rule ? ` (rule: ${p.rule})` : ''}: ${p.error}`;
+      return;
+    }
+    const d = p.report.delta;
+    const q = p.report.quality;
+    preview.textContent = `${p.step} would remove ${p.hexesRemoved} and create ${p.hexesCreated} hexes, Δ(${d.V},${d.E},${d.F},${d.H})` +
+      (q ? `; min scaled Jacobian ${q.before.toFixed(2)} → ${q.after.toFixed(2)}` : '') + '. Click to apply.';
+  }
+
+  /** The sheet through a picked edge or the chord through a picked quad, and its sheet-family steps. */
+  function sheetSteps(s) {
+    const sel = s.selection;
+    if (!sel || (sel.kind !== 'edge' && sel.kind !== 'quad')) return { steps: [], what: '' };
+    try {
+      const pick = sel.kind === 'edge' ? { hex: sel.hex, edge: sel.edge } : { hex: sel.hex, face: sel.face };
+      const x = s.mesh.select(pick);
+      return { steps: x.steps, what: `${x.kind} ${x.id} (${x.hexes.length} hexes)` };
+    } catch {
+      return { steps: [], what: '' };
+    }
+  }
+
+  function sheetItem(step, what) {
+    const li = document.createElement('li');
+    li.className = 'sheet-op';
+    li.dataset.step = step;
+    li.innerHTML = '<span class="step"></span><span class="delta">sheet family</span><span class="why"></span>';
+    li.querySelector('.step').textContent = step;
+    li.querySelector('.why').textContent = `${SHEET_OPS[step.split(' ')[0]] || ''} — on ${what}`;
+    li.title = `apply ${step}`;
+    return li;
+  }
 
   /** Candidate steps at the selection from the engine: [{ step }], or a note saying why none. */
   function candidatesFor(s) {
@@ -58,7 +118,7 @@ export function createPalette(root, actions) {
     li.innerHTML = '<span class="step"></span><span class="delta"></span><span class="why"></span>';
     li.querySelector('.step').textContent = `flip ${place.name} at ${at}`;
     const f = actions.flips.find((x) => x.name === place.name);
-    li.querySelector('.delta').textContent = f ? `${f.steps.length} steps` : '';
+    li.querySelector('.delta').textContent = f ? `${f.steps.length} step${f.steps.length === 1 ? '' : 's'}` : '';
     li.querySelector('.why').textContent = `cubical flip: replaces these ${place.hexes.length} hex${place.hexes.length > 1 ? 'es' : ''} by the other side of the 4-cube, as its verified atomic steps`;
     li.title = `apply flip ${place.name} at ${at}`;
     return li;
@@ -67,13 +127,16 @@ export function createPalette(root, actions) {
   return {
     update(s) {
       if (!s.mesh) return;
-      $('#op-error').textContent = s.error && /^([a-z]+ h\d|flip )/.test(s.error) ? s.error : '';
+      $('#op-error').textContent = s.error && /^([a-z-]+ h\d|flip )/.test(s.error) ? s.error : '';
       const key = `${s.meshKey}|${formatSelection(s.selection)}`;
       if (key === shownKey) return;
       shownKey = key;
       if (s.selection && 'hex' in s.selection && !input.value) input.placeholder = `pillow ${formatSelection(s.selection)}`;
       const { items, flips, note } = candidatesFor(s);
-      if (!items.length && !flips.length) {
+      const sheet = sheetSteps(s);
+      preview.textContent = '';
+      delete preview.dataset.step;
+      if (!items.length && !flips.length && !sheet.steps.length) {
         list.replaceChildren(Object.assign(document.createElement('li'), { className: 'empty', textContent: note || `nothing applies at ${formatSelection(s.selection)}` }));
         return;
       }
@@ -91,6 +154,7 @@ export function createPalette(root, actions) {
           return li;
         }),
         ...flips.map(flipItem),
+        ...sheet.steps.map((step) => sheetItem(step, sheet.what)),
       );
     },
   };

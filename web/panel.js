@@ -4,6 +4,7 @@
 import { sheetColor, chordColor } from './colors.js';
 import { formatSelection, dualThrough } from './selection.js';
 import { qualityRgb } from './paint.js';
+import { singularColor } from './view3d/overlays.js';
 
 const ROW = 22;
 
@@ -112,6 +113,21 @@ function histogram(root, quality, mesh) {
     <div class="mono" id="quality-summary">min ${quality.min.toFixed(3)} · max ${quality.max.toFixed(3)} · ${n} hexes · <b style="color:${inverted ? '#d600aa' : '#2b7'}">${inverted} inverted</b>${inverted ? `: ${[...quality.inverted.slice(0, 8)].map((h) => 'h' + h).join(' ')}${quality.inverted.length > 8 ? ' …' : ''}` : ''}</div>`;
 }
 
+// The singularity graph's counts, with a swatch per kind and valence as the 3D view colours them.
+function singularSummary(root, sing) {
+  if (!sing) return root.replaceChildren();
+  const c = sing.counts;
+  const chip = (boundary, valence, n) => {
+    const color = singularColor({ boundary, valence: Number(valence) });
+    return `<span class="chip"><span class="swatch" style="background:${color}"></span>${boundary ? 'boundary' : 'interior'} valence ${valence}: ${n}</span>`;
+  };
+  const chips = [
+    ...Object.entries(c.interiorByValence).map(([v, n]) => chip(false, v, n)),
+    ...Object.entries(c.boundaryByValence).map(([v, n]) => chip(true, v, n)),
+  ];
+  root.innerHTML = `<div>${c.interiorEdges} interior and ${c.boundaryEdges} boundary singular edges · ${c.curves} curves · ${c.vertices + c.boundaryVertices} singular vertices</div>${chips.join(' ')}`;
+}
+
 export function createPanel(root, actions, view) {
   const $ = (sel) => document.querySelector(sel);
   const build = () => actions.build($('#mesh-kind').value, $('#mesh-dims').value);
@@ -125,6 +141,7 @@ export function createPanel(root, actions, view) {
   $('#overlay').addEventListener('change', (e) => actions.set({ overlay: e.target.checked }));
   $('#ghosts').addEventListener('change', (e) => actions.set({ ghosts: e.target.checked }));
   $('#focus-changes').addEventListener('change', (e) => actions.set({ focusChanges: e.target.checked }));
+  $('#singular').addEventListener('change', (e) => actions.set({ singular: e.target.checked }));
   $('#quality').addEventListener('change', (e) => {
     const on = e.target.checked;
     const mesh = window.hexdual.store.get().mesh;
@@ -149,7 +166,7 @@ export function createPanel(root, actions, view) {
   const sheets = createList($('#sheets'), $('#sheet-filter'), 'sheet', actions);
   const chords = createList($('#chords'), $('#chord-filter'), 'chord', actions);
   const tip = $('#tip');
-  let shownKey = null, qualityKey = null;
+  let shownKey = null, qualityKey = null, singularKey = null;
 
   function describeSelection(s, sel) {
     if (!sel) return `${s.mesh.counts.hexes} hexes — click a quad, an edge, or a sheet`;
@@ -164,6 +181,16 @@ export function createPanel(root, actions, view) {
     }
     const d = dualThrough(sel, actions.engine.hexDual());
     const what = sel.kind === 'quad' ? 'quad' : sel.kind === 'edge' ? 'edge' : 'hex';
+    if (sel.kind === 'edge') {
+      // The edge's valence, and the sheet and chords through it (mesh.edgeDual).
+      try {
+        const e = s.mesh.edgeDual(sel.hex, sel.edge);
+        const regular = e.valence === (e.boundary ? 2 : 4);
+        return `edge ${id} · valence ${e.valence}${e.boundary ? ' (boundary)' : ''}${regular ? '' : ' · singular'} · sheet ${e.sheet} crosses it · chords ${e.chords.join(', ')} (sheets ${e.sheets.join(', ')})`;
+      } catch {
+        // fall through to the hex-dual arrays
+      }
+    }
     return `${what} ${id} · sheets ${d.sheets.join(', ') || '–'} · chords ${d.chords.join(', ') || '–'}`;
   }
 
@@ -191,6 +218,12 @@ export function createPanel(root, actions, view) {
       $('#ghosts').checked = s.ghosts;
       $('#focus-changes').checked = s.focusChanges;
       $('#quality').checked = s.colorBy === 'quality';
+      $('#singular').checked = s.singular;
+      const sk = s.singular ? s.meshKey : null;
+      if (singularKey !== sk) {
+        singularKey = sk;
+        singularSummary($('#singular-summary'), s.singular ? s.mesh.singularities() : null);
+      }
       $('#slice-axis').value = s.slice ? String(s.slice.axis) : '';
       if (s.slice) $('#slice-at').value = String(s.slice.at);
       const label = describeSelection(s, s.selection);

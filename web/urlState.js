@@ -5,12 +5,12 @@
 import { parseSelection, formatSelection } from './selection.js';
 
 const DIMS = /^(grid|ring):(\d{1,3})x(\d{1,3})x(\d{1,3})$/;
-const KNOWN = new Set(['mesh', 'steps', 'ops', 'at', 'sel', 'sheet', 'chord', 'cam', 'diag', 'local', 'overlay', 'color', 'shrink', 'slice', 'ghosts', 'view', 'flip']);
+const KNOWN = new Set(['mesh', 'steps', 'ops', 'at', 'sel', 'sheet', 'chord', 'cam', 'diag', 'local', 'overlay', 'sing', 'color', 'shrink', 'slice', 'ghosts', 'view', 'flip']);
 
 export function parseHash(hash) {
   const out = {
     mesh: { kind: 'grid', dims: [3, 3, 3] }, steps: [], at: null, selection: null, camera: null, diagrams: [],
-    overlay: false, colorBy: 'plain', shrink: null, slice: null, ghosts: true, view: 'explore', flip: null, errors: [],
+    overlay: false, singular: false, colorBy: 'plain', shrink: null, slice: null, ghosts: true, view: 'explore', flip: null, errors: [],
   };
   const params = new URLSearchParams(hash.replace(/^#/, ''));
   const ignore = (k, v, why) => out.errors.push(`ignored ${k}=${v}: ${why}`);
@@ -58,6 +58,9 @@ export function parseHash(hash) {
         else ignore(k, v, 'expected sheet ids separated by commas');
         break;
       }
+      case 'sing':
+        out.singular = v === '1';
+        break;
       case 'overlay':
         out.overlay = v === '1';
         if (v !== '1' && v !== '0') ignore(k, v, 'expected 0 or 1');
@@ -112,6 +115,7 @@ export function formatHash(s) {
   if (s.selection) params.set('sel', formatSelection(s.selection));
   if (s.diagrams && s.diagrams.length) params.set('diag', s.diagrams.map((d) => d.sheet).join(','));
   if (s.overlay) params.set('overlay', '1');
+  if (s.singular) params.set('sing', '1');
   if (s.colorBy === 'quality') params.set('color', 'quality');
   if (s.shrink !== 0.15) params.set('shrink', String(s.shrink));
   if (s.slice) params.set('slice', `${'xyz'[s.slice.axis]}:${s.slice.at}`);

@@ -9,7 +9,7 @@ import { hexColors, paintKeyOf } from './paint.js';
 import { createScene } from './view3d/scene.js';
 import { createHexLayers, hiddenBySlice, SHELL_MIN_HEXES, EDGE_LINES_MAX_HEXES } from './view3d/meshBuffers.js';
 import { pickRay, classifyHit } from './view3d/picking.js';
-import { clearGroup, drawMarks, drawDualOverlay, ACCENT, HOVER } from './view3d/overlays.js';
+import { clearGroup, drawMarks, drawDualOverlay, drawSingularEdges, ACCENT, HOVER } from './view3d/overlays.js';
 import { showGhosts, animateStep } from './view3d/animation.js';
 
 export { SHELL_MIN_HEXES };
@@ -30,8 +30,9 @@ export function createView3d(container, options = {}) {
   const marks = new THREE.Group(); // selected quad / edge and hover
   const overlay = new THREE.Group();
   const ghosts = new THREE.Group();
-  sc.scene.add(...layers.objects, overlay, ghosts, marks);
-  let geomKey = null, fitted = null, paintKey = null, overlayKey = null;
+  const singular = new THREE.Group(); // the singularity graph's edges
+  sc.scene.add(...layers.objects, overlay, ghosts, singular, marks);
+  let geomKey = null, fitted = null, paintKey = null, overlayKey = null, singularKey = null;
 
   function rebuild(mesh, shrink, drawn) {
     const shell = mesh.counts.hexes >= SHELL_MIN_HEXES;
@@ -131,6 +132,7 @@ export function createView3d(container, options = {}) {
     pickMode: 'auto',
     slice: null,
     builds: 0,
+    singularEdges: 0, // singular edges drawn
     shell: false,
     lastBuildMs: 0,
     canvas: el,
@@ -171,6 +173,20 @@ export function createView3d(container, options = {}) {
         if (ok) buildOverlay(state.mesh);
         else clearGroup(overlay);
       }
+      const sk = state.singular ? state.meshKey : null;
+      if (singularKey !== sk) {
+        singularKey = sk;
+        dirty = true;
+        if (sk) {
+          const sing = state.mesh.singularities();
+          const ends = sing.edges.flatMap((e) => e.vertices);
+          drawSingularEdges(singular, sing, state.mesh.vertexPositions(ends), view.slice && !view.shell ? [clipPlane] : []);
+          view.singularEdges = sing.edges.length;
+        } else {
+          clearGroup(singular);
+          view.singularEdges = 0;
+        }
+      }
       const sliceKey = state.slice ? `${view.shell}:${state.slice.axis}:${state.slice.at}` : '';
       if (view.sliceKey !== sliceKey) {
         view.sliceKey = sliceKey;
@@ -199,7 +215,7 @@ export function createView3d(container, options = {}) {
         clipPlane.set(n, at);
       }
       layers.solid.material.side = slice && !view.shell ? THREE.DoubleSide : THREE.FrontSide;
-      for (const obj of [...layers.objects, ...overlay.children]) {
+      for (const obj of [...layers.objects, ...overlay.children, ...singular.children]) {
         obj.material.clippingPlanes = view.shell ? [] : planes;
         obj.material.needsUpdate = true;
       }

@@ -194,6 +194,12 @@ OpResult applyStep(Complex& cx, std::string_view stepText, const StepOptions& op
   return applyStep(cx, parseOpStep(stepText), options);
 }
 
+std::string precheckStep(const Complex& cx, const OpStep& st) {
+  checkArgs(st);
+  const OpInfo& info = opInfo(st.op);
+  return info.precheck ? info.precheck(cx, st) : std::string();
+}
+
 std::optional<OpResult> tryApplyStep(Complex& cx, const OpStep& st, std::string* why, const StepOptions& options) {
   try {
     checkArgs(st);

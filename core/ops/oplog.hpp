@@ -48,6 +48,9 @@ OpResult applyStep(Complex& cx, std::string_view stepText, const StepOptions& op
 // throw (the complex unchanged). Rejections by an operation's first checks (the table's
 // precheck) cost no exception: for callers that try many steps, most of them rejected.
 std::optional<OpResult> tryApplyStep(Complex& cx, const OpStep& step, std::string* why = nullptr, const StepOptions& options = {});
+// The message applying `step` would throw for its operation's first checks (the operation table's
+// precheck), or empty: a rejection found without an exception. Empty says nothing about later checks.
+std::string precheckStep(const Complex& cx, const OpStep& step);
 std::optional<OpResult> tryApplyStep(Complex& cx, std::string_view stepText, std::string* why = nullptr,
                                      const StepOptions& options = {});
 

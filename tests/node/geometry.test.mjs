@@ -137,3 +137,20 @@ test('a flip applied directly is smoothed and measured like a step; smoothing of
   assert.deepEqual(off.quality.inverted, [64, 66, 67, 68, 69]);  // as `hexdual flip 2-6 --at 21,22 --no-smooth` prints
   m.delete();
 });
+
+test('vertexPositions: the positions of the ids asked for, in order; a dead id or a non-array is a PRECONDITION', () => {
+  const m = Mesh.grid(1, 1, 1);
+  assert.deepEqual([...m.vertexPositions([0, 7])], [0, 0, 0, 1, 1, 1]);
+  assert.deepEqual([...m.vertexPositions([])], []);
+  assert.throws(() => m.vertexPositions([99]), { code: 'PRECONDITION', message: 'vertexPositions: vertex 99 does not exist' });
+  assert.throws(() => m.vertexPositions('0'), { code: 'PRECONDITION', message: /array of integers/ });
+  // The ends of every singular edge: a 2x2x2 grid's boundary edges of valence 1 (its 12 cube edges, 2 each).
+  const g = Mesh.grid(2, 2, 2);
+  const sing = g.singularities();
+  assert.equal(sing.edges.length, 24);
+  const xyz = g.vertexPositions(sing.edges.flatMap((e) => e.vertices));
+  assert.equal(xyz.length, 6 * 24);
+  for (let i = 0; i < 24; i++) assert.equal(Math.hypot(xyz[6 * i] - xyz[6 * i + 3], xyz[6 * i + 1] - xyz[6 * i + 4], xyz[6 * i + 2] - xyz[6 * i + 5]), 1);
+  m.delete();
+  g.delete();
+});

@@ -31,6 +31,7 @@ async function example(): Promise<number> {
   const p: Preview = m.preview('sheet-extract h13e0');
   const previewed: number = p.applies ? p.report.delta.H + p.hexesRemoved : (p.rule ?? p.error).length;
   const sel: Selection = m.select({ hex: 13, edge: 0 });
+  const ends: Float64Array = m.vertexPositions(m.singularities().edges.flatMap((e) => e.vertices));
   const chordSel: Selection = m.select({ hex: 13, face: 1 });
   const sheetOp: StepReport['op'] = 'sheet-dice';
   const sheetCands: string[] = m.candidates('column-collapse');
@@ -53,6 +54,6 @@ async function example(): Promise<number> {
     (inverse ?? '').length + reports.length + undone.length + redone.delta.H + log.length + cands.length + flipped.length +
     svg.length + centres.length + (same ? 1 : 0) + hash.length + (code ? 1 : 0) + flips().length +
     splits.length + records.filter((r) => r.found && r.steps !== null).length + previewed +
-    sel.hexes.length + chordSel.steps.length + sheetOp.length + sheetCands.length;
+    sel.hexes.length + ends.length + chordSel.steps.length + sheetOp.length + sheetCands.length;
 }
 void example;

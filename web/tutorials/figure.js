@@ -12,8 +12,18 @@ import { createDiagram } from './diagram.js';
 const COUNT_KEYS = ['vertices', 'edges', 'quads', 'hexes'];
 const HOT = '#ffd400', NEW = '#ff9d5c', PICKED = '#e0245e';
 
-/** Mesh spec -> Mesh (the explorer's `mesh=` forms: grid:AxBxC, ring:NxRxZ, fourcube). */
+/**
+ * Mesh spec -> Mesh (the explorer's `mesh=` forms: grid:AxBxC, ring:NxRxZ, fourcube). The tutorials
+ * keep the operations' own vertex placement (no smoothing): each figure then has the shape the
+ * pages describe (a pushed hex halfway to the quad's centre, a blind chord 0.3 along two edges),
+ * the same in every play of a puzzle.
+ */
 export function buildMesh(spec) {
+  const mesh = buildUnsmoothed(spec);
+  mesh.smoothing = false;
+  return mesh;
+}
+function buildUnsmoothed(spec) {
   if (spec.kind === 'fourcube') return Mesh.fourCube();
   if (spec.kind === 'file') return Mesh.load(spec.text, spec.name);
   const [a, b, c] = spec.dims;

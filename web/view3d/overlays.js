@@ -112,3 +112,44 @@ export function drawDualOverlay(group, o, planes = []) {
   group.add(sheets, chords, dots);
   for (const obj of group.children) obj.material.clippingPlanes = planes;
 }
+
+// Colours of singular edges by kind and valence (the panel's legend uses the same).
+export const SINGULAR_COLORS = {
+  interior: { 1: '#8c564b', 2: '#8c564b', 3: '#1f6feb', 5: '#d62728', other: '#9467bd' },
+  boundary: { 1: '#ff7f0e', 3: '#17becf', other: '#e377c2' },
+};
+export function singularColor(edge) {
+  const t = edge.boundary ? SINGULAR_COLORS.boundary : SINGULAR_COLORS.interior;
+  return t[edge.valence] ?? t.other;
+}
+
+/**
+ * Fills `group` with the singular edges of `sing` (mesh.singularities()) as tubes, one instance per
+ * edge, coloured by kind and valence; `xyz` holds the two ends of each edge (mesh.vertexPositions).
+ * Drawn over the hexes (no depth test), as HexaLab shows the singularity graph.
+ */
+export function drawSingularEdges(group, sing, xyz, planes = []) {
+  clearGroup(group);
+  const n = sing.edges.length;
+  if (!n) return;
+  let total = 0;
+  for (let i = 0; i < n; i++) total += Math.hypot(xyz[6 * i + 3] - xyz[6 * i], xyz[6 * i + 4] - xyz[6 * i + 1], xyz[6 * i + 5] - xyz[6 * i + 2]);
+  const radius = 0.05 * (total / n);
+  const tube = new THREE.CylinderGeometry(radius, radius, 1, 6);
+  const mesh = new THREE.InstancedMesh(tube, new THREE.MeshBasicMaterial({ depthTest: false, transparent: true, opacity: 0.95 }), n);
+  const a = new THREE.Vector3(), b = new THREE.Vector3(), up = new THREE.Vector3(0, 1, 0);
+  const m = new THREE.Matrix4(), q = new THREE.Quaternion(), s = new THREE.Vector3();
+  for (let i = 0; i < n; i++) {
+    a.fromArray(xyz, 6 * i);
+    b.fromArray(xyz, 6 * i + 3);
+    const len = a.distanceTo(b);
+    q.setFromUnitVectors(up, b.clone().sub(a).normalize());
+    s.set(1, len, 1);
+    m.compose(a.clone().add(b).multiplyScalar(0.5), q, s);
+    mesh.setMatrixAt(i, m);
+    mesh.setColorAt(i, rgb(singularColor(sing.edges[i])));
+  }
+  mesh.renderOrder = 7;
+  mesh.material.clippingPlanes = planes;
+  group.add(mesh);
+}

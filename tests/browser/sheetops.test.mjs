@@ -1,0 +1,152 @@
+// The explorer on a development mesh, as a researcher uses it (issue 22): drop a published mesh,
+// show its singular edges, pick an edge and read its valence and the dual through it, preview and
+// apply a sheet extraction from the palette, undo it, and share the URL (a file mesh: the URL
+// carries the steps, the dropped file replays them). Counts are checked against the native CLI.
+// Screenshots land in build/screenshots/ (desktop and phone).
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { existsSync, readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { root, screenshotDir } from './harness.mjs';
+import { openBrowser, explorerPage, cli } from './explorer_page.mjs';
+
+/** `hexdual preview` prints its JSON and exits 1 when the step is refused. */
+function previewCli(path, step) {
+  try {
+    return JSON.parse(cli('preview', path, '--ops', `v1;${step}`, '--json'));
+  } catch (e) {
+    if (e.status === 1 && e.stdout?.length) return JSON.parse(e.stdout.toString());
+    throw e;
+  }
+}
+
+const meshDir = process.env.HEXDUAL_MESHES || join(root, '..', 'shared', 'meshes');
+const NAME = 'G_cylinder_2.vtk.gz';
+const file = join(meshDir, NAME);
+const skip = existsSync(file) ? false : `no development-set meshes at ${meshDir}`;
+
+let b, page, x, errors;
+before(async () => {
+  if (skip) return;
+  b = await openBrowser();
+  ({ page, errors } = b);
+  page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
+  x = explorerPage(page, b.server);
+});
+after(() => b?.close());
+
+/** Drops binary file bytes on the page, as dragging the file from the desktop does. */
+const dropBytes = (bytes, name) => page.evaluate(([b64, name]) => {
+  const bin = atob(b64);
+  const data = new Uint8Array(bin.length);
+  for (let i = 0; i < bin.length; i++) data[i] = bin.charCodeAt(i);
+  const dt = new DataTransfer();
+  dt.items.add(new File([data], name));
+  for (const type of ['dragenter', 'dragover', 'drop']) document.body.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true }));
+}, [bytes.toString('base64'), name]);
+
+const singularShown = () => page.evaluate(() => window.hexdual.view.singularEdges);
+
+test('a development mesh: singular edges, a picked edge\'s valence, a previewed sheet extraction, undo, and a shared URL', { skip }, async () => {
+  const bytes = readFileSync(file);
+  const info = JSON.parse(cli('info', file, '--json'));
+  assert.equal(info.hexes, 980);
+  await x.open('#mesh=grid:3x3x3');
+  await dropBytes(bytes, NAME);
+  await page.waitForFunction(() => window.hexdual.store.get().mesh.counts.hexes === 980, null, { timeout: 30000 });
+  await x.settle();
+
+  // The singular edges: the overlay draws every one, the panel counts them as the CLI does.
+  await page.locator('#singular').check();
+  await x.settle();
+  const c = info.singularities;
+  assert.deepEqual([c.interiorEdges, c.boundaryEdges], [98, 76]);
+  assert.equal(await singularShown(), 98 + 76);
+  const summary = await page.locator('#singular-summary').textContent();
+  assert.match(summary, /98 interior and 76 boundary singular edges/);
+  assert.match(summary, /interior valence 3: 63/);
+  assert.match(summary, /interior valence 5: 35/);
+  await page.screenshot({ path: join(screenshotDir, 'explorer-singular.png') });
+
+  // A picked singular edge: its valence and the sheet and chords through it.
+  const edge = await page.evaluate(() => window.hexdual.store.get().mesh.singularities().edges.find((e) => !e.boundary && e.valence === 5));
+  await page.evaluate((e) => window.hexdual.actions.select({ kind: 'edge', hex: e.hex, edge: e.edge }), edge);
+  const dual = JSON.parse(cli('select', file, `h${edge.hex}e${edge.edge}`, '--json'));
+  const label = await page.locator('#selection-info').textContent();
+  assert.match(label, /valence 5 · singular/);
+  assert.match(label, new RegExp(`sheet ${dual.id} crosses it`), `${label} names sheet ${dual.id}`);
+
+  // The palette offers the sheet through the edge; the pointer over it previews, a click applies.
+  const step = `sheet-extract h${edge.hex}e${edge.edge}`;
+  const item = page.locator(`#candidates li.sheet-op[data-step="${step}"]`);
+  assert.equal(await item.count(), 1);
+  const expected = previewCli(file, step);
+  await item.hover();
+  await page.waitForFunction(() => document.querySelector('#op-preview').textContent.length > 0);
+  const preview = await page.locator('#op-preview').textContent();
+  if (!expected.applies) {
+    assert.match(preview, /is refused/);
+    assert.fail(`${step} is refused on ${NAME}: ${expected.error}`);
+  }
+  assert.match(preview, new RegExp(`would remove ${expected.hexesRemoved} and create ${expected.hexesCreated} hexes`));
+  await page.locator('#palette').screenshot({ path: join(screenshotDir, 'explorer-sheet-preview.png') });
+  await item.click();
+  await x.settle();
+  const after = 980 - expected.hexesRemoved + expected.hexesCreated;
+  assert.equal((await x.shownCounts()).hexes, after);
+  assert.equal(expected.hexesRemoved, dual.hexes.length, 'the sheet\'s hexes go');
+  const singularAfter = await page.evaluate(() => window.hexdual.store.get().mesh.singularities().edges.length);
+  assert.equal(await singularShown(), singularAfter, 'the overlay follows the step');
+  await page.screenshot({ path: join(screenshotDir, 'explorer-sheet-extract.png') });
+
+  // Undo (the timeline's back key): the mesh and its singular edges as before.
+  await page.keyboard.press('ArrowLeft');
+  await x.settle();
+  assert.equal((await x.shownCounts()).hexes, 980);
+  assert.equal(await singularShown(), 174);
+
+  // The URL: the steps of the timeline (the undone one kept for redo), the overlay, the file's name.
+  const hash = x.hash();
+  assert.match(hash, new RegExp(`steps=v1;${step}`));
+  assert.match(hash, /sing=1/);
+  assert.match(hash, new RegExp(`mesh=file:${NAME.replace(/\./g, '\\.')}`));
+  // Shared: the page asks for the file; dropping it replays the steps, and redo gives the extraction.
+  await x.open(new URL(page.url()).hash);
+  assert.match(await page.locator('#error').textContent(), /local file that the URL cannot carry/);
+  await dropBytes(bytes, NAME);
+  await page.waitForFunction(() => window.hexdual.store.get().mesh.counts.hexes === 980, null, { timeout: 30000 });
+  await x.settle();
+  assert.deepEqual((await x.state()).steps, [step]);
+  await page.keyboard.press('ArrowRight');
+  await x.settle();
+  assert.equal((await x.shownCounts()).hexes, after);
+  assert.equal(await singularShown(), singularAfter);
+
+  // Phone width: the panel and the overlay fit, no horizontal scroll.
+  await page.setViewportSize({ width: 390, height: 844 });
+  await x.settle();
+  assert.equal(await page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth), true);
+  await page.screenshot({ path: join(screenshotDir, 'explorer-singular-phone.png'), fullPage: true });
+  await page.setViewportSize({ width: 1200, height: 760 });
+  assert.deepEqual(errors, []);
+});
+
+test('a refused sheet operation shows its rule in the preview and changes nothing', { skip }, async () => {
+  // A 1x1x1 grid: extracting its only x-sheet would leave no hex.
+  const one = '/tmp/hexdual_browser_grid1.hxd';
+  cli('grid', '1x1x1', '-o', one);
+  await x.open('#mesh=grid:1x1x1&sel=h0e0');
+  const step = 'sheet-extract h0e0';
+  const expected = previewCli(one, step);
+  const item = page.locator(`#candidates li.sheet-op[data-step="${step}"]`);
+  assert.equal(await item.count(), 1);
+  await item.hover();
+  await page.waitForFunction(() => document.querySelector('#op-preview').textContent.length > 0);
+  assert.equal(expected.applies, false);
+  assert.match(await page.locator('#op-preview').textContent(), new RegExp(`is refused \\(rule: ${expected.rule}\\)`));
+  await item.click();
+  await x.settle();
+  assert.equal((await x.shownCounts()).hexes, 1);
+  assert.match(await page.locator('#op-error').textContent(), /sheet-extract h0e0/);
+  assert.deepEqual(errors, []);
+});
