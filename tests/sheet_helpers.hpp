@@ -22,6 +22,13 @@
 
 namespace hexdual::test {
 
+// Whether a refusal is `prefix` followed by a non-manifold link in either wording: the release
+// build's local check (validateAround) says "its link is not connected", the debug build's full
+// validate() counts the link's components ("its link has 2 components").
+inline bool nonManifoldLink(const std::string& message, const std::string& prefix) {
+  return message == prefix + "its link is not connected)" || message == prefix + "its link has 2 components)";
+}
+
 // The smallest hex alive in both: the anchor of isomorphicAt after steps that renumber vertices.
 inline HexId commonHex(const Complex& a, const Complex& b) {
   for (HexId h : a.hexes())
