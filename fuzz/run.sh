@@ -19,7 +19,7 @@ mkdir -p "$OUT/obj"
 FLAGS=(-std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -Icore -isystem /usr/include/eigen3)
 
 # The core sources the readers and the op log need (objects rebuilt only when sources change).
-SOURCES=(core/io/*.cpp core/complex/*.cpp core/ops/*.cpp core/dual/*.cpp core/dual/tracker/*.cpp)
+SOURCES=(core/io/*.cpp core/complex/*.cpp core/ops/*.cpp core/dual/*.cpp core/dual/tracker/*.cpp core/geometry/*.cpp core/analysis/*.cpp)
 OBJS=()
 for src in "${SOURCES[@]}"; do
   obj="$OUT/obj/$(echo "$src" | tr / _).o"
