@@ -56,9 +56,12 @@ void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& tou
     if (changes) changes->push_back({t, before, after});
   };
   bool nearBefore = false;
-  std::vector<Slot> dirty;
-  std::vector<HexId> met;
-  std::vector<EdgeRef> inc;
+  // Scratch kept between calls (every update runs this): no allocation once warm.
+  thread_local std::vector<Slot> dirty;
+  thread_local std::vector<HexId> met;
+  thread_local std::vector<EdgeRef> inc;
+  dirty.clear();
+  met.clear();
   for (HexId h : touched) {
     nearBefore = nearBefore || (edgeMarks_[size_t(h)] & kNearBoundary);
     if (cx.isHex(h)) {
