@@ -41,6 +41,32 @@ std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
   return out;
 }
 
+// The edges whose cycles an edit can have changed: stepAroundEdge crosses only the faces through
+// an edge, so a cycle changes only where one of those faces is glued or unglued (both sides are
+// logged), or where a hex is added or removed (either way: the log may have been undone; a
+// removal is preceded by the ungluing of its faces, so the neighbours' edges are marked too).
+std::vector<uint16_t> edgesChangedBy(const Complex::EditLog& log, const std::vector<HexId>& touched) {
+  std::vector<uint16_t> out(touched.size(), 0);
+  auto mark = [&](HexId h, uint16_t edges) {
+    const auto at = std::lower_bound(touched.begin(), touched.end(), h);
+    if (at != touched.end() && *at == h) out[size_t(at - touched.begin())] |= edges;
+  };
+  auto faceEdges = [](int f) {
+    uint16_t m = 0;
+    for (int e : tables::kFaceEdges[size_t(f)]) m = uint16_t(m | (1u << e));
+    return m;
+  };
+  for (const Complex::Edit& e : log.edits) {
+    if (e.kind == Complex::Edit::AddHex || e.kind == Complex::Edit::RemoveHex) {
+      mark(e.hex, 0xFFF);
+    } else if (e.kind == Complex::Edit::Glue || e.kind == Complex::Edit::Unglue) {
+      mark(e.hex, faceEdges(e.face));
+      mark(HexId(e.value >> 6), faceEdges(int((e.value >> 3) & 7)));
+    }
+  }
+  return out;
+}
+
 DualTracker::DualTracker(const Complex& cx) {
   DualExtras extras;
   dual_ = extractDual(cx, &extras);
@@ -115,18 +141,28 @@ void DualTracker::releaseRetiredTail() {
 }
 
 DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology) {
-  return update(cx, touchedHexes(cx, edits), sheetsKeepTopology);
+  const std::vector<HexId> touched = touchedHexes(cx, edits);
+  edgesToWalk_ = edgesChangedBy(edits, touched);
+  DualChange change = updateSorted(cx, touched, sheetsKeepTopology);
+  edgesToWalk_.clear();
+  return change;
 }
 
 DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bool sheetsKeepTopology) {
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  edgesToWalk_.clear();  // not known: every edge of a live touched hex is walked
+  return updateSorted(cx, touched, sheetsKeepTopology);
+}
+
+// touched: sorted, without repeats.
+DualChange DualTracker::updateSorted(const Complex& cx, const std::vector<HexId>& touched, bool sheetsKeepTopology) {
   const size_t cap = std::max(size_t(cx.hexCapacity()), dual_.sheetLabel.size());
   growPerHexArrays(cap);
   slotsTouched_ = 0;
   sheetSlotsTouched_ = 0;
   mergedLabels_ = 0;
   reflooded_ = false;
-  std::sort(touched.begin(), touched.end());
-  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   DualChange change;
   if (!(sheetsKeepTopology && updateSheetsLocally(cx, touched, change)) && !updateSheetsLockstep(cx, touched, change)) {
     reflooded_ = true;

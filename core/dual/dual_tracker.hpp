@@ -85,6 +85,7 @@ class DualTracker {
   void checkInvariants(const Complex& cx) const;
 
  private:
+  DualChange updateSorted(const Complex& cx, const std::vector<HexId>& touched, bool sheetsKeepTopology);
   friend struct DualTrackerTestAccess;  // tests break the state on purpose to see checkInvariants fail
 
   // ---- sheet update strategies, one unit each; update() runs the first that accepts the edit ----
@@ -190,6 +191,9 @@ class DualTracker {
   std::vector<int8_t> share_;
   std::vector<int32_t> front_;    // per slot: lockstep front + 1 that reached it (0 outside an update)
   std::vector<uint16_t> walked_;  // per hex: edges walked by the current refreshShares (0 outside it)
+  // Parallel to the current update's touched hexes: the edges whose cycles its edits can have
+  // changed (edgesChangedBy); empty when not known (every edge of a live touched hex is walked).
+  std::vector<uint16_t> edgesToWalk_;
   // Chords: per label its run of slots (by place); per chord id its pieces; labels no slot carries.
   std::vector<std::vector<Slot>> runs_;
   std::vector<std::vector<Piece>> pieces_;
@@ -206,5 +210,9 @@ class DualTracker {
 
 // Hex ids whose gluings or corners an edit log changed (created, removed, re-glued, renumbered).
 std::vector<HexId> touchedHexes(const Complex& cx, const Complex::EditLog& edits);
+// Per hex of `touched` (touchedHexes of the same log): bit e set when the cycle of its edge e can
+// have changed, i.e. the hex was added or removed or a face through e was glued or unglued (an
+// edge cycle is the gluings of the faces through it); the same for the log and its undo.
+std::vector<uint16_t> edgesChangedBy(const Complex::EditLog& edits, const std::vector<HexId>& touched);
 
 }  // namespace hexdual

@@ -2,6 +2,8 @@
 // and the per-hex edge marks they are read from, kept between updates so that a sheet cut or
 // re-glued in one place learns its Euler characteristic from the edit alone.
 // Owns: edgeMarks_, share_, and the scratch marks walked_.
+// Only the edges whose cycles the edit can have changed are walked (edgesToWalk_, when the
+// update knows its edits); the other marks stand.
 // Keeps: bit e of edgeMarks_[h] is set exactly when (h, e) is its primal edge's smallest
 // incidence, and kNearBoundary exactly when one of h's 12 edges reaches the boundary; every live
 // slot's share_ is slotShare() of its hex's marks, a dead slot's is 0; a sheet's Euler
@@ -54,9 +56,12 @@ void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& tou
     if (changes) changes->push_back({t, before, after});
   };
   bool nearBefore = false;
-  std::vector<Slot> dirty;
-  std::vector<HexId> met;
-  std::vector<EdgeRef> inc;
+  // Scratch kept between calls (every update runs this): no allocation once warm.
+  thread_local std::vector<Slot> dirty;
+  thread_local std::vector<HexId> met;
+  thread_local std::vector<EdgeRef> inc;
+  dirty.clear();
+  met.clear();
   for (HexId h : touched) {
     nearBefore = nearBefore || (edgeMarks_[size_t(h)] & kNearBoundary);
     if (cx.isHex(h)) {
@@ -71,10 +76,13 @@ void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& tou
     edgeMarks_[size_t(h)] = 0;
   }
   bool fan = false;
-  for (HexId h : touched) {
+  const bool known = edgesToWalk_.size() == touched.size();  // else every edge may have changed
+  for (size_t i = 0; i < touched.size(); ++i) {
+    const HexId h = touched[i];
     if (!cx.isHex(h)) continue;
+    const unsigned changed = known ? edgesToWalk_[i] : 0xFFFu;
     for (int e = 0; e < 12; ++e) {
-      if ((walked_[size_t(h)] >> e) & 1u) continue;
+      if (!((changed >> e) & 1u) || ((walked_[size_t(h)] >> e) & 1u)) continue;
       const bool closed = edgeIncidences(cx, {h, e}, inc);
       fan = fan || !closed;
       const EdgeRef least = *std::min_element(inc.begin(), inc.end());
