@@ -234,7 +234,7 @@ static int benchLayoutFile(const char* file, int reps) {
 // inverse insertion, dicing it in two, pillowing the centre hex, collapsing the middle x-chord.
 // Each is applied and undone REPS times (minimum CPU time): the operation alone, and with the
 // dual tracker's update; slots: what the update visited.
-static int benchSheetOps(int n, int reps) {
+static int benchSheetOps(int n, int reps, const char* only) {
   Complex cx = makeGrid(n, n, n);
   DualTracker tracker(cx);
   const int c = n / 2;
@@ -254,6 +254,7 @@ static int benchSheetOps(int n, int reps) {
       {"columnCollapse", "", "column-collapse h" + mid + "e0"},
   };
   for (const Case& k : cases) {
+    if (only && std::strcmp(only, k.name)) continue;
     Complex::EditLog setupLog;
     if (!k.setup.empty()) {
       OpResult s = applyStep(cx, k.setup);
@@ -363,12 +364,12 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (argc >= 3 && !std::strcmp(argv[1], "sheetops")) return benchSheetOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
+  if (argc >= 3 && !std::strcmp(argv[1], "sheetops")) return benchSheetOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5, argc > 4 ? argv[4] : nullptr);
   if (argc >= 3 && !std::strcmp(argv[1], "layout")) return benchLayout(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "build")) return benchBuild(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "ops")) return benchOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 21);
   if (argc >= 3 && !std::strcmp(argv[1], "throughput"))
     return benchThroughput(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 20000);
-  std::fprintf(stderr, "usage: hexdual_bench build N [REPS] | ops N [REPS] | throughput N [STEPS] | layout N [REPS] | layout-file MESH [REPS]\n");
+  std::fprintf(stderr, "usage: hexdual_bench build N [REPS] | ops N [REPS] | sheetops N [REPS] [OP] | throughput N [STEPS] | layout N [REPS] | layout-file MESH [REPS]\n");
   return 2;
 }
