@@ -33,13 +33,16 @@ if [ ! -d node_modules ] || [ package.json -nt node_modules/.package-lock.json ]
 fi
 
 JOBS=$(nproc 2>/dev/null || echo 2)
+# Unity builds (sources compiled in batches of 8): about a third less compile time from a fresh
+# clone (bench/README.md "The quick tier's time"). HEXDUAL_UNITY=OFF builds file by file.
+UNITY=${HEXDUAL_UNITY:-ON}
 echo "hexdual setup: native build"
-cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD="$UNITY" >/dev/null
 cmake --build build/native -j"$JOBS" >/dev/null
 
 echo "hexdual setup: wasm build"
-if [ ! -f build/wasm/CMakeCache.txt ]; then
-  emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release -DCMAKE_CROSSCOMPILING_EMULATOR=node >/dev/null
+if ! grep -q "^CMAKE_UNITY_BUILD:BOOL=$UNITY\$" build/wasm/CMakeCache.txt 2>/dev/null; then
+  emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release -DCMAKE_CROSSCOMPILING_EMULATOR=node -DCMAKE_UNITY_BUILD="$UNITY" >/dev/null
 fi
 cmake --build build/wasm -j"$JOBS" >/dev/null
 

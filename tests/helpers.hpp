@@ -4,6 +4,8 @@
 #include <functional>
 #include <string>
 
+#include <doctest/doctest.h>
+
 #include "complex/complex.hpp"
 #include "dual/dual.hpp"
 
@@ -20,6 +22,13 @@ inline std::string errorOf(const std::function<void()>& f) {
 }
 
 inline bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// s with the first occurrence of `from` replaced by `to` (which must occur).
+inline std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  auto i = s.find(from);
+  REQUIRE(i != std::string::npos);
+  return s.replace(i, from.size(), to);
+}
 
 inline int countTopology(const Dual& d, const std::string& t) {
   int n = 0;
@@ -55,27 +64,35 @@ inline const char* kPillowNative =
 namespace hexdual::test {
 // Everything observable about a complex, ids and tombstones included: equal dumps = same state.
 inline std::string stateDump(const Complex& cx) {
-  std::ostringstream o;
-  o.precision(17);
-  o << cx.hexCapacity() << " " << cx.vertexCapacity() << " " << cx.numHexes() << " " << cx.numVertices() << " "
-    << cx.numBoundaryQuads() << " " << cx.revision() << "\n";
+  // Raw bytes, not text: equal dumps = bit-equal ids, gluings and positions. (Printing every
+  // coordinate at 17 digits made the whole-set sweeps spend half their time in printf.)
+  std::string o;
+  auto put = [&o](auto x) { o.append(reinterpret_cast<const char*>(&x), sizeof x); };
+  put(int64_t(cx.hexCapacity()));
+  put(int64_t(cx.vertexCapacity()));
+  put(int64_t(cx.numHexes()));
+  put(int64_t(cx.numVertices()));
+  put(int64_t(cx.numBoundaryQuads()));
+  put(uint64_t(cx.revision()));
   for (HexId h = 0; h < cx.hexCapacity(); ++h) {
-    if (!cx.isHex(h)) {
-      o << "x\n";
-      continue;
-    }
-    for (int c = 0; c < 8; ++c) o << cx.vertex(h, c) << " ";
+    put(char(cx.isHex(h)));
+    if (!cx.isHex(h)) continue;
+    for (int c = 0; c < 8; ++c) put(int64_t(cx.vertex(h, c)));
     for (int f = 0; f < 6; ++f) {
-      Gluing g = cx.gluing(h, f);
-      o << "|" << g.hex << "," << g.face << "," << g.orient;
+      const Gluing g = cx.gluing(h, f);
+      put(int64_t(g.hex));
+      put(int32_t(g.face));
+      put(int32_t(g.orient));
     }
-    o << "\n";
   }
   for (VertexId v = 0; v < cx.vertexCapacity(); ++v) {
-    Vec3 p = cx.position(v);
-    o << cx.isVertex(v) << " " << p.x << " " << p.y << " " << p.z << "\n";
+    const Vec3 p = cx.position(v);
+    put(char(cx.isVertex(v)));
+    put(p.x);
+    put(p.y);
+    put(p.z);
   }
-  return o.str();
+  return o;
 }
 }  // namespace hexdual::test
 

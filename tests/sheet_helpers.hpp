@@ -82,8 +82,7 @@ inline Checked checkSheetStep(Complex& cx, DualTracker& tracker, const OpStep& s
     cx.undo(r.edits);
     tracker.update(cx, r.edits, keepsSheetTopology(r));
     tracker.releaseRetiredTail();
-    REQUIRE(stateDump(cx) == dump);
-    CHECK(canonicalHash(cx) == canonicalHash(before));
+    REQUIRE(stateDump(cx) == dump);  // the same ids, gluings and positions: the same complex
     compareDuals(cx, tracker.dual(), extractDual(cx));
   }
   return out;

@@ -25,11 +25,6 @@ const char* kTwoHexVtk =
     "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 12 float\n"
     "0 0 0 1 0 0 0 1 0 1 1 0 0 0 1 1 0 1 0 1 1 1 1 1 0 0 2 1 0 2 0 1 2 1 1 2\n"
     "CELLS 2 18\n8 0 1 3 2 4 5 7 6\n8 4 5 7 6 8 9 11 10\nCELL_TYPES 2\n12\n12\n";
-std::string replaced(std::string s, const std::string& from, const std::string& to) {
-  auto i = s.find(from);
-  REQUIRE(i != std::string::npos);
-  return s.replace(i, from.size(), to);
-}
 }  // namespace
 
 TEST_CASE("round trips through every format keep counts and positions exactly") {

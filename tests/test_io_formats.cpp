@@ -18,11 +18,6 @@ using namespace hexdual;
 using namespace hexdual::test;
 
 namespace {
-std::string replaced(std::string s, const std::string& from, const std::string& to) {
-  auto i = s.find(from);
-  REQUIRE(i != std::string::npos);
-  return s.replace(i, from.size(), to);
-}
 // A 2x1x1 grid: 12 points, 2 hexes (VTK order).
 const double kPts[12][3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0},
                             {0, 0, 1}, {1, 0, 1}, {2, 0, 1}, {0, 1, 1}, {1, 1, 1}, {2, 1, 1}};

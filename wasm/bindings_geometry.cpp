@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "addressed.hpp"  // complexAt, dualAt
 #include "analysis/edge_dual.hpp"
 #include "analysis/singularity.hpp"
 #include "geometry/positions_hash.hpp"
@@ -17,8 +18,8 @@ using namespace hexdual;
 
 namespace {
 
-const Complex& complexAt(double address) { return *reinterpret_cast<const Complex*>(uintptr_t(address)); }
-const Dual& dualAt(double address) { return *reinterpret_cast<const Dual*>(uintptr_t(address)); }
+using wasm::complexAt;
+using wasm::dualAt;
 
 template <class F>
 val jsonOrError(F&& f) {

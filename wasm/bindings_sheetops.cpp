@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "addressed.hpp"  // complexAt
 #include "dual/dual_tracker.hpp"
 #include "io/json.hpp"
 #include "io/preview_json.hpp"
@@ -19,7 +20,7 @@ using namespace hexdual;
 
 namespace {
 
-const Complex& complexAt(double address) { return *reinterpret_cast<const Complex*>(uintptr_t(address)); }
+using wasm::complexAt;
 
 template <class F>
 std::string guardedJson(const char* code, F&& f) {
