@@ -2,7 +2,8 @@
 // `near`), each with a one-line explanation and its Δ(V,E,F,H), then the cubical flips whose before
 // side is there (mesh.flipPlaces); then the sheet operations on the sheet through a picked edge or
 // the chord through a picked quad (mesh.select), each previewed (mesh.preview) under the pointer
-// before a click applies it. Typed steps work too; errors show next to it.
+// before a click applies it (on a touch screen: the first tap previews, the second applies). Typed
+// steps work too; errors show next to it.
 import { formatSelection } from './selection.js';
 
 export const OPS = {
@@ -42,17 +43,28 @@ export function createPalette(root, actions) {
     const li = e.target.closest('li.sheet-op');
     if (li && li.dataset.step !== preview.dataset.step) showPreview(li);
   });
+  // A touch has no hover: its first tap on a sheet operation previews it, a second tap applies it.
+  let pointerType = 'mouse';
+  list.addEventListener('pointerdown', (e) => { pointerType = e.pointerType || 'mouse'; });
   list.addEventListener('click', (e) => {
     const li = e.target.closest('li[data-step], li[data-flip]');
+    if (li?.classList.contains('sheet-op') && pointerType !== 'mouse' && preview.dataset.armed !== li.dataset.step) {
+      showPreview(li, 'Tap again to apply.');
+      preview.dataset.armed = li.dataset.step;
+      li.classList.add('armed');
+      return;
+    }
     if (li?.dataset.step) actions.apply(li.dataset.step);
     else if (li) actions.applyFlip(li.dataset.flip, li.dataset.hexes.split(',').map(Number));
   });
   let shownKey = null;
 
   /** What a sheet operation would change, from mesh.preview: shown before it is applied. */
-  function showPreview(li) {
+  function showPreview(li, then = 'Click to apply.') {
     const s = window.hexdual.store.get();
     preview.dataset.step = li.dataset.step;
+    delete preview.dataset.armed;
+    for (const x of list.querySelectorAll('li.armed')) x.classList.remove('armed');
     let p;
     try {
       p = s.mesh.preview(li.dataset.step);
@@ -68,7 +80,7 @@ export function createPalette(root, actions) {
     const d = p.report.delta;
     const q = p.report.quality;
     preview.textContent = `${p.step} would remove ${p.hexesRemoved} and create ${p.hexesCreated} hexes, Δ(${d.V},${d.E},${d.F},${d.H})` +
-      (q ? `; min scaled Jacobian ${q.before.toFixed(2)} → ${q.after.toFixed(2)}` : '') + '. Click to apply.';
+      (q ? `; min scaled Jacobian ${q.before.toFixed(2)} → ${q.after.toFixed(2)}` : '') + `. ${then}`;
   }
 
   /** The sheet through a picked edge or the chord through a picked quad, and its sheet-family steps. */
@@ -79,8 +91,8 @@ export function createPalette(root, actions) {
       const pick = sel.kind === 'edge' ? { hex: sel.hex, edge: sel.edge } : { hex: sel.hex, face: sel.face };
       const x = s.mesh.select(pick);
       return { steps: x.steps, what: `${x.kind} ${x.id} (${x.hexes.length} hexes)` };
-    } catch {
-      return { steps: [], what: '' };
+    } catch (e) {
+      return { steps: [], what: '', error: `sheet operations at ${formatSelection(sel)}: ${e.message}` };
     }
   }
 
@@ -136,8 +148,11 @@ export function createPalette(root, actions) {
       const sheet = sheetSteps(s);
       preview.textContent = '';
       delete preview.dataset.step;
+      delete preview.dataset.armed;
+      const empty = (text) => Object.assign(document.createElement('li'), { className: 'empty', textContent: text });
+      const sheetNote = sheet.error ? [empty(sheet.error)] : [];
       if (!items.length && !flips.length && !sheet.steps.length) {
-        list.replaceChildren(Object.assign(document.createElement('li'), { className: 'empty', textContent: note || `nothing applies at ${formatSelection(s.selection)}` }));
+        list.replaceChildren(empty(note || `nothing applies at ${formatSelection(s.selection)}`), ...sheetNote);
         return;
       }
       list.replaceChildren(
@@ -155,6 +170,7 @@ export function createPalette(root, actions) {
         }),
         ...flips.map(flipItem),
         ...sheet.steps.map((step) => sheetItem(step, sheet.what)),
+        ...sheetNote,
       );
     },
   };

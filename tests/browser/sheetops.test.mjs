@@ -150,3 +150,40 @@ test('a refused sheet operation shows its rule in the preview and changes nothin
   assert.match(await page.locator('#op-error').textContent(), /sheet-extract h0e0/);
   assert.deepEqual(errors, []);
 });
+
+test('on a touch screen the first tap on a sheet operation previews it, the second applies it; a failed select says why', async () => {
+  if (!b) {  // the development mesh is missing: this test needs no file
+    b = await openBrowser();
+    ({ page, errors } = b);
+    x = explorerPage(page, b.server);
+  }
+  await page.setViewportSize({ width: 390, height: 844 });
+  await page.mouse.move(0, 0);  // a phone has no mouse: keep the one of the tests before off the list
+  await x.open('#mesh=grid:3x3x3&sel=h13e0');
+  const step = 'sheet-extract h13e0';
+  const item = page.locator(`#candidates li.sheet-op[data-step="${step}"]`);
+  assert.equal(await item.count(), 1);
+  const tap = () => item.evaluate((li) => {
+    li.dispatchEvent(new PointerEvent('pointerdown', { pointerType: 'touch', bubbles: true }));
+    li.click();
+  });
+  await tap();
+  assert.match(await page.locator('#op-preview').textContent(), /sheet-extract h13e0 would remove 9 and create 0 hexes.*Tap again to apply\./);
+  await x.settle();
+  assert.equal((await x.shownCounts()).hexes, 27, 'the first tap changes nothing');
+  assert.equal(await item.evaluate((li) => li.classList.contains('armed')), true, 'the tapped item is marked');
+  await item.scrollIntoViewIfNeeded();
+  await page.screenshot({ path: join(screenshotDir, 'explorer-sheet-preview-phone.png') });
+  await tap();
+  await page.waitForFunction(() => document.querySelector('[data-count=hexes]').textContent === '18', null, { timeout: 10000 });
+  assert.equal((await x.state()).hexes, 18, 'the second tap applies');
+
+  // A selection the engine cannot select by (a hex that is not there, as a script can ask for): the
+  // palette says why no sheet operation is offered. (An edited URL's is dropped when it loads.)
+  await x.open('#mesh=grid:2x2x2');
+  await page.evaluate(() => window.hexdual.actions.select({ kind: 'edge', hex: 99, edge: 0 }));
+  await x.settle();
+  assert.match(await page.locator('#candidates').textContent(), /sheet operations at h99e0: select: hex 99 does not exist/);
+  await page.setViewportSize({ width: 1200, height: 760 });
+  assert.deepEqual(errors, []);
+});
