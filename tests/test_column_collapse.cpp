@@ -113,20 +113,27 @@ TEST_CASE("column-collapse: refusals name their rule and leave the complex uncha
   CHECK(refusal(loopedChord(), "column-collapse h4e0") == "column-collapse: self-intersecting: the chord through h4e0 passes hex 4 twice");
 }
 
-TEST_CASE("column-collapse: the chord update is local; the crossed sheets are re-flooded (10^3 and 20^3)") {
+TEST_CASE("column-collapse: the dual update is proportional to the chord and the two sheets through it (10^3, 20^3, 40^3)") {
   auto collapse = [](const std::string& centre) { return "column-collapse h" + centre + "e0"; };
   const auto [small, big] = costsAtCentre(10, 20, collapse);
+  const UpdateCost bigger = costAtCentre(40, collapse);
+  MESSAGE("sheet slots 40^3: " << bigger.sheetSlots << ", chord slots " << bigger.chordSlots);
   // Chords: cut and re-joined where the chord was, a fixed number of slots per hex of the chord.
   CHECK(small.chordSlots == 10 * 34);
   CHECK(big.chordSlots == 20 * 34);
-  // Sheets: the update reaches the boundary, so the tracker re-floods every sheet through the
-  // touched hexes: the two through the chord and the n it crosses, n^2 slots each, + the touched
-  // hexes' own slots. Cost O(n^3) in a grid: the lockstep flood does not follow boundary edits yet
-  // (bench/README.md "Sheet operations").
-  CHECK(small.reflooded);
-  CHECK(big.reflooded);
-  CHECK(small.sheetSlots == 3320);
-  CHECK(big.sheetSlots == 21040);
+  CHECK(bigger.chordSlots == 40 * 34);
+  // Sheets: the lockstep flood, at the boundary too. The two sheets through the chord are cut
+  // there and re-joined crosswise into two new sheets; the edit re-joins their boundary loops
+  // where the chord ends, so their groups are flooded whole (2 n^2 - 2n slots), while each of the
+  // n sheets the chord crosses loses one quad in its interior and settles at once: a fixed number
+  // of slots per hex of the chord. 2 n^2 + 26 n in all (it was a re-flood of every crossed
+  // sheet, O(n^3): 3,320 at 10^3 and 21,040 at 20^3).
+  CHECK_FALSE(small.reflooded);
+  CHECK_FALSE(big.reflooded);
+  CHECK_FALSE(bigger.reflooded);
+  CHECK(small.sheetSlots == 2 * 10 * 10 + 26 * 10);
+  CHECK(big.sheetSlots == 2 * 20 * 20 + 26 * 20);
+  CHECK(bigger.sheetSlots == 2 * 40 * 40 + 26 * 40);
 }
 
 TEST_CASE("column-collapse: random runs on grids and an O-grid (fixed seeds)") {

@@ -135,7 +135,6 @@ class DualTracker {
     int before, after;
   };
   void refreshShares(const Complex& cx, const std::vector<HexId>& touched, std::vector<ShareChange>* changes);
-  bool touchesBoundary(const Complex& cx, const std::vector<HexId>& touched) const;
   void checkShares(const Complex& cx) const;
 
   // ---- sheet labels, orientations and pair counts (tracker/sheet_labels.cpp) ----
