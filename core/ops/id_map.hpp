@@ -19,7 +19,8 @@ class IdMap {
     while (cap < 2 * expected) cap *= 2;
     if (cap > keys_.size()) rehash(cap);
   }
-  // The value at id, set to v when id was absent; second: whether it was absent.
+  // The value at id, set to v when id was absent (the pointer holds until the next emplace);
+  // second: whether it was absent.
   std::pair<V*, bool> emplace(int32_t id, V v) {
     if (2 * (used_ + 1) > keys_.size()) rehash(keys_.empty() ? 16 : 2 * keys_.size());
     size_t i = slotOf(id);
