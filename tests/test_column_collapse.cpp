@@ -136,6 +136,29 @@ TEST_CASE("column-collapse: the dual update is proportional to the chord and the
   CHECK(bigger.sheetSlots == 2 * 40 * 40 + 26 * 40);
 }
 
+TEST_CASE("column-collapse: its undo's dual update is proportional too (10^3, 20^3, 40^3)") {
+  // The undo gives the chord back: the two new sheets are cut again and re-joined as they were,
+  // the crossed sheets each regain their quad (topology kept: they settle at once).
+  auto undoCost = [](int n) {
+    Complex cx = makeGrid(n, n, n);
+    DualTracker tracker(cx);
+    const int c = n / 2;
+    OpResult r = applyStep(cx, "column-collapse h" + std::to_string(c + n * (c + n * c)) + "e0");
+    tracker.update(cx, r.edits, keepsSheetTopology(r));
+    cx.undo(r.edits);
+    tracker.update(cx, r.edits, keepsSheetTopology(r));
+    compareDuals(cx, tracker.dual(), extractDual(cx));
+    CHECK_FALSE(tracker.lastUpdateReflooded());
+    MESSAGE("undo at " << n << "^3: sheet slots " << tracker.sheetSlotsTouched());
+    return tracker.sheetSlotsTouched();
+  };
+  // 2 n^2 + 29 n: the two sheets through the chord flooded whole again, and a fixed number of
+  // slots per hex of the chord.
+  CHECK(undoCost(10) == 2 * 10 * 10 + 29 * 10);
+  CHECK(undoCost(20) == 2 * 20 * 20 + 29 * 20);
+  CHECK(undoCost(40) == 2 * 40 * 40 + 29 * 40);
+}
+
 TEST_CASE("column-collapse: random runs on grids and an O-grid (fixed seeds)") {
   auto a = randomSheetRuns(makeGrid(4, 4, 4), 20261603, 40, OpKind::ColumnCollapse);
   auto b = randomSheetRuns(makeRing(6, 2, 2), 20261703, 20, OpKind::ColumnCollapse);
