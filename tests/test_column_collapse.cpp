@@ -113,20 +113,50 @@ TEST_CASE("column-collapse: refusals name their rule and leave the complex uncha
   CHECK(refusal(loopedChord(), "column-collapse h4e0") == "column-collapse: self-intersecting: the chord through h4e0 passes hex 4 twice");
 }
 
-TEST_CASE("column-collapse: the chord update is local; the crossed sheets are re-flooded (10^3 and 20^3)") {
+TEST_CASE("column-collapse: the dual update is proportional to the chord and the two sheets through it (10^3, 20^3, 40^3)") {
   auto collapse = [](const std::string& centre) { return "column-collapse h" + centre + "e0"; };
   const auto [small, big] = costsAtCentre(10, 20, collapse);
+  const UpdateCost bigger = costAtCentre(40, collapse);
+  MESSAGE("sheet slots 40^3: " << bigger.sheetSlots << ", chord slots " << bigger.chordSlots);
   // Chords: cut and re-joined where the chord was, a fixed number of slots per hex of the chord.
   CHECK(small.chordSlots == 10 * 34);
   CHECK(big.chordSlots == 20 * 34);
-  // Sheets: the update reaches the boundary, so the tracker re-floods every sheet through the
-  // touched hexes: the two through the chord and the n it crosses, n^2 slots each, + the touched
-  // hexes' own slots. Cost O(n^3) in a grid: the lockstep flood does not follow boundary edits yet
-  // (bench/README.md "Sheet operations").
-  CHECK(small.reflooded);
-  CHECK(big.reflooded);
-  CHECK(small.sheetSlots == 3320);
-  CHECK(big.sheetSlots == 21040);
+  CHECK(bigger.chordSlots == 40 * 34);
+  // Sheets: the lockstep flood, at the boundary too. The two sheets through the chord are cut
+  // there and re-joined crosswise into two new sheets; the edit re-joins their boundary loops
+  // where the chord ends, so their groups are flooded whole (2 n^2 - 2n slots), while each of the
+  // n sheets the chord crosses loses one quad in its interior and settles at once: a fixed number
+  // of slots per hex of the chord. 2 n^2 + 26 n in all (it was a re-flood of every crossed
+  // sheet, O(n^3): 3,320 at 10^3 and 21,040 at 20^3).
+  CHECK_FALSE(small.reflooded);
+  CHECK_FALSE(big.reflooded);
+  CHECK_FALSE(bigger.reflooded);
+  CHECK(small.sheetSlots == 2 * 10 * 10 + 26 * 10);
+  CHECK(big.sheetSlots == 2 * 20 * 20 + 26 * 20);
+  CHECK(bigger.sheetSlots == 2 * 40 * 40 + 26 * 40);
+}
+
+TEST_CASE("column-collapse: its undo's dual update is proportional too (10^3, 20^3, 40^3)") {
+  // The undo gives the chord back: the two new sheets are cut again and re-joined as they were,
+  // the crossed sheets each regain their quad (topology kept: they settle at once).
+  auto undoCost = [](int n) {
+    Complex cx = makeGrid(n, n, n);
+    DualTracker tracker(cx);
+    const int c = n / 2;
+    OpResult r = applyStep(cx, "column-collapse h" + std::to_string(c + n * (c + n * c)) + "e0");
+    tracker.update(cx, r.edits, keepsSheetTopology(r));
+    cx.undo(r.edits);
+    tracker.update(cx, r.edits, keepsSheetTopology(r));
+    compareDuals(cx, tracker.dual(), extractDual(cx));
+    CHECK_FALSE(tracker.lastUpdateReflooded());
+    MESSAGE("undo at " << n << "^3: sheet slots " << tracker.sheetSlotsTouched());
+    return tracker.sheetSlotsTouched();
+  };
+  // 2 n^2 + 29 n: the two sheets through the chord flooded whole again, and a fixed number of
+  // slots per hex of the chord.
+  CHECK(undoCost(10) == 2 * 10 * 10 + 29 * 10);
+  CHECK(undoCost(20) == 2 * 20 * 20 + 29 * 20);
+  CHECK(undoCost(40) == 2 * 40 * 40 + 29 * 40);
 }
 
 TEST_CASE("column-collapse: random runs on grids and an O-grid (fixed seeds)") {

@@ -118,14 +118,16 @@ void SheetFlooder::measure(const Complex& cx, HexId h, int a, SheetStats& st) {
 }
 
 namespace {
-// Marks every hex of the fan of boundary edge (h, e) as near the boundary (DualExtras::edgeMarks).
+// Marks every hex of the fan of boundary edge (h, e) as near the boundary, along the edge's axis
+// there (DualExtras::edgeMarks).
 void markFan(const Complex& cx, HexId h, int e, uint16_t* marks) {
-  marks[size_t(h)] |= kEdgeNearBoundary;
+  marks[size_t(h)] |= kEdgeNearBoundary | kEdgeAxisNearBoundary(axisOfEdge(e));
   const auto fs = facesOfEdge(e);
   for (int dir = 0; dir < 2; ++dir) {
     EdgeRef cur{h, e};
     int exit = fs[size_t(dir)];
-    while (cx.stepAroundEdge(cur, exit)) marks[size_t(cur.hex)] |= kEdgeNearBoundary;
+    while (cx.stepAroundEdge(cur, exit))
+      marks[size_t(cur.hex)] |= kEdgeNearBoundary | kEdgeAxisNearBoundary(axisOfEdge(cur.edge));
   }
 }
 

@@ -128,7 +128,8 @@ int mapAxisAcross(const Complex& cx, HexId h, int face, int axis);
 
 // What extraction can report on the way, for DualTracker: an orientation (+1/-1) of every slot's
 // mid-quad (3 per hex), consistent across each orientable sheet; and per hex, bit e set when (h, e)
-// is its primal edge's smallest incidence, bit kEdgeNearBoundary when one of its edges reaches the boundary.
+// is its primal edge's smallest incidence, bit kEdgeNearBoundary when one of its edges reaches the boundary,
+// and bit kEdgeAxisNearBoundary(a) when one of its 4 edges along axis a does.
 struct DualExtras {
   std::vector<int8_t> slotSigns;
   std::vector<uint16_t> edgeMarks;
@@ -136,6 +137,7 @@ struct DualExtras {
   std::vector<int32_t> chordPlaces;  // per slot: its place in its chord's slot list
 };
 constexpr uint16_t kEdgeNearBoundary = uint16_t(1u << 15);
+constexpr uint16_t kEdgeAxisNearBoundary(int a) { return uint16_t(1u << (12 + a)); }
 
 // Twice slot (h, a)'s share of its sheet's Euler characteristic V - E + F: its quad, minus its
 // sides (interior ones are shared by two slots), plus the primal edges it holds the smallest

@@ -3,8 +3,9 @@
 // explored or continues in one unexplored remainder, so a sheet cut or re-glued in one place costs
 // the explored region, and a real split its smaller pieces (a merge re-points sheet labels and
 // writes no slot: see Dual::sheetLabel); Euler characteristics, loops and
-// orientations of the remainder follow from per-slot shares kept between updates. Edits that
-// touch the boundary or non-orientable sheets re-flood the sheets they touch. Chords through the
+// orientations of the remainder follow from per-slot shares kept between updates. At the
+// boundary a group that meets a sheet whose boundary loops the edit can re-join is flooded whole;
+// edits through non-orientable sheets re-flood the sheets they touch. Chords through the
 // touched hexes are rebuilt from their untouched stretches and walks through the touched hexes
 // that join them (TK03 §4.4: a collapse cuts two chords and re-joins them crosswise): a chord is
 // listed as pieces of labelled runs (see Dual::chordLabel), so a merge or a cut writes only the
@@ -19,8 +20,8 @@
 //   tracker/sheet_labels.cpp             sheet labels, orientations, merges, pair counts (self-intersection)
 //   tracker/shares.cpp                   edge marks and per-slot Euler shares
 //   tracker/sheets_topology_kept.cpp     sheet update when the operation keeps every sheet's topology
-//   tracker/sheets_interior_lockstep.cpp sheet update for other edits away from the boundary (lockstep flood)
-//   tracker/sheets_fallback_reflood.cpp  sheet update when neither applies (boundary, twisted sheets)
+//   tracker/sheets_interior_lockstep.cpp sheet update for other edits on orientable sheets (lockstep flood)
+//   tracker/sheets_fallback_reflood.cpp  sheet update when neither applies (twisted sheets)
 //   tracker/chord_runs.cpp               chords as pieces of labelled runs: slicing, cutting, labels, settling
 //   tracker/chord_update.cpp             which chords changed; the whole re-walk (reference and fallback)
 //   tracker/chord_rejoin.cpp             the local chord update: stretches joined by walks through the edit
@@ -135,7 +136,6 @@ class DualTracker {
     int before, after;
   };
   void refreshShares(const Complex& cx, const std::vector<HexId>& touched, std::vector<ShareChange>* changes);
-  bool touchesBoundary(const Complex& cx, const std::vector<HexId>& touched) const;
   void checkShares(const Complex& cx) const;
 
   // ---- sheet labels, orientations and pair counts (tracker/sheet_labels.cpp) ----

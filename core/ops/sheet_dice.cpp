@@ -19,7 +19,7 @@ struct Levels {
   int k = 2;
   std::vector<std::vector<VertexId>> edge;                   // per class edge: vertex by level
   std::unordered_map<HexId, std::array<int32_t, 4>> edgeOf;  // per hex: class edge of local edge 4a+i
-  std::unordered_map<HexId, int8_t> up;
+  IdMap<int8_t> up;
   bool selfTouching = false;  // a vertex ends two edges of the class (then no layer extraction undoes the dicing)
   // The vertex at global level L on the edge through corner c of sheet hex h.
   VertexId at(const SheetHexes& s, HexId h, int c, int L) const {
@@ -38,7 +38,7 @@ struct Levels {
 
 // Finds the class edges (by their smallest incidence, so doubled edges stay apart) and lists each
 // one's ends from the lower side up; new vertices are created later.
-Levels levelsOf(const Complex& cx, const SheetHexes& sheet, int k, std::unordered_map<HexId, int8_t> up) {
+Levels levelsOf(const Complex& cx, const SheetHexes& sheet, int k, IdMap<int8_t> up) {
   Levels lv;
   lv.k = k;
   lv.up = std::move(up);

@@ -52,8 +52,7 @@ std::string hexList(const std::vector<HexId>& hexes) {
 // Every sheet hex lies in one run. Refuses a chord that never leaves the sheet (no-sides).
 std::vector<Run> runsOf(const Complex& cx, const SheetHexes& sheet, const std::string& op) {
   std::vector<Run> runs;
-  std::unordered_map<HexId, bool> placed;
-  placed.reserve(sheet.hexes.size());
+  IdMap<uint8_t> placed(sheet.hexes.size());
   for (HexId h : sheet.hexes) {
     if (placed.count(h)) continue;
     const int a = sheet.axisOf(h);
@@ -70,7 +69,7 @@ std::vector<Run> runsOf(const Complex& cx, const SheetHexes& sheet, const std::s
     if (cx.isBoundary(r.before) && cx.isBoundary(r.after))
       refuse(op, "no-sides", "the chord through " + hexName(h) + " runs from boundary to boundary inside the sheet (hexes " +
                                  hexList(r.hexes) + "); no hex would be left there");
-    for (HexId x : r.hexes) placed.emplace(x, true);
+    for (HexId x : r.hexes) placed.emplace(x, 1);
     runs.push_back(std::move(r));
   }
   return runs;
@@ -79,14 +78,13 @@ std::vector<Run> runsOf(const Complex& cx, const SheetHexes& sheet, const std::s
 // The edge class: one merge (its two ends) per edge. Refuses a vertex on two edges of the class
 // with different other ends (self-touching): three vertices would become one.
 std::vector<std::vector<std::pair<HexId, int>>> collapsedEdges(const Complex& cx, const SheetHexes& sheet, const std::string& op) {
-  std::unordered_map<VertexId, VertexId> partner;
-  partner.reserve(8 * sheet.hexes.size());
+  IdMap<VertexId> partner(2 * sheet.hexes.size());  // a sheet of n hexes: about 2n vertices
   std::vector<std::vector<std::pair<HexId, int>>> classes;
   auto pairUp = [&](VertexId v, VertexId w) {
     auto [it, fresh] = partner.emplace(v, w);
-    if (!fresh && it->second != w)
+    if (!fresh && *it != w)
       refuse(op, "self-touching",
-             "the sheet touches itself at vertex " + std::to_string(v) + ": its edges to " + std::to_string(it->second) +
+             "the sheet touches itself at vertex " + std::to_string(v) + ": its edges to " + std::to_string(*it) +
                  " and to " + std::to_string(w) + " would merge three vertices into one");
     return fresh;
   };

@@ -56,7 +56,7 @@ SheetHexes sheetThrough(const Complex& cx, EdgeRef e, const std::string& op) {
   requireEdge(cx, e, op);
   SheetHexes s;
   std::vector<std::pair<HexId, int>> stack{{e.hex, axisOfEdge(e.edge)}};
-  s.axis.emplace(e.hex, axisOfEdge(e.edge));
+  s.axis.emplace(e.hex, int8_t(axisOfEdge(e.edge)));
   while (!stack.empty()) {
     auto [h, a] = stack.back();
     stack.pop_back();
@@ -65,21 +65,20 @@ SheetHexes sheetThrough(const Complex& cx, EdgeRef e, const std::string& op) {
       const Gluing g = cx.gluing(h, f);
       if (g.boundary()) continue;
       const int a2 = kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))].axis;
-      auto [it, fresh] = s.axis.emplace(g.hex, a2);
+      auto [it, fresh] = s.axis.emplace(g.hex, int8_t(a2));
       if (fresh) stack.push_back({g.hex, a2});
-      else if (it->second != a2)
+      else if (*it != a2)
         refuse(op, "self-intersecting",
                "the sheet through " + entityName(e) + " passes " + hexName(g.hex) + " twice (along its local axes " +
-                   std::to_string(it->second) + " and " + std::to_string(a2) + ")");
+                   std::to_string(*it) + " and " + std::to_string(a2) + ")");
     }
   }
   std::sort(s.hexes.begin(), s.hexes.end());
   return s;
 }
 
-std::unordered_map<HexId, int8_t> sheetUp(const Complex& cx, const SheetHexes& sheet) {
-  std::unordered_map<HexId, int8_t> up;
-  up.reserve(sheet.hexes.size());
+IdMap<int8_t> sheetUp(const Complex& cx, const SheetHexes& sheet) {
+  IdMap<int8_t> up(sheet.hexes.size());
   for (HexId start : sheet.hexes) {
     if (up.count(start)) continue;
     up.emplace(start, int8_t(1));
@@ -98,7 +97,7 @@ std::unordered_map<HexId, int8_t> sheetUp(const Complex& cx, const SheetHexes& s
         const int8_t sense = int8_t(up.at(h) * (cornerBit(image, sheet.axisOf(g.hex)) == 0 ? 1 : -1));
         auto [it, fresh] = up.emplace(g.hex, sense);
         if (fresh) stack.push_back(g.hex);
-        else if (it->second != sense) return {};
+        else if (*it != sense) return {};
       }
     }
   }
@@ -183,7 +182,7 @@ VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pa
     m.boundaryMembers.push_back(nB);
     for (size_t k = 0; k < cls.size(); ++k) {
       const VertexId v = cx.vertex(cls[k].first, cls[k].second);
-      m.into[v] = keep;
+      m.into.emplace(v, keep);
       if (v == keep) continue;
       m.dropped.push_back(v);
       m.renamed.insert(m.renamed.end(), outside[k].begin(), outside[k].end());  // only corners whose vertex changes

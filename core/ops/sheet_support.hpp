@@ -10,6 +10,7 @@
 
 #include "complex/complex.hpp"
 #include "ops/sheet_ops.hpp"
+#include "ops/id_map.hpp"
 #include "ops/support.hpp"
 
 namespace hexdual::ops {
@@ -28,11 +29,8 @@ void commitOrRefuse(Transaction& tx, OpResult& r, const std::vector<HexId>& touc
 // A sheet: its hexes (ascending) and, per hex, the local axis crossed by its edge class there.
 struct SheetHexes {
   std::vector<HexId> hexes;
-  std::unordered_map<HexId, int> axis;
-  int axisOf(HexId h) const {
-    auto it = axis.find(h);
-    return it == axis.end() ? -1 : it->second;
-  }
+  IdMap<int8_t> axis;
+  int axisOf(HexId h) const { return axis.get(h, -1); }
 };
 // The sheet through edge e: its slot (e.hex, axis of e) flooded across the quads parallel to the
 // slot's axis (TK03 §1.1). Refuses no-such-entity and self-intersecting (a hex met with two axes).
@@ -41,13 +39,13 @@ SheetHexes sheetThrough(const Complex& cx, EdgeRef e, const std::string& op);
 // A consistent "up" for every hex of the sheet: +1 when its local axis points up, -1 when it
 // points down, so that the side "up" of a hex glued to another is that one's side "up". Empty
 // when the sheet has none: it is one-sided (its neighbourhood is a twisted I-bundle).
-std::unordered_map<HexId, int8_t> sheetUp(const Complex& cx, const SheetHexes& sheet);
+IdMap<int8_t> sheetUp(const Complex& cx, const SheetHexes& sheet);
 
 // Vertex merges planned by a collapse: each class keeps one vertex, its smallest boundary vertex
 // (else its smallest), placed at the mean of its boundary vertices (else of all of them), so a
 // boundary vertex never leaves the boundary surface.
 struct VertexMerges {
-  std::unordered_map<VertexId, VertexId> into;       // every merged vertex -> the kept one
+  IdMap<VertexId> into;                              // every merged vertex -> the kept one
   std::vector<std::pair<VertexId, Vec3>> placed;     // kept vertex, its place after the merge
   std::vector<std::pair<HexId, int>> renamed;        // corners to renumber (outside the removed hexes)
   std::vector<VertexId> dropped;                     // vertices merged away, ascending
@@ -55,10 +53,7 @@ struct VertexMerges {
   std::vector<std::pair<HexId, int>> anchors;  // per class: a corner off the removed hexes (it holds the kept vertex after)
   std::vector<std::pair<HexId, int>> members;  // every merged vertex, by one of its corners (before the edit)
   std::vector<int> boundaryMembers;            // per class: how many of its vertices are on the boundary
-  VertexId target(VertexId v) const {
-    auto it = into.find(v);
-    return it == into.end() ? v : it->second;
-  }
+  VertexId target(VertexId v) const { return into.get(v, v); }
 };
 // `classes`: per class, one corner of each of its vertices (distinct vertices).
 VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pair<HexId, int>>>& classes,

@@ -5,7 +5,8 @@
 // Only the edges whose cycles the edit can have changed are walked (edgesToWalk_, when the
 // update knows its edits); the other marks stand.
 // Keeps: bit e of edgeMarks_[h] is set exactly when (h, e) is its primal edge's smallest
-// incidence, and kNearBoundary exactly when one of h's 12 edges reaches the boundary; every live
+// incidence, kNearBoundary exactly when one of h's 12 edges reaches the boundary and
+// kEdgeAxisNearBoundary(a) exactly when one of its 4 edges along axis a does; every live
 // slot's share_ is slotShare() of its hex's marks, a dead slot's is 0; a sheet's Euler
 // characteristic is half the sum of its slots' shares; walked_ is 0 outside refreshShares.
 #include <algorithm>
@@ -19,7 +20,21 @@ using namespace tracker;
 namespace {
 
 constexpr uint16_t kNearBoundary = kEdgeNearBoundary;
-constexpr uint16_t kWalkedFan = uint16_t(1u << 15);  // in walked_: one of the hex's edges walked is a fan
+constexpr uint16_t kAxesNearBoundary = uint16_t(7u << 12);  // kEdgeAxisNearBoundary(0..2)
+// In walked_: bit 12 + a when one of the hex's edges along axis a walked is a fan.
+uint16_t walkedFan(int edge) { return uint16_t(1u << (12 + tables::axisOfEdge(edge))); }
+
+// The near-boundary bits of hex m after an edit that walked the edges marked in `walked`: an axis
+// is near when one of its edges walked is a fan now, or (when it was near before) one of its
+// other edges is.
+uint16_t nearBits(const Complex& cx, HexId m, uint16_t marks, uint16_t walked) {
+  uint16_t bits = 0;
+  for (int a = 0; a < 3; ++a)
+    if ((walked & kEdgeAxisNearBoundary(a)) ||
+        ((marks & kEdgeAxisNearBoundary(a)) && edgesNear(cx, m, uint16_t(0xFu << (4 * a)))))
+      bits |= kEdgeAxisNearBoundary(a);
+  return bits ? uint16_t(bits | kNearBoundary) : 0;
+}
 
 // The incidences of the edge at e, round its cycle or along its fan; false for a fan.
 bool edgeIncidences(const Complex& cx, EdgeRef e, std::vector<EdgeRef>& out) {
@@ -36,8 +51,11 @@ bool edgeIncidences(const Complex& cx, EdgeRef e, std::vector<EdgeRef>& out) {
   return false;
 }
 
-bool nearBoundary(const Complex& cx, HexId h) {
+}  // namespace
+
+bool tracker::edgesNear(const Complex& cx, HexId h, unsigned edges) {
   for (int e = 0; e < 12; ++e) {
+    if (!((edges >> e) & 1u)) continue;
     EdgeRef cur{h, e};
     int exit = tables::facesOfEdge(e)[0];
     for (;;) {
@@ -47,8 +65,6 @@ bool nearBoundary(const Complex& cx, HexId h) {
   }
   return false;
 }
-
-}  // namespace
 
 void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& touched,
                                 std::vector<ShareChange>* changes) {
@@ -88,7 +104,7 @@ void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& tou
       const EdgeRef least = *std::min_element(inc.begin(), inc.end());
       for (EdgeRef r : inc) {
         if (!walked_[size_t(r.hex)]) met.push_back(r.hex);
-        walked_[size_t(r.hex)] |= uint16_t((1u << r.edge) | (closed ? 0u : kWalkedFan));
+        walked_[size_t(r.hex)] |= uint16_t((1u << r.edge) | (closed ? 0u : walkedFan(r.edge)));
         const uint16_t bit = uint16_t(1u << r.edge);
         if (((edgeMarks_[size_t(r.hex)] & bit) != 0) != (r == least)) {
           edgeMarks_[size_t(r.hex)] ^= bit;
@@ -97,13 +113,11 @@ void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& tou
       }
     }
   }
-  // Only an edge through a touched hex can have reached or left the boundary: a hex met is near
-  // it when one of those is a fan now, or (when it was near before) one of its other edges is.
+  // Only an edge through a touched hex can have reached or left the boundary (nearBits).
   if (fan || nearBefore)
     for (HexId m : met) {
-      const bool near =
-          (walked_[size_t(m)] & kWalkedFan) || ((edgeMarks_[size_t(m)] & kNearBoundary) && nearBoundary(cx, m));
-      edgeMarks_[size_t(m)] = uint16_t((edgeMarks_[size_t(m)] & ~kNearBoundary) | (near ? kNearBoundary : 0));
+      const uint16_t marks = edgeMarks_[size_t(m)];
+      edgeMarks_[size_t(m)] = uint16_t((marks & ~(kNearBoundary | kAxesNearBoundary)) | nearBits(cx, m, marks, walked_[size_t(m)]));
     }
   for (HexId m : met) walked_[size_t(m)] = 0;
   for (Slot s : dirty) {
@@ -114,14 +128,6 @@ void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& tou
       old = now;
     }
   }
-}
-
-bool DualTracker::touchesBoundary(const Complex& cx, const std::vector<HexId>& touched) const {
-  for (HexId h : touched)
-    if (edgeMarks_[size_t(h)] & kNearBoundary) return true;
-  for (HexId h : touched)
-    if (cx.isHex(h) && nearBoundary(cx, h)) return true;
-  return false;
 }
 
 // ---- invariants ----
@@ -138,7 +144,7 @@ void DualTracker::checkShares(const Complex& cx) const {
         bool closed = false;
         inc = cx.edgeCycle({h, e}, &closed);  // (not edgeIncidences: refreshShares stays its one caller, inlined)
         if (*std::min_element(inc.begin(), inc.end()) == EdgeRef{h, e}) marks |= uint16_t(1u << e);
-        if (!closed) marks |= kNearBoundary;
+        if (!closed) marks |= uint16_t(kNearBoundary | kEdgeAxisNearBoundary(tables::axisOfEdge(e)));
       }
     }
     if (edgeMarks_[size_t(h)] != marks)

@@ -1,5 +1,5 @@
-// Sheet update when neither the topology-kept update nor the lockstep flood applies (edits near
-// the boundary, non-orientable sheets, states the lockstep cannot follow): every old sheet through
+// Sheet update when neither the topology-kept update nor the lockstep flood applies
+// (non-orientable sheets, states the lockstep cannot follow): every old sheet through
 // the touched hexes is re-flooded whole (relabel), its labels freed and new ones given, ids kept
 // by the smallest-old-id rule. It costs the touched sheets whole; lastUpdateReflooded() says so.
 // Owns nothing between updates.

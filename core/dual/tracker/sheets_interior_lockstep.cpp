@@ -1,8 +1,12 @@
-// Sheet update for an edit that may cut, merge or re-shape sheets, away from the boundary and on
-// orientable sheets: the lockstep flood (TK03 §4.4: a collapse cuts and re-glues sheets in one
-// place). update() runs it for every operation that does not keep sheet topology (and for a merge
-// the topology-kept update refused); it refuses, changing nothing, near the boundary, on a
-// non-orientable sheet, or when the edit is not one it can follow, and the reflood runs instead.
+// Sheet update for an edit that may cut, merge or re-shape sheets, on orientable sheets: the
+// lockstep flood (TK03 §4.4: a collapse cuts and re-glues sheets in one place). update() runs it
+// for every operation that does not keep sheet topology (and for a merge the topology-kept update
+// refused); it refuses, changing nothing, on a non-orientable sheet, or when the edit is not one it
+// can follow, and the reflood runs instead. Near the boundary an edit can re-join a sheet's
+// boundary loops, which a remainder cannot count without walking them: the groups that meet a
+// sheet the edit touched near the boundary (or hold a new slot there) never pause, so they become
+// pieces, flooded and measured whole; the other sheets (e.g. the sheets a column collapse crosses,
+// which each lose a quad in their interior) still settle where the edit left them.
 // Owns nothing between updates; marks front_ while it runs (cleared before it returns).
 #include <algorithm>
 
@@ -40,9 +44,12 @@ struct DualTracker::Lockstep {
   size_t unfinished = 0;
   bool foreign = false;  // reached a sheet not through the touched hexes: an edit not logged whole
   std::vector<uint8_t> paused;
+  std::vector<uint8_t> nearOld;  // per old sheet: a slot of it in a touched hex near the boundary, before or after
+  std::vector<uint8_t> nearNew;  // per front: its group holds a new slot of a touched hex near the boundary
   std::vector<int32_t> owner, sharers;  // per old sheet: the unfinished group meeting it, and how many do
 
   bool applies() const;
+  void markNearBoundary();
   void startFronts();
   void floodUntilSettled();
   // The flood's hot steps, defined here (inline): a group's root; front f reaches slot s.
@@ -112,6 +119,7 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
   Lockstep ls(*this, cx, touched);
   if (!ls.applies()) return false;
   ls.startFronts();
+  ls.markNearBoundary();
   ls.floodUntilSettled();
   if (ls.foreign || !ls.splitPiecesFromRemainders() || !ls.orientRemainders()) {
     ls.clearFronts();
@@ -139,11 +147,40 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
 
 // ---- explore ----
 
-// Orientable sheets away from the boundary: the shares and orientations it reads are exact there.
+// Orientable sheets: the orientations it reads are exact there.
 bool DualTracker::Lockstep::applies() const {
   for (int32_t id : old)
     if (!t.dual_.sheets[size_t(id)].orientable) return false;
-  return !t.touchesBoundary(cx, touched);
+  return true;
+}
+
+// A sheet's boundary loops run through its slots' boundary sides and boundary edges (the sheet
+// crossing an edge has a slot in every hex round it), so the edit can re-join them only at an
+// edge whose cycle it changed (the faces glued or unglued are the faces through such edges) and
+// that reaches the boundary before or after it: in a removed hex, an axis with an edge near the
+// boundary before (the edge marks still hold it); in a live touched hex, an axis with a changed
+// edge, near the boundary before or now. Those slots' old sheets, and the fronts of such new
+// slots, are marked: their groups are flooded until finished.
+void DualTracker::Lockstep::markNearBoundary() {
+  nearOld.assign(old.size(), 0);
+  nearNew.assign(parent.size(), 0);
+  const bool known = t.edgesToWalk_.size() == touched.size();
+  size_t f = 0;  // fronts were started per live touched slot, in this order
+  for (size_t i = 0; i < touched.size(); ++i) {
+    const HexId h = touched[i];
+    const uint16_t before = t.edgeMarks_[size_t(h)];
+    const bool live = cx.isHex(h);
+    for (int a = 0; a < 3; ++a, f += live) {
+      const unsigned changed = live ? ((known ? t.edgesToWalk_[i] : 0xFFFu) >> (4 * a)) & 0xFu : 0xFu;
+      if (!changed || !((before & kEdgeAxisNearBoundary(a)) || (live && edgesNear(cx, h, changed << (4 * a)))))
+        continue;
+      const int32_t id = label({h, a});
+      if (id >= 0)
+        nearOld[oldIndex(id)] = 1;
+      else if (live)
+        nearNew[f] = 1;
+    }
+  }
 }
 
 void DualTracker::Lockstep::unite(int32_t a, int32_t b) {
@@ -153,6 +190,7 @@ void DualTracker::Lockstep::unite(int32_t a, int32_t b) {
   if (b < a) std::swap(a, b);
   if (active[size_t(a)] && active[size_t(b)]) --unfinished;
   parent[size_t(b)] = a;
+  nearNew[size_t(a)] |= nearNew[size_t(b)];
   if (size_t(a) < paused.size()) paused[size_t(a)] = 0;
   active[size_t(a)] += active[size_t(b)];
   for (int32_t id : meets[size_t(b)])
@@ -209,7 +247,8 @@ void DualTracker::Lockstep::floodUntilSettled() {
 }
 
 // A group pauses when every old sheet it has met meets no other unfinished group: it then is the
-// rest of those sheets (a group joined to it later resumes it). Settled when all have paused.
+// rest of those sheets (a group joined to it later resumes it). Settled when all have paused. A
+// group marked near the boundary (markNearBoundary) never pauses: it runs until it is a piece.
 bool DualTracker::Lockstep::settled() {
   std::fill(owner.begin(), owner.end(), -1);
   std::fill(sharers.begin(), sharers.end(), 0);
@@ -224,8 +263,8 @@ bool DualTracker::Lockstep::settled() {
   bool all = true;
   for (size_t f = 0; f < parent.size(); ++f) {
     if (parent[f] != int32_t(f) || !active[f]) continue;
-    bool alone = !meets[f].empty();
-    for (int32_t id : meets[f]) alone = alone && sharers[oldIndex(id)] == 1;
+    bool alone = !meets[f].empty() && !nearNew[f];
+    for (int32_t id : meets[f]) alone = alone && sharers[oldIndex(id)] == 1 && !nearOld[oldIndex(id)];
     paused[f] = alone;
     all = all && alone;
   }

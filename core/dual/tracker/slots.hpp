@@ -34,6 +34,10 @@ inline bool sheetNeighbour(const Complex& cx, Slot s, int f, Slot& n, int& flip)
   return true;
 }
 
+// Whether one of h's edges marked in `edges` (bit e: edge e) reaches the boundary (its cycle is a
+// fan); h live (tracker/shares.cpp).
+bool edgesNear(const Complex& cx, HexId h, unsigned edges);
+
 // For checkInvariants: a slot named as in messages, and the error naming a broken invariant.
 inline std::string slotName(Slot s) { return "h" + std::to_string(s.hex) + " axis " + std::to_string(s.axis); }
 [[noreturn]] inline void invariantBroken(const std::string& what) { throw Error("dual tracker invariant: " + what); }
