@@ -2,7 +2,8 @@
 // candidate steps of every kind on the given meshes, how many leave a regular hex (not degenerate
 // by construction) newly inverted, with the smoothing off (the operations' own placement,
 // measured) and on; and what the smoothing costs per step, by kind, on grids of two sizes.
-//   hexdual_bench_geometry [--steps N] [--seed S] [--cost-only] [--no-cost] FILE|grid:N|ring:A,R,Z ...
+//   hexdual_bench_geometry [--steps N] [--seed S] [--cost-only] [--no-cost] [--list] FILE|grid:N|ring:A,R,Z ...
+// (--list: prints each step the smoothing leaves with a newly inverted hex that is not certified.)
 // An inverse kind (unpillow, chordpull, hexpull, ringsplit, facesplit) has no candidates on a
 // fresh mesh: its steps are the reported inverses of random steps of the kind before it, which
 // are applied first (smoothed).
@@ -111,6 +112,8 @@ struct Tally {
   int64_t evaluations = 0, maxEvaluations = 0;
 };
 
+bool gList = false;  // --list: print each smoothed step that leaves an uncertified newly inverted hex
+
 void measureStep(Complex& cx, const Sample& s, Tally& t) {
   std::set<VertexId> boundary;
   for (const auto& q : cx.boundaryQuads()) boundary.insert(q.vertices.begin(), q.vertices.end());
@@ -121,6 +124,13 @@ void measureStep(Complex& cx, const Sample& s, Tally& t) {
   OpResult off = applyStep(cx, s.step, kMeasure);
   cx.undo(off.edits);
   OpResult on = applyStep(cx, s.step, kSmoothStep);
+  if (gList && newlyInverted(on.quality, before) > 0 && on.quality.pinned.size() != on.quality.inverted.size()) {
+    std::string setup;
+    for (const OpStep& st : s.setup) setup += formatOpStep(st) + ";";
+    std::printf("    uncertified: %s%s  inverted %zu pinned %zu rings %d kept %d\n", setup.c_str(),
+                formatOpStep(s.step).c_str(), on.quality.inverted.size(), on.quality.pinned.size(), on.quality.rings,
+                int(on.quality.kept));
+  }
   cx.undo(on.edits);
   for (auto it = undo.rbegin(); it != undo.rend(); ++it) cx.undo(*it);
   ++t.steps;
@@ -234,6 +244,8 @@ int main(int argc, char** argv) {
       samples = false;
     else if (a == "--no-cost")
       costs = false;
+    else if (a == "--list")
+      gList = true;
     else
       files.push_back(a);
   }

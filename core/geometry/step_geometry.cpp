@@ -2,25 +2,34 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 #include "dual/dual_tracker.hpp"
+#include "geometry/boundary_slide.hpp"
 #include "geometry/degenerate.hpp"
 #include "geometry/pinned.hpp"
 #include "geometry/scaled_jacobian.hpp"
 #include "geometry/smoothing.hpp"
+#include "geometry/step_before.hpp"
 
 namespace hexdual {
 
 namespace {
 
-// The movable vertices at the corners of `hexes`, each once (ascending), with a corner.
-std::vector<FreeVertex> interiorCorners(const Complex& cx, const std::vector<HexId>& hexes) {
+// The movable vertices at the corners of `hexes`, each once (ascending), with a corner: interior
+// manifold ones, and with `slide` boundary ones inside a flat patch (moving within its plane).
+std::vector<FreeVertex> movableCorners(const Complex& cx, const std::vector<HexId>& hexes, bool slide) {
   std::map<VertexId, std::pair<HexId, int>> seen;
   for (HexId h : hexes)
     for (int c = 0; c < 8; ++c) seen.emplace(cx.vertex(h, c), std::pair{h, c});
   std::vector<FreeVertex> out;
-  for (auto [v, hc] : seen)
-    if (!pinnedVertex(cx, hc.first, hc.second)) out.push_back({v, hc.first, hc.second});
+  for (auto [v, hc] : seen) {
+    if (!pinnedVertex(cx, hc.first, hc.second)) {
+      out.push_back({v, hc.first, hc.second});
+    } else if (slide) {
+      if (auto t = flatPatchTangents(cx, hc.first, hc.second)) out.push_back({v, hc.first, hc.second, true, *t});
+    }
+  }
   return out;
 }
 
@@ -60,12 +69,13 @@ std::vector<HexId> reshapedByStep(const Complex& cx, const Complex::EditLog& log
   return out;
 }
 
-// The positions one ring of the smoothing reached, and what it left inverted.
+// The positions one ring of the smoothing reached, and what it left newly inverted.
 struct RingResult {
-  int ring = 0;
+  int ring = -1;  // -1: the operation's own placement (no moves)
   std::vector<std::pair<VertexId, Vec3>> moves;
   std::vector<HexId> around;    // the hexes around its free vertices, and the step's
   std::vector<HexId> inverted;  // regular hexes among `around` left inverted (and not inverted before the step)
+  int slid = 0;                 // of the moves: boundary vertices that slid within their flat patch
 };
 
 // Every hex with a vertex of one of `hexes` (ascending): beyond them, the step changed neither
@@ -79,40 +89,42 @@ std::vector<HexId> nearHexes(const Complex& cx, const std::vector<HexId>& hexes)
 }
 
 // Smooths the interior vertices of `hexes` (undone by cx.undo(edits)); `alive`: the live hexes
-// the step touched; `near`: nearHexes(alive). Hexes not near that are inverted before the
-// smoothing were inverted and regular before the step (the smoothing keeps their corners from
-// getting lower): not counted.
+// the step touched; `near`: nearHexes(alive) (hexes not near that are inverted now were inverted
+// and regular before the step: the smoothing keeps their corners from getting lower).
 RingResult smoothRing(Complex& cx, const std::vector<HexId>& hexes, const std::vector<HexId>& alive,
-                      const std::vector<HexId>& near, Complex::EditLog& edits, StepQuality& q) {
+                      const std::vector<HexId>& near, const StepBefore& before, Complex::EditLog& edits,
+                      StepQuality& q, bool slide) {
   RingResult res;
-  const std::vector<FreeVertex> free = interiorCorners(cx, hexes);
+  const std::vector<FreeVertex> free = movableCorners(cx, hexes, slide);
   res.around = merged(hexesAround(cx, free), alive);
-  std::vector<HexId> already;
-  for (HexId h : invertedRegular(cx, res.around))
-    if (!std::binary_search(near.begin(), near.end(), h)) already.push_back(h);
+  std::vector<HexId> already;  // (`before` reads positions from cx: ask it before the smoothing moves any)
+  for (HexId h : res.around)
+    if (cx.isHex(h) && before.invertedBefore(cx, h)) already.push_back(h);
   cx.beginTransaction();
   const SmoothingStats st = smoothVertices(cx, free, near, kStepEvaluationBudget - q.evaluations);
   edits = cx.commitTransaction();
   q.evaluations += st.evaluations;
   for (VertexId v : st.moved) res.moves.push_back({v, cx.position(v)});
+  for (const FreeVertex& f : free)
+    res.slid += f.slides && std::binary_search(st.moved.begin(), st.moved.end(), f.vertex);
   for (HexId h : invertedRegular(cx, res.around))
     if (!std::binary_search(already.begin(), already.end(), h)) res.inverted.push_back(h);
   return res;
 }
 
 // The interior vertices of the hexes the step placed, then (while a regular hex around them or
-// touched by the step stays inverted and not every such hex is pinned) those of the hexes around
-// them, ring by ring. Each ring starts again from the operation's own placement (a wider region
-// is a new, larger problem); the ring leaving the fewest regular hexes inverted wins, the
-// narrowest on ties. Its moves join `log`; returns the hexes around its free vertices.
-std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vector<HexId>& alive, StepQuality& q) {
+// touched by the step is newly inverted and not every such hex is pinned) those of the hexes
+// around them, ring by ring. Each ring starts again from the operation's own placement (a wider
+// region is a new, larger problem); the ring leaving the fewest regular hexes newly inverted wins,
+// the narrowest on ties. Leaves cx at the operation's placement.
+RingResult fixedBoundaryRings(Complex& cx, const Complex::EditLog& log, const std::vector<HexId>& alive,
+                              const std::vector<HexId>& near, const StepBefore& before, StepQuality& q) {
   std::vector<HexId> hexes = reshapedByStep(cx, log);
-  const std::vector<HexId> near = nearHexes(cx, alive);
   RingResult best;
   Complex::EditLog edits;
   for (int ring = 0;; ++ring) {
     if (ring > 0) cx.undo(edits);
-    RingResult res = smoothRing(cx, hexes, alive, near, edits, q);
+    RingResult res = smoothRing(cx, hexes, alive, near, before, edits, q, false);
     res.ring = ring;
     if (ring == 0 || res.inverted.size() < best.inverted.size()) best = res;
     if (res.inverted.empty() || ring == kWideningRings || q.evaluations >= kStepEvaluationBudget) break;
@@ -120,13 +132,49 @@ std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vec
     hexes = res.around;
   }
   cx.undo(edits);
+  return best;
+}
+
+// When the boundary held fixed leaves hexes newly inverted: again from the operation's placement,
+// the boundary vertices inside flat patches free to slide in their planes (boundary_slide.hpp),
+// over the hexes the step placed, then over those around them. The first that leaves no regular
+// hex newly inverted, if any. Leaves cx at the operation's placement.
+std::optional<RingResult> slidingBoundary(Complex& cx, const Complex::EditLog& log, const std::vector<HexId>& alive,
+                                          const std::vector<HexId>& near, const StepBefore& before, StepQuality& q) {
+  std::vector<HexId> hexes = reshapedByStep(cx, log);
+  for (int ring = 0; ring < 2 && q.evaluations < kStepEvaluationBudget; ++ring) {
+    Complex::EditLog edits;
+    RingResult res = smoothRing(cx, hexes, alive, near, before, edits, q, true);
+    cx.undo(edits);
+    res.ring = ring;
+    if (res.inverted.empty()) return res;
+    hexes = res.around;
+  }
+  return std::nullopt;
+}
+
+// Places the step's vertices: the fixed-boundary rings, the sliding boundary when they leave a
+// hex newly inverted, and the operation's own placement when it leaves fewer newly inverted than
+// either (never worse than no smoothing: on a mesh tangled already the untangling can trade
+// inversions the step did not make for new ones). Its moves join `log`; returns the hexes around
+// its free vertices.
+std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vector<HexId>& alive,
+                              const StepBefore& before, StepQuality& q) {
+  const std::vector<HexId> near = nearHexes(cx, alive);
+  const int unsmoothed = before.newlyInverted(cx, near);
+  RingResult best = fixedBoundaryRings(cx, log, alive, near, before, q);
+  if (!best.inverted.empty())
+    if (std::optional<RingResult> slid = slidingBoundary(cx, log, alive, near, before, q)) best = *slid;
+  if (unsmoothed < int(best.inverted.size())) best = RingResult{-1, {}, alive, {}, 0};
   cx.beginTransaction();
   for (auto [v, p] : best.moves) cx.setPosition(v, p);
   const Complex::EditLog moves = cx.commitTransaction();
   log.edits.insert(log.edits.end(), moves.edits.begin(), moves.edits.end());
   q.moved.clear();
   for (auto [v, p] : best.moves) q.moved.push_back(v);
-  q.rings = best.ring;
+  q.rings = std::max(best.ring, 0);
+  q.kept = best.ring < 0;
+  q.slid = best.slid;
   return best.around;
 }
 
@@ -142,33 +190,11 @@ std::vector<HexId> reshaped(const Complex& cx, const std::vector<HexId>& region,
   return out;
 }
 
-// Each touched hex's corners before the operation (replaying its SetCorner edits backwards); hexes
-// it added are left out.
-std::map<HexId, std::array<VertexId, 8>> cornersBefore(const Complex& cx, const Complex::EditLog& log,
-                                                       const std::vector<HexId>& touched) {
-  std::map<HexId, std::array<VertexId, 8>> out;
-  for (HexId h : touched) out[h] = cx.hexVertices(h);
-  for (auto it = log.edits.rbegin(); it != log.edits.rend(); ++it) {
-    if (it->kind == Complex::Edit::AddHex) out.erase(it->hex);
-    if (it->kind == Complex::Edit::SetCorner && out.count(it->hex))
-      out[it->hex][size_t(it->face)] = VertexId(it->value);
-  }
-  return out;
-}
-
 // Measures `measured` (the touched hexes and those the smoothing reshaped) before and after.
-void measure(const Complex& cx, const Complex::EditLog& log, const std::vector<HexId>& measured, StepQuality& q) {
-  std::map<VertexId, Vec3> original;  // positions before the smoothing: the first recorded of each vertex
-  for (const Complex::Edit& e : log.edits)
-    if (e.kind == Complex::Edit::SetPosition) original.emplace(e.hex, e.pos);
-  auto pos = [&](VertexId v) {
-    auto it = original.find(v);
-    return it != original.end() ? it->second : cx.position(v);
-  };
-  for (const auto& [h, corners] : cornersBefore(cx, log, measured)) {
-    std::array<Vec3, 8> p;
-    for (size_t c = 0; c < 8; ++c) p[c] = pos(corners[c]);
-    q.before = std::min(q.before, scaledJacobian(p));
+void measure(const Complex& cx, const StepBefore& before, const std::vector<HexId>& measured, StepQuality& q) {
+  for (HexId h : measured) {
+    double sj = 1;
+    if (before.scaledJacobianBefore(cx, h, sj)) q.before = std::min(q.before, sj);
   }
   for (HexId h : measured) {
     if (!cx.isHex(h)) continue;
@@ -196,10 +222,10 @@ StepQuality placeStepGeometry(Complex& cx, Complex::EditLog& log, StepGeometry m
     if (cx.isHex(h)) alive.push_back(h);
   std::vector<HexId> measured = touched;
   if (mode == StepGeometry::Smooth) {
-    measured = merged(reshaped(cx, smoothStep(cx, log, alive, q), q.moved), touched);
+    measured = merged(reshaped(cx, smoothStep(cx, log, alive, StepBefore(cx, log, touched), q), q.moved), touched);
     q.smoothed = true;
   }
-  measure(cx, log, measured, q);
+  measure(cx, StepBefore(cx, log, touched), measured, q);  // `log` now holds the smoothing's moves too
   return q;
 }
 

@@ -107,13 +107,17 @@ std::string stepQualityJson(const StepQuality& q) {
 std::string stepQualityText(const StepQuality& q) {
   if (!q.measured) return "";
   std::string text = "  quality: min scaled Jacobian " + number(q.before) + " -> " + number(q.after);
-  if (q.smoothed)
+  if (q.kept)
+    text += " (smoothing kept the operation's placement: it left fewer hexes newly inverted)";
+  else if (q.smoothed)
     text += " (smoothed, " + std::to_string(q.moved.size()) + " vertices moved" +
+            (q.slid ? " (" + std::to_string(q.slid) + " on the boundary, within its flat patch)" : "") +
             (q.rings ? ", region widened " + std::to_string(q.rings) + (q.rings == 1 ? " ring" : " rings") : "") + ")";
   else
     text += " (not smoothed)";
   if (!q.inverted.empty()) text += "; inverted " + idList(q.inverted);
-  if (!q.pinned.empty()) text += " (pinned by the boundary: " + idList(q.pinned) + ")";
+  if (!q.pinned.empty())
+    text += " (pinned by the boundary: " + idList(q.pinned) + ", proved: no placement with the boundary fixed makes them valid)";
   if (!q.degenerate.empty()) text += "; degenerate by construction " + idList(q.degenerate) + ", min of the others " + number(q.afterRegular);
   return text + "\n";
 }
