@@ -76,32 +76,6 @@ bool hessian(SmoothingRegion& r, size_t i, Vec3 p, Vec3 g, double delta2, double
   return true;
 }
 
-// v within free vertex i's plane when it slides (boundary_slide.hpp), else v.
-Vec3 tangential(const SmoothingRegion& r, size_t i, Vec3 v) {
-  if (!r.slides[i]) return v;
-  const auto& t = r.tangents[i];
-  return dot(v, t[0]) * t[0] + dot(v, t[1]) * t[1];
-}
-
-// The Newton direction of a sliding vertex: the Hessian and gradient in its plane's coordinates
-// (the third coordinate, along the normal, decoupled so the direction has none).
-bool tangentialNewtonDirection(const SmoothingRegion& r, size_t i, const double h[3][3], Vec3 g, Vec3& dir) {
-  const auto& t = r.tangents[i];
-  double h2[3][3] = {};
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b) {
-      const Vec3 col{h[0][0] * t[b].x + h[0][1] * t[b].y + h[0][2] * t[b].z,
-                     h[1][0] * t[b].x + h[1][1] * t[b].y + h[1][2] * t[b].z,
-                     h[2][0] * t[b].x + h[2][1] * t[b].y + h[2][2] * t[b].z};
-      h2[a][b] = dot(t[a], col);
-    }
-  h2[2][2] = std::max({std::fabs(h2[0][0]), std::fabs(h2[1][1]), 1e-300});
-  Vec3 d2;
-  if (!newtonDirection(h2, Vec3{dot(g, t[0]), dot(g, t[1]), 0}, d2)) return false;
-  dir = d2.x * t[0] + d2.y * t[1];
-  return true;
-}
-
 // One damped Newton step of free vertex i (steepest descent when the Hessian is unusable), at most
 // one vertex scale long, backtracked until the energy falls enough. Returns the move / scale.
 double newtonStep(SmoothingRegion& r, size_t i, double delta2) {
@@ -110,14 +84,11 @@ double newtonStep(SmoothingRegion& r, size_t i, double delta2) {
   const Vec3 p = r.pos[i];
   Vec3 g;
   const double f0 = vertexEnergy(r, i, p, delta2, &g);
-  const Vec3 pg = tangential(r, i, g);
-  const double gn = std::sqrt(dot(pg, pg));
+  const double gn = std::sqrt(dot(g, g));
   if (!std::isfinite(f0) || gn == 0) return 0;
   double h[3][3];
   Vec3 dir;
-  const bool newton = hessian(r, i, p, g, delta2, h) &&
-                      (r.slides[i] ? tangentialNewtonDirection(r, i, h, g, dir) : newtonDirection(h, g, dir));
-  if (!newton || !(dot(g, dir) < 0)) dir = (-s / gn) * pg;
+  if (!hessian(r, i, p, g, delta2, h) || !newtonDirection(h, g, dir) || !(dot(g, dir) < 0)) dir = (-s / gn) * g;
   const double len = std::sqrt(dot(dir, dir));
   if (len > s) dir = (s / len) * dir;
   const double slope = dot(g, dir);
@@ -153,18 +124,6 @@ double minimumOf(const std::vector<AffineFunction>& fs, Vec3 p) {
   return m;
 }
 
-// Freitag-Plassmann's step of free vertex i: where the smallest of its corners' functions is
-// largest, within half its scale (within its plane when it slides).
-Vec3 maxMinPosition(const SmoothingRegion& r, size_t i, const std::vector<AffineFunction>& fs) {
-  const Vec3 p = r.pos[i];
-  if (!r.slides[i]) return maximiseMinimum(fs, p, 0.5 * r.scale[i]);
-  const auto& t = r.tangents[i];
-  std::vector<AffineFunction> plane;  // of (u, v, unused): p + u t0 + v t1
-  for (const AffineFunction& f : fs) plane.push_back({Vec3{dot(f.g, t[0]), dot(f.g, t[1]), 0}, dot(f.g, p) + f.h});
-  const Vec3 uv = maximiseMinimum(plane, Vec3{}, 0.5 * r.scale[i]);
-  return p + uv.x * t[0] + uv.y * t[1];
-}
-
 // Freitag-Plassmann sweeps: each free vertex in turn to where the smallest (scaled) determinant
 // of its corners is largest, within half its scale; until every corner in the energy is positive,
 // a sweep gains nothing, or kMaxUntangleSweeps.
@@ -174,7 +133,7 @@ int untangle(SmoothingRegion& r) {
     bool gained = false;
     for (size_t i = 0; i < r.free.size(); ++i) {
       const std::vector<AffineFunction> fs = cornerFunctions(r, i);
-      const Vec3 q = maxMinPosition(r, i, fs);
+      const Vec3 q = maximiseMinimum(fs, r.pos[i], 0.5 * r.scale[i]);
       if (minimumOf(fs, q) > minimumOf(fs, r.pos[i]) + 1e-9 && keepsFloors(r, i, q)) r.pos[i] = q, gained = true;
     }
     ++n;

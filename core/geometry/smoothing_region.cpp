@@ -94,10 +94,7 @@ SmoothingRegion buildSmoothingRegion(const Complex& cx, const std::vector<FreeVe
                                      const std::vector<HexId>& near) {
   SmoothingRegion r;
   r.cx = &cx;
-  for (const FreeVertex& f : free) {
-    r.free.push_back(f.vertex), r.pos.push_back(cx.position(f.vertex));
-    r.slides.push_back(f.slides), r.tangents.push_back(f.tangents);
-  }
+  for (const FreeVertex& f : free) r.free.push_back(f.vertex), r.pos.push_back(cx.position(f.vertex));
   std::vector<std::vector<std::pair<HexId, int>>> stars;
   std::vector<HexId> around;
   for (const FreeVertex& f : free) {

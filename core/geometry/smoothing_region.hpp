@@ -16,8 +16,6 @@ struct FreeVertex {
   VertexId vertex;
   HexId hex;  // a hex with the vertex at `corner`: where the walk over its star starts
   int corner;
-  bool slides = false;              // a boundary vertex that moves only within its flat patch's plane
-  std::array<Vec3, 2> tangents{};   // that plane's orthonormal directions (boundary_slide.hpp)
 };
 
 struct SmoothingRegion {
@@ -25,8 +23,6 @@ struct SmoothingRegion {
   std::vector<VertexId> free;                   // ascending
   std::vector<Vec3> pos;                        // working positions, per free vertex
   std::vector<double> scale;                    // per free vertex: mean length of its edges at the start
-  std::vector<uint8_t> slides;                  // per free vertex: moves only along `tangents` (a flat boundary patch)
-  std::vector<std::array<Vec3, 2>> tangents;
   std::vector<HexId> hexIds;                    // the hexes that count, ascending
   std::vector<std::array<int32_t, 8>> corners;  // per such hex: free index (>= 0) or -1 - vertex id
   std::vector<uint8_t> counted;                 // per such hex: bit j = corner j is in the energy (not stuck,

@@ -2,10 +2,8 @@
 
 #include <algorithm>
 #include <map>
-#include <optional>
 
 #include "dual/dual_tracker.hpp"
-#include "geometry/boundary_slide.hpp"
 #include "geometry/degenerate.hpp"
 #include "geometry/pinned.hpp"
 #include "geometry/scaled_jacobian.hpp"
@@ -16,20 +14,14 @@ namespace hexdual {
 
 namespace {
 
-// The movable vertices at the corners of `hexes`, each once (ascending), with a corner: interior
-// manifold ones, and with `slide` boundary ones inside a flat patch (moving within its plane).
-std::vector<FreeVertex> movableCorners(const Complex& cx, const std::vector<HexId>& hexes, bool slide) {
+// The movable vertices at the corners of `hexes`, each once (ascending), with a corner.
+std::vector<FreeVertex> interiorCorners(const Complex& cx, const std::vector<HexId>& hexes) {
   std::map<VertexId, std::pair<HexId, int>> seen;
   for (HexId h : hexes)
     for (int c = 0; c < 8; ++c) seen.emplace(cx.vertex(h, c), std::pair{h, c});
   std::vector<FreeVertex> out;
-  for (auto [v, hc] : seen) {
-    if (!pinnedVertex(cx, hc.first, hc.second)) {
-      out.push_back({v, hc.first, hc.second});
-    } else if (slide) {
-      if (auto t = flatPatchTangents(cx, hc.first, hc.second)) out.push_back({v, hc.first, hc.second, true, *t});
-    }
-  }
+  for (auto [v, hc] : seen)
+    if (!pinnedVertex(cx, hc.first, hc.second)) out.push_back({v, hc.first, hc.second});
   return out;
 }
 
@@ -75,7 +67,6 @@ struct RingResult {
   std::vector<std::pair<VertexId, Vec3>> moves;
   std::vector<HexId> around;    // the hexes around its free vertices, and the step's
   std::vector<HexId> inverted;  // regular hexes among `around` left inverted (and not inverted before the step)
-  int slid = 0;                 // of the moves: boundary vertices that slid within their flat patch
 };
 
 // Every hex with a vertex of one of `hexes` (ascending): beyond them, the step changed neither
@@ -93,9 +84,9 @@ std::vector<HexId> nearHexes(const Complex& cx, const std::vector<HexId>& hexes)
 // and regular before the step: the smoothing keeps their corners from getting lower).
 RingResult smoothRing(Complex& cx, const std::vector<HexId>& hexes, const std::vector<HexId>& alive,
                       const std::vector<HexId>& near, const StepBefore& before, Complex::EditLog& edits,
-                      StepQuality& q, bool slide) {
+                      StepQuality& q) {
   RingResult res;
-  const std::vector<FreeVertex> free = movableCorners(cx, hexes, slide);
+  const std::vector<FreeVertex> free = interiorCorners(cx, hexes);
   res.around = merged(hexesAround(cx, free), alive);
   std::vector<HexId> already;  // (`before` reads positions from cx: ask it before the smoothing moves any)
   for (HexId h : res.around)
@@ -105,8 +96,6 @@ RingResult smoothRing(Complex& cx, const std::vector<HexId>& hexes, const std::v
   edits = cx.commitTransaction();
   q.evaluations += st.evaluations;
   for (VertexId v : st.moved) res.moves.push_back({v, cx.position(v)});
-  for (const FreeVertex& f : free)
-    res.slid += f.slides && std::binary_search(st.moved.begin(), st.moved.end(), f.vertex);
   for (HexId h : invertedRegular(cx, res.around))
     if (!std::binary_search(already.begin(), already.end(), h)) res.inverted.push_back(h);
   return res;
@@ -124,7 +113,7 @@ RingResult fixedBoundaryRings(Complex& cx, const Complex::EditLog& log, const st
   Complex::EditLog edits;
   for (int ring = 0;; ++ring) {
     if (ring > 0) cx.undo(edits);
-    RingResult res = smoothRing(cx, hexes, alive, near, before, edits, q, false);
+    RingResult res = smoothRing(cx, hexes, alive, near, before, edits, q);
     res.ring = ring;
     if (ring == 0 || res.inverted.size() < best.inverted.size()) best = res;
     if (res.inverted.empty() || ring == kWideningRings || q.evaluations >= kStepEvaluationBudget) break;
@@ -135,37 +124,16 @@ RingResult fixedBoundaryRings(Complex& cx, const Complex::EditLog& log, const st
   return best;
 }
 
-// When the boundary held fixed leaves hexes newly inverted: again from the operation's placement,
-// the boundary vertices inside flat patches free to slide in their planes (boundary_slide.hpp),
-// over the hexes the step placed, then over those around them. The first that leaves no regular
-// hex newly inverted, if any. Leaves cx at the operation's placement.
-std::optional<RingResult> slidingBoundary(Complex& cx, const Complex::EditLog& log, const std::vector<HexId>& alive,
-                                          const std::vector<HexId>& near, const StepBefore& before, StepQuality& q) {
-  std::vector<HexId> hexes = reshapedByStep(cx, log);
-  for (int ring = 0; ring < 2 && q.evaluations < kStepEvaluationBudget; ++ring) {
-    Complex::EditLog edits;
-    RingResult res = smoothRing(cx, hexes, alive, near, before, edits, q, true);
-    cx.undo(edits);
-    res.ring = ring;
-    if (res.inverted.empty()) return res;
-    hexes = res.around;
-  }
-  return std::nullopt;
-}
-
-// Places the step's vertices: the fixed-boundary rings, the sliding boundary when they leave a
-// hex newly inverted, and the operation's own placement when it leaves fewer newly inverted than
-// either (never worse than no smoothing: on a mesh tangled already the untangling can trade
-// inversions the step did not make for new ones). Its moves join `log`; returns the hexes around
-// its free vertices.
+// Places the step's vertices by the fixed-boundary rings, or keeps the operation's own placement
+// when it leaves fewer regular hexes newly inverted (never worse than no smoothing: on a mesh
+// tangled already the untangling can trade inversions the step did not make for new ones). Its
+// moves join `log`; returns the hexes around its free vertices.
 std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vector<HexId>& alive,
                               const StepBefore& before, StepQuality& q) {
   const std::vector<HexId> near = nearHexes(cx, alive);
   const int unsmoothed = before.newlyInverted(cx, near);
   RingResult best = fixedBoundaryRings(cx, log, alive, near, before, q);
-  if (!best.inverted.empty())
-    if (std::optional<RingResult> slid = slidingBoundary(cx, log, alive, near, before, q)) best = *slid;
-  if (unsmoothed < int(best.inverted.size())) best = RingResult{-1, {}, alive, {}, 0};
+  if (unsmoothed < int(best.inverted.size())) best = RingResult{-1, {}, alive, {}};
   cx.beginTransaction();
   for (auto [v, p] : best.moves) cx.setPosition(v, p);
   const Complex::EditLog moves = cx.commitTransaction();
@@ -174,7 +142,6 @@ std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vec
   for (auto [v, p] : best.moves) q.moved.push_back(v);
   q.rings = std::max(best.ring, 0);
   q.kept = best.ring < 0;
-  q.slid = best.slid;
   return best.around;
 }
 

@@ -111,7 +111,6 @@ std::string stepQualityText(const StepQuality& q) {
     text += " (smoothing kept the operation's placement: it left fewer hexes newly inverted)";
   else if (q.smoothed)
     text += " (smoothed, " + std::to_string(q.moved.size()) + " vertices moved" +
-            (q.slid ? " (" + std::to_string(q.slid) + " on the boundary, within its flat patch)" : "") +
             (q.rings ? ", region widened " + std::to_string(q.rings) + (q.rings == 1 ? " ring" : " rings") : "") + ")";
   else
     text += " (not smoothed)";
