@@ -100,6 +100,7 @@ std::string stepQualityJson(const StepQuality& q) {
   w.beginObject().key("smoothed").value(q.smoothed).key("before").value(q.before).key("after").value(q.after);
   w.key("afterRegular").value(q.afterRegular).key("inverted").raw(idList(q.inverted)).key("pinned").raw(idList(q.pinned));
   w.key("degenerate").raw(idList(q.degenerate)).key("moved").raw(idList(q.moved)).key("rings").value(int64_t(q.rings));
+  w.key("kept").value(q.kept);
   w.key("evaluations").value(q.evaluations);
   return w.endObject().str();
 }
