@@ -117,7 +117,7 @@ std::string stepQualityText(const StepQuality& q) {
     text += " (not smoothed)";
   if (!q.inverted.empty()) text += "; inverted " + idList(q.inverted);
   if (!q.pinned.empty())
-    text += " (pinned by the boundary: " + idList(q.pinned) + ", proved: no placement with the boundary fixed makes them valid)";
+    text += " (pinned by the boundary: " + idList(q.pinned) + ", proved: no placement with the boundary fixed makes every hex here valid)";
   if (!q.degenerate.empty()) text += "; degenerate by construction " + idList(q.degenerate) + ", min of the others " + number(q.afterRegular);
   return text + "\n";
 }
