@@ -8,7 +8,7 @@ namespace hexdual {
 // Replays the SetCorner edits backwards for the touched hexes (removed ones too); a hex added by
 // the step has no corners before it.
 StepBefore::StepBefore(const Complex& cx, const Complex::EditLog& log, const std::vector<HexId>& touched) {
-  for (HexId h : touched) corners_[h] = cx.hexVertices(h);
+  for (HexId h : touched) corners_[h] = cx.hexVertices(h), touched_.insert(h);
   for (auto it = log.edits.rbegin(); it != log.edits.rend(); ++it) {
     if (it->kind == Complex::Edit::AddHex && corners_.erase(it->hex)) added_.insert(it->hex);
     if (it->kind == Complex::Edit::SetCorner && corners_.count(it->hex))

@@ -21,13 +21,18 @@ class StepBefore {
   bool scaledJacobianBefore(const Complex& cx, HexId h, double& out) const;
   // Whether live hex h existed before the step with scaled Jacobian <= 0.
   bool invertedBefore(const Complex& cx, HexId h) const;
-  // Regular hexes (not degenerate by construction) of `hexes` inverted now and not before the step.
+  // Whether the step touched hex h. Whether a touched hex was degenerate by construction before
+  // (inverted but not counted then, counted now: a face split's hexes) is not known from its shape.
+  bool touched(HexId h) const { return touched_.count(h) > 0; }
+  // Regular hexes (not degenerate by construction) of `hexes` inverted now and not before the step
+  // (invertedBefore).
   int newlyInverted(const Complex& cx, const std::vector<HexId>& hexes) const;
 
  private:
   Vec3 position(const Complex& cx, VertexId v) const;
   std::map<HexId, std::array<VertexId, 8>> corners_;  // touched hexes: their corners before the step
   std::set<HexId> added_;                             // hexes the step added (alive now)
+  std::set<HexId> touched_;
   std::map<VertexId, Vec3> positions_;                // vertices the edits moved: their first recorded position
 };
 

@@ -88,9 +88,11 @@ RingResult smoothRing(Complex& cx, const std::vector<HexId>& hexes, const std::v
   RingResult res;
   const std::vector<FreeVertex> free = interiorCorners(cx, hexes);
   res.around = merged(hexesAround(cx, free), alive);
-  std::vector<HexId> already;  // (`before` reads positions from cx: ask it before the smoothing moves any)
+  // Inverted before the step and not touched by it (a touched one may have been degenerate then:
+  // the smoothing tries to untangle it). `before` reads positions from cx: asked before any move.
+  std::vector<HexId> already;
   for (HexId h : res.around)
-    if (cx.isHex(h) && before.invertedBefore(cx, h)) already.push_back(h);
+    if (cx.isHex(h) && !before.touched(h) && before.invertedBefore(cx, h)) already.push_back(h);
   cx.beginTransaction();
   const SmoothingStats st = smoothVertices(cx, free, near, kStepEvaluationBudget - q.evaluations);
   edits = cx.commitTransaction();
@@ -133,7 +135,9 @@ std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vec
   const std::vector<HexId> near = nearHexes(cx, alive);
   const int unsmoothed = before.newlyInverted(cx, near);
   RingResult best = fixedBoundaryRings(cx, log, alive, near, before, q);
-  if (unsmoothed < int(best.inverted.size())) best = RingResult{-1, {}, alive, {}};
+  const auto newly = [&](HexId h) { return !before.invertedBefore(cx, h); };  // (cx is at the operation's placement)
+  if (unsmoothed < std::count_if(best.inverted.begin(), best.inverted.end(), newly))
+    best = RingResult{-1, {}, alive, {}};
   cx.beginTransaction();
   for (auto [v, p] : best.moves) cx.setPosition(v, p);
   const Complex::EditLog moves = cx.commitTransaction();
