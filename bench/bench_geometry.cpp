@@ -2,7 +2,9 @@
 // candidate steps of every kind on the given meshes, how many leave a regular hex (not degenerate
 // by construction) newly inverted, with the smoothing off (the operations' own placement,
 // measured) and on; and what the smoothing costs per step, by kind, on grids of two sizes.
-//   hexdual_bench_geometry [--steps N] [--seed S] [--cost-only] [--no-cost] FILE|grid:N|ring:A,R,Z ...
+//   hexdual_bench_geometry [--steps N] [--seed S] [--cost-only] [--no-cost] [--list] FILE|grid:N|ring:A,R,Z ...
+// (--list: prints each step the smoothing leaves with a newly inverted hex that is not certified;
+// --kind NAME: that kind only.)
 // An inverse kind (unpillow, chordpull, hexpull, ringsplit, facesplit) has no candidates on a
 // fresh mesh: its steps are the reported inverses of random steps of the kind before it, which
 // are applied first (smoothed).
@@ -106,10 +108,13 @@ bool namesBoundary(const Complex& cx, const OpStep& st, const std::set<VertexId>
 }
 
 struct Tally {
-  int steps = 0, off = 0, on = 0, onPinned = 0, onBoundary = 0, degenerate = 0, widened = 0;
+  int steps = 0, off = 0, on = 0, onPinned = 0, onBoundary = 0, degenerate = 0, widened = 0, kept = 0;
   double worstOff = 1, worstOn = 1;
   int64_t evaluations = 0, maxEvaluations = 0;
 };
+
+bool gList = false;
+std::string gKind;  // --kind NAME: only that kind (and, for an inverse kind, its forward steps)  // --list: print each smoothed step that leaves an uncertified newly inverted hex
 
 void measureStep(Complex& cx, const Sample& s, Tally& t) {
   std::set<VertexId> boundary;
@@ -121,6 +126,13 @@ void measureStep(Complex& cx, const Sample& s, Tally& t) {
   OpResult off = applyStep(cx, s.step, kMeasure);
   cx.undo(off.edits);
   OpResult on = applyStep(cx, s.step, kSmoothStep);
+  if (gList && newlyInverted(on.quality, before) > 0 && on.quality.pinned.size() != on.quality.inverted.size()) {
+    std::string setup;
+    for (const OpStep& st : s.setup) setup += formatOpStep(st) + ";";
+    std::printf("    uncertified: %.100s%.100s  inverted %zu pinned %zu rings %d kept %d\n", setup.c_str(),
+                formatOpStep(s.step).c_str(), on.quality.inverted.size(), on.quality.pinned.size(), on.quality.rings,
+                int(on.quality.kept));
+  }
   cx.undo(on.edits);
   for (auto it = undo.rbegin(); it != undo.rend(); ++it) cx.undo(*it);
   ++t.steps;
@@ -131,6 +143,7 @@ void measureStep(Complex& cx, const Sample& s, Tally& t) {
   t.onBoundary += inv && atBoundary;
   t.degenerate += !on.quality.degenerate.empty();
   t.widened += on.quality.rings > 0;
+  t.kept += on.quality.kept;
   t.worstOff = std::min(t.worstOff, off.quality.afterRegular);
   t.worstOn = std::min(t.worstOn, on.quality.afterRegular);
   t.evaluations += on.quality.evaluations;
@@ -146,6 +159,7 @@ void randomSteps(const std::string& name, Complex& cx, int perKind, unsigned see
     byKind.push_back(info.candidates == CandidateSet::None ? std::vector<OpStep>{} : candidates(cx, info.kind));
   std::mt19937 rng(seed);
   for (const OpInfo& info : allOps()) {
+    if (!gKind.empty() && gKind != info.name) continue;
     Tally t;
     for (int k = 0; k < perKind; ++k)
       if (std::optional<Sample> s = sample(cx, info.kind, byKind, rng)) measureStep(cx, *s, t);
@@ -155,10 +169,10 @@ void randomSteps(const std::string& name, Complex& cx, int perKind, unsigned see
     }
     std::printf(
         "  %-13s steps %4d  newly inverted: off %4d (%5.1f%%)  on %4d (%5.1f%%; %d certified, %d naming a boundary "
-        "vertex)  widened %4d  "
+        "vertex)  widened %4d  kept %3d  "
         "degenerate pair %4d  worst regular SJ off %7.3f on %7.3f  evaluations mean %lld max %lld\n",
         info.name, t.steps, t.off, 100.0 * t.off / t.steps, t.on, 100.0 * t.on / t.steps, t.onPinned, t.onBoundary,
-        t.widened, t.degenerate, t.worstOff, t.worstOn, (long long)(t.evaluations / t.steps),
+        t.widened, t.kept, t.degenerate, t.worstOff, t.worstOn, (long long)(t.evaluations / t.steps),
         (long long)t.maxEvaluations);
   }
 }
@@ -234,6 +248,10 @@ int main(int argc, char** argv) {
       samples = false;
     else if (a == "--no-cost")
       costs = false;
+    else if (a == "--list")
+      gList = true;
+    else if (a == "--kind" && i + 1 < argc)
+      gKind = argv[++i];
     else
       files.push_back(a);
   }

@@ -1,7 +1,8 @@
 // Geometry after operations (geometry/step_geometry.hpp): the local untangling and smoothing moves
 // only interior vertices around the step, undo restores positions bitwise, the same log gives the
-// same bits, the cost does not grow with the mesh, and with it on the only steps that leave a
-// regular hex newly inverted are hex pushes on a quad that touches the boundary.
+// same bits, the cost does not grow with the mesh, with it on the only steps that leave a regular
+// hex newly inverted are hex pushes on a quad that touches the boundary, and it never leaves more
+// newly inverted than the operation's own placement.
 #include <doctest/doctest.h>
 
 #include <random>
@@ -15,6 +16,7 @@
 #include "geometry/quality_stats.hpp"
 #include "geometry/scaled_jacobian.hpp"
 #include "helpers.hpp"
+#include "io/geometry_json.hpp"
 #include "layout/quality.hpp"
 #include "ops/candidates.hpp"
 #include "ops/op_table.hpp"
@@ -265,8 +267,11 @@ TEST_CASE("smoothing goal on development meshes whose hexes are all valid") {
     REQUIRE(qualityStats(start).nonPositive == 0);
     CAPTURE(std::string(name));
     GoalTally t = randomStepsKeepValid(start, 8, 20261122);
-    MESSAGE(name << ": " << t.steps << " steps, " << t.inverting << " leave a regular hex inverted, " << t.certified << " certified");
+    MESSAGE(std::string(name) << ": " << t.steps << " steps, " << t.inverting << " leave a regular hex inverted, " << t.certified << " certified");
     CHECK(t.steps >= 60);
+    // This seed's steps: every one that leaves a regular hex newly inverted is proved impossible
+    // with the boundary fixed (a hex push or face collapse at the boundary).
+    CHECK(t.certified == t.inverting);
   }
 }
 
@@ -311,4 +316,104 @@ TEST_CASE("smoothing cost: the same work for the same step in an 8^3 and a 16^3 
     CHECK(a.quality.moved.size() == b.quality.moved.size());
     CHECK(a.quality.after == b.quality.after);
   }
+}
+
+namespace {
+
+int newlyInvertedBy(const StepQuality& q, const std::set<HexId>& before) {
+  int n = 0;
+  for (HexId h : q.inverted) n += !before.count(h);
+  return n;
+}
+
+struct NeverWorseTally {
+  int steps = 0, kept = 0, worseOff = 0, worseOn = 0;
+};
+
+// `perKind` random candidate steps of every atomic kind, each applied with the operation's own
+// placement (measured), undone, smoothed, undone: the smoothed step never leaves more regular
+// hexes newly inverted than the unsmoothed one.
+NeverWorseTally smoothingNeverWorse(Complex& cx, int perKind, unsigned seed) {
+  MESSAGE("seed " << seed);
+  std::mt19937 rng(seed);
+  NeverWorseTally t;
+  for (const OpInfo& info : allOps()) {
+    if (info.candidates == CandidateSet::None || info.family != OpFamily::Atomic) continue;
+    const std::vector<OpStep> steps = candidates(cx, info.kind);
+    for (int k = 0; k < perKind && !steps.empty(); ++k) {
+      const OpStep st = steps[rng() % steps.size()];
+      const std::set<HexId> before = regularInverted(cx);
+      OpResult off = applyStep(cx, st, kMeasure);
+      cx.undo(off.edits);
+      OpResult on = applyStep(cx, st, kSmoothStep);
+      cx.undo(on.edits);
+      const int nOff = newlyInvertedBy(off.quality, before), nOn = newlyInvertedBy(on.quality, before);
+      CAPTURE(formatOpStep(st));
+      CHECK(nOn <= nOff);
+      CHECK((!on.quality.kept || on.quality.moved.empty()));
+      if (on.quality.kept) CHECK(io::stepQualityText(on.quality).find("kept the operation's placement") != std::string::npos);
+      ++t.steps;
+      t.kept += on.quality.kept;
+      t.worseOff += nOff > 0;
+      t.worseOn += nOn > 0;
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("smoothing never leaves more hexes newly inverted than the operation's own placement (tangled meshes)") {
+  // A 5x5x5 grid with every interior vertex thrown by up to 0.9 edge lengths (seeded): tangled
+  // nearly everywhere, where the local untangling can trade old inversions for new ones.
+  Complex grid = makeGrid(5, 5, 5);
+  std::mt19937 rng(20261203);
+  std::uniform_real_distribution<double> d(-0.9, 0.9);
+  const std::set<VertexId> boundary = boundaryVertices(grid);
+  for (VertexId v = 0; v < VertexId(grid.positions().size()); ++v)
+    if (!boundary.count(v)) grid.setPosition(v, grid.position(v) + Vec3{d(rng), d(rng), d(rng)});
+  REQUIRE(qualityStats(grid).nonPositive > 20);
+  NeverWorseTally g = smoothingNeverWorse(grid, 8, 20261203);
+  MESSAGE("thrown grid: " << g.steps << " steps, newly inverted off " << g.worseOff << " on " << g.worseOn << ", kept "
+                          << g.kept);
+  CHECK(g.steps == 32);  // 8 of each atomic kind with candidates on a fresh grid (pillow, chord push, hex push, face collapse)
+  CHECK(g.worseOff == 11);  // this seed's steps
+  CHECK(g.worseOn == 4);
+  const auto file = devMeshDir() / "ECR_block_stresstest_in.mesh.gz";
+  if (!std::filesystem::exists(file)) {
+    MESSAGE("skipped: no development-set meshes at " << devMeshDir().string());
+    return;
+  }
+  Complex ecr = readDevMesh(file);
+  NeverWorseTally e = smoothingNeverWorse(ecr, 6, 20261122);
+  MESSAGE("ECR_block_stresstest_in: " << e.steps << " steps, newly inverted off " << e.worseOff << " on " << e.worseOn
+                                      << ", kept " << e.kept);
+  CHECK(e.steps == 24);
+  CHECK(e.worseOff == 7);  // this seed's steps
+  CHECK(e.worseOn == 5);
+  CHECK(e.kept == 3);  // three times every smoothed placement left more hexes newly inverted: the guard kept the operation's
+}
+
+TEST_CASE("smoothing: hexes a step re-corners count as newly inverted even if inverted before (a face split's)") {
+  // After the face collapse its four hexes are degenerate by construction (inverted, not counted);
+  // the face split makes them regular again, still inverted at the collapse's positions: the
+  // smoothing must untangle them, not take them for hexes inverted before the step.
+  const auto file = devMeshDir() / "P_joint.vtk.gz";
+  if (!std::filesystem::exists(file)) {
+    MESSAGE("skipped: no development-set meshes at " << devMeshDir().string());
+    return;
+  }
+  Complex cx = readDevMesh(file);
+  OpResult c = applyStep(cx, "facecollapse h315e10 h319f1 h325f3", kSmoothStep);
+  CHECK(c.quality.degenerate.size() == 8);
+  REQUIRE(c.inverse);
+  CHECK(formatOpStep(*c.inverse) == "facesplit h333f0 h319f1");
+  OpResult off = applyStep(cx, *c.inverse, kMeasure);
+  MESSAGE("face split unsmoothed: inverted " << off.quality.inverted.size());
+  CHECK(off.quality.inverted.size() >= 2);  // the four hexes are regular again, and not all valid
+  cx.undo(off.edits);
+  OpResult s = applyStep(cx, *c.inverse, kSmoothStep);
+  CHECK(s.quality.inverted.empty());
+  CHECK(s.quality.afterRegular > 0.1);
+  CHECK(!s.quality.kept);
 }

@@ -142,16 +142,6 @@ int untangle(SmoothingRegion& r) {
   return n;
 }
 
-// One attempt from the current positions: Escobar sweeps, and while tangled max-min untangling
-// then Escobar again; with maxMinFirst the untangling goes first.
-int attempt(SmoothingRegion& r, bool maxMinFirst) {
-  int n = 0;
-  if (maxMinFirst && !(minCornerDeterminant(r) > 0)) n += untangle(r);
-  n += sweep(r);
-  if (!(minCornerDeterminant(r) > 0)) n += untangle(r), n += sweep(r);
-  return n;
-}
-
 // How good the positions are: fewer inverted counted hexes, then a larger smallest scaled corner.
 struct Outcome {
   int inverted = 0;
@@ -161,6 +151,29 @@ struct Outcome {
   }
 };
 Outcome outcome(const SmoothingRegion& r) { return {invertedHexes(r), worstScaledCorner(r)}; }
+
+// The best positions seen at the checkpoints (the first of equals): a later phase can lose what an
+// earlier one reached (the softened sweeps after a max-min untangling may tangle a corner again).
+struct BestSeen {
+  bool any = false;
+  Outcome outcome;
+  std::vector<Vec3> pos;
+  void offer(const SmoothingRegion& r) {
+    const Outcome o = hexdual::outcome(r);
+    if (!any || o.betterThan(outcome)) any = true, outcome = o, pos = r.pos;
+  }
+};
+
+// One attempt from the current positions: Escobar sweeps, and while tangled max-min untangling
+// then Escobar again; with maxMinFirst the untangling goes first. Offers each phase's result.
+int attempt(SmoothingRegion& r, bool maxMinFirst, BestSeen& best) {
+  int n = 0;
+  if (maxMinFirst && !(minCornerDeterminant(r) > 0)) n += untangle(r), best.offer(r);
+  n += sweep(r);
+  best.offer(r);
+  if (!(minCornerDeterminant(r) > 0)) n += untangle(r), best.offer(r), n += sweep(r), best.offer(r);
+  return n;
+}
 
 }  // namespace
 
@@ -172,21 +185,17 @@ SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free, const s
   SmoothingStats st;
   const std::vector<Vec3> start = r.pos;
   const Outcome before = outcome(r);
-  st.sweeps = attempt(r, false);
-  Outcome best = outcome(r);
+  BestSeen best;
+  st.sweeps = attempt(r, false, best);
+  r.pos = best.pos;
   if (!(minCornerDeterminant(r) > 0)) {  // still tangled: again from the start, max-min untangling first
-    const std::vector<Vec3> first = r.pos;
     r.pos = start;
-    st.sweeps += attempt(r, true);
-    const Outcome second = outcome(r);
-    if (second.betterThan(best))
-      best = second;
-    else
-      r.pos = first;
+    st.sweeps += attempt(r, true, best);
+    r.pos = best.pos;
   }
-  if (before.betterThan(best)) r.pos = start, best = before;  // never worse than the operation's own placement
+  if (before.betterThan(best.outcome)) r.pos = start, best.outcome = before;  // never worse than the operation's own placement
   st.invertedBefore = before.inverted;
-  st.invertedAfter = best.inverted;
+  st.invertedAfter = best.outcome.inverted;
   st.evaluations = r.evaluations;
   for (size_t i = 0; i < r.free.size(); ++i) {
     const Vec3 old = cx.position(r.free[i]);

@@ -7,8 +7,8 @@
 // barrier so vertices can pass through it (untangling); once none is, delta = 0 and the energy is a
 // barrier no step crosses. When the sweeps stall tangled, Freitag & Plassmann's max-min untangling
 // (max_min.hpp) runs and the sweeps again; failing that, the whole attempt again from the start with
-// the max-min first. Nothing else moves. Plain scalar arithmetic in a fixed order: the same bits
-// natively and in wasm.
+// the max-min first; the best positions any phase reached are kept. Nothing else moves. Plain
+// scalar arithmetic in a fixed order: the same bits natively and in wasm.
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -8,6 +8,7 @@
 #include "geometry/pinned.hpp"
 #include "geometry/scaled_jacobian.hpp"
 #include "geometry/smoothing.hpp"
+#include "geometry/step_before.hpp"
 
 namespace hexdual {
 
@@ -60,9 +61,9 @@ std::vector<HexId> reshapedByStep(const Complex& cx, const Complex::EditLog& log
   return out;
 }
 
-// The positions one ring of the smoothing reached, and what it left inverted.
+// The positions one ring of the smoothing reached, and what it left newly inverted.
 struct RingResult {
-  int ring = 0;
+  int ring = -1;  // -1: the operation's own placement (no moves)
   std::vector<std::pair<VertexId, Vec3>> moves;
   std::vector<HexId> around;    // the hexes around its free vertices, and the step's
   std::vector<HexId> inverted;  // regular hexes among `around` left inverted (and not inverted before the step)
@@ -79,17 +80,19 @@ std::vector<HexId> nearHexes(const Complex& cx, const std::vector<HexId>& hexes)
 }
 
 // Smooths the interior vertices of `hexes` (undone by cx.undo(edits)); `alive`: the live hexes
-// the step touched; `near`: nearHexes(alive). Hexes not near that are inverted before the
-// smoothing were inverted and regular before the step (the smoothing keeps their corners from
-// getting lower): not counted.
+// the step touched; `near`: nearHexes(alive) (hexes not near that are inverted now were inverted
+// and regular before the step: the smoothing keeps their corners from getting lower).
 RingResult smoothRing(Complex& cx, const std::vector<HexId>& hexes, const std::vector<HexId>& alive,
-                      const std::vector<HexId>& near, Complex::EditLog& edits, StepQuality& q) {
+                      const std::vector<HexId>& near, const StepBefore& before, Complex::EditLog& edits,
+                      StepQuality& q) {
   RingResult res;
   const std::vector<FreeVertex> free = interiorCorners(cx, hexes);
   res.around = merged(hexesAround(cx, free), alive);
+  // Inverted before the step and not touched by it (a touched one may have been degenerate then:
+  // the smoothing tries to untangle it). `before` reads positions from cx: asked before any move.
   std::vector<HexId> already;
-  for (HexId h : invertedRegular(cx, res.around))
-    if (!std::binary_search(near.begin(), near.end(), h)) already.push_back(h);
+  for (HexId h : res.around)
+    if (cx.isHex(h) && !before.touched(h) && before.invertedBefore(cx, h)) already.push_back(h);
   cx.beginTransaction();
   const SmoothingStats st = smoothVertices(cx, free, near, kStepEvaluationBudget - q.evaluations);
   edits = cx.commitTransaction();
@@ -101,18 +104,18 @@ RingResult smoothRing(Complex& cx, const std::vector<HexId>& hexes, const std::v
 }
 
 // The interior vertices of the hexes the step placed, then (while a regular hex around them or
-// touched by the step stays inverted and not every such hex is pinned) those of the hexes around
-// them, ring by ring. Each ring starts again from the operation's own placement (a wider region
-// is a new, larger problem); the ring leaving the fewest regular hexes inverted wins, the
-// narrowest on ties. Its moves join `log`; returns the hexes around its free vertices.
-std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vector<HexId>& alive, StepQuality& q) {
+// touched by the step is newly inverted and not every such hex is pinned) those of the hexes
+// around them, ring by ring. Each ring starts again from the operation's own placement (a wider
+// region is a new, larger problem); the ring leaving the fewest regular hexes newly inverted wins,
+// the narrowest on ties. Leaves cx at the operation's placement.
+RingResult fixedBoundaryRings(Complex& cx, const Complex::EditLog& log, const std::vector<HexId>& alive,
+                              const std::vector<HexId>& near, const StepBefore& before, StepQuality& q) {
   std::vector<HexId> hexes = reshapedByStep(cx, log);
-  const std::vector<HexId> near = nearHexes(cx, alive);
   RingResult best;
   Complex::EditLog edits;
   for (int ring = 0;; ++ring) {
     if (ring > 0) cx.undo(edits);
-    RingResult res = smoothRing(cx, hexes, alive, near, edits, q);
+    RingResult res = smoothRing(cx, hexes, alive, near, before, edits, q);
     res.ring = ring;
     if (ring == 0 || res.inverted.size() < best.inverted.size()) best = res;
     if (res.inverted.empty() || ring == kWideningRings || q.evaluations >= kStepEvaluationBudget) break;
@@ -120,13 +123,29 @@ std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vec
     hexes = res.around;
   }
   cx.undo(edits);
+  return best;
+}
+
+// Places the step's vertices by the fixed-boundary rings, or keeps the operation's own placement
+// when it leaves fewer regular hexes newly inverted (never worse than no smoothing: on a mesh
+// tangled already the untangling can trade inversions the step did not make for new ones). Its
+// moves join `log`; returns the hexes around its free vertices.
+std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vector<HexId>& alive,
+                              const StepBefore& before, StepQuality& q) {
+  const std::vector<HexId> near = nearHexes(cx, alive);
+  const int unsmoothed = before.newlyInverted(cx, near);
+  RingResult best = fixedBoundaryRings(cx, log, alive, near, before, q);
+  const auto newly = [&](HexId h) { return !before.invertedBefore(cx, h); };  // (cx is at the operation's placement)
+  if (unsmoothed < std::count_if(best.inverted.begin(), best.inverted.end(), newly))
+    best = RingResult{-1, {}, alive, {}};
   cx.beginTransaction();
   for (auto [v, p] : best.moves) cx.setPosition(v, p);
   const Complex::EditLog moves = cx.commitTransaction();
   log.edits.insert(log.edits.end(), moves.edits.begin(), moves.edits.end());
   q.moved.clear();
   for (auto [v, p] : best.moves) q.moved.push_back(v);
-  q.rings = best.ring;
+  q.rings = std::max(best.ring, 0);
+  q.kept = best.ring < 0;
   return best.around;
 }
 
@@ -142,33 +161,11 @@ std::vector<HexId> reshaped(const Complex& cx, const std::vector<HexId>& region,
   return out;
 }
 
-// Each touched hex's corners before the operation (replaying its SetCorner edits backwards); hexes
-// it added are left out.
-std::map<HexId, std::array<VertexId, 8>> cornersBefore(const Complex& cx, const Complex::EditLog& log,
-                                                       const std::vector<HexId>& touched) {
-  std::map<HexId, std::array<VertexId, 8>> out;
-  for (HexId h : touched) out[h] = cx.hexVertices(h);
-  for (auto it = log.edits.rbegin(); it != log.edits.rend(); ++it) {
-    if (it->kind == Complex::Edit::AddHex) out.erase(it->hex);
-    if (it->kind == Complex::Edit::SetCorner && out.count(it->hex))
-      out[it->hex][size_t(it->face)] = VertexId(it->value);
-  }
-  return out;
-}
-
 // Measures `measured` (the touched hexes and those the smoothing reshaped) before and after.
-void measure(const Complex& cx, const Complex::EditLog& log, const std::vector<HexId>& measured, StepQuality& q) {
-  std::map<VertexId, Vec3> original;  // positions before the smoothing: the first recorded of each vertex
-  for (const Complex::Edit& e : log.edits)
-    if (e.kind == Complex::Edit::SetPosition) original.emplace(e.hex, e.pos);
-  auto pos = [&](VertexId v) {
-    auto it = original.find(v);
-    return it != original.end() ? it->second : cx.position(v);
-  };
-  for (const auto& [h, corners] : cornersBefore(cx, log, measured)) {
-    std::array<Vec3, 8> p;
-    for (size_t c = 0; c < 8; ++c) p[c] = pos(corners[c]);
-    q.before = std::min(q.before, scaledJacobian(p));
+void measure(const Complex& cx, const StepBefore& before, const std::vector<HexId>& measured, StepQuality& q) {
+  for (HexId h : measured) {
+    double sj = 1;
+    if (before.scaledJacobianBefore(cx, h, sj)) q.before = std::min(q.before, sj);
   }
   for (HexId h : measured) {
     if (!cx.isHex(h)) continue;
@@ -196,10 +193,10 @@ StepQuality placeStepGeometry(Complex& cx, Complex::EditLog& log, StepGeometry m
     if (cx.isHex(h)) alive.push_back(h);
   std::vector<HexId> measured = touched;
   if (mode == StepGeometry::Smooth) {
-    measured = merged(reshaped(cx, smoothStep(cx, log, alive, q), q.moved), touched);
+    measured = merged(reshaped(cx, smoothStep(cx, log, alive, StepBefore(cx, log, touched), q), q.moved), touched);
     q.smoothed = true;
   }
-  measure(cx, log, measured, q);
+  measure(cx, StepBefore(cx, log, touched), measured, q);  // `log` now holds the smoothing's moves too
   return q;
 }
 

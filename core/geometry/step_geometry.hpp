@@ -21,7 +21,9 @@ enum class StepGeometry {
 // With Smooth, the free vertices are the interior vertices (not on the boundary, manifold) of the
 // hexes the step touched; while a hex that is not degenerate by construction stays inverted, they
 // widen to the interior vertices of the hexes around them, at most kWideningRings times. Boundary
-// vertices never move, nor any vertex outside that region.
+// vertices never move, nor any vertex outside that region. When the operation's own placement
+// leaves fewer regular hexes newly inverted (inverted now, not before the step) than the best
+// smoothed one, it is kept (StepQuality::kept): never worse than no smoothing.
 StepQuality placeStepGeometry(Complex& cx, Complex::EditLog& log, StepGeometry mode);
 
 inline constexpr int kWideningRings = 2;

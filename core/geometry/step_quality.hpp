@@ -20,6 +20,8 @@ struct StepQuality {
   std::vector<HexId> degenerate;  // measured hexes degenerate by construction (never valid)
   std::vector<VertexId> moved;    // vertices the smoothing moved, ascending
   int rings = 0;                  // how many times the smoothing widened its region (0..kWideningRings)
+  bool kept = false;              // the smoothing kept the operation's own placement: every smoothed one
+                                  // left more regular hexes newly inverted (a mesh tangled already)
   int64_t evaluations = 0;        // the smoothing's cost in corner-energy evaluations
 };
 

@@ -100,6 +100,7 @@ std::string stepQualityJson(const StepQuality& q) {
   w.beginObject().key("smoothed").value(q.smoothed).key("before").value(q.before).key("after").value(q.after);
   w.key("afterRegular").value(q.afterRegular).key("inverted").raw(idList(q.inverted)).key("pinned").raw(idList(q.pinned));
   w.key("degenerate").raw(idList(q.degenerate)).key("moved").raw(idList(q.moved)).key("rings").value(int64_t(q.rings));
+  w.key("kept").value(q.kept);
   w.key("evaluations").value(q.evaluations);
   return w.endObject().str();
 }
@@ -107,13 +108,16 @@ std::string stepQualityJson(const StepQuality& q) {
 std::string stepQualityText(const StepQuality& q) {
   if (!q.measured) return "";
   std::string text = "  quality: min scaled Jacobian " + number(q.before) + " -> " + number(q.after);
-  if (q.smoothed)
+  if (q.kept)
+    text += " (smoothing kept the operation's placement: it left fewer hexes newly inverted)";
+  else if (q.smoothed)
     text += " (smoothed, " + std::to_string(q.moved.size()) + " vertices moved" +
             (q.rings ? ", region widened " + std::to_string(q.rings) + (q.rings == 1 ? " ring" : " rings") : "") + ")";
   else
     text += " (not smoothed)";
   if (!q.inverted.empty()) text += "; inverted " + idList(q.inverted);
-  if (!q.pinned.empty()) text += " (pinned by the boundary: " + idList(q.pinned) + ")";
+  if (!q.pinned.empty())
+    text += " (pinned by the boundary: " + idList(q.pinned) + ", proved: no placement with the boundary fixed makes every hex here valid)";
   if (!q.degenerate.empty()) text += "; degenerate by construction " + idList(q.degenerate) + ", min of the others " + number(q.afterRegular);
   return text + "\n";
 }
