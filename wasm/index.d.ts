@@ -145,6 +145,8 @@ export interface StepQuality {
   rings: number;
   /** Corner-energy evaluations: the smoothing's cost, independent of the mesh's size. */
   evaluations: number;
+  /** The smoothing kept the operation's own placement (nothing moved): the smoothed one left more hexes newly inverted. */
+  kept: boolean;
 }
 /** Irregular edges by valence and the rest of the singularity graph's size. */
 export interface SingularityCounts {

@@ -37,6 +37,7 @@ test('a hex push makes 16 valence-3 and 16 valence-5 edges (as natively); edgeDu
   assert.deepEqual(r.quality.pinned, []);
   assert.equal(r.quality.rings, 0);
   assert.ok(r.quality.evaluations > 0);
+  assert.equal(r.quality.kept, false, 'the smoothed placement is the better one here');
   assert.equal(r.quality.before, 1);
   assert.ok(r.quality.after > 0.3);
   const s = m.singularities();
