@@ -23,7 +23,7 @@ test('apply returns the step report: ids, delta, changed sheets and chords, inve
     // its 4 new vertices belong to the pair alone, so nothing moves.
     quality: {
       smoothed: true, before: 1, after: -0.577350269, afterRegular: 1, inverted: [], pinned: [], degenerate: [27, 28],
-      moved: [], rings: 0, evaluations: 128,
+      moved: [], rings: 0, evaluations: 128, kept: false,
     },
   });
   const push = m.apply('hexpush  h13f5'.replace('  ', ' '));
