@@ -3,6 +3,7 @@
 // allocations, not one node per hex as std::unordered_map did (issue 22: sheet operations' cost).
 // Owns its arrays; keeps: keys_ has a power-of-two size, at most half of it used, -1 marking a free slot.
 #pragma once
+#include <cassert>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -43,7 +44,11 @@ class IdMap {
     const V* v = find(id);
     return v ? *v : absent;
   }
-  V at(int32_t id) const { return *find(id); }  // id must be present
+  V at(int32_t id) const {  // id must be present (checked in debug builds; std::unordered_map::at threw)
+    const V* v = find(id);
+    assert(v && "IdMap::at: id absent");
+    return *v;
+  }
   bool empty() const { return used_ == 0; }
   size_t size() const { return used_; }
 
