@@ -363,7 +363,7 @@ NeverWorseTally smoothingNeverWorse(Complex& cx, int perKind, unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("smoothing never leaves more hexes newly inverted than the operation's own placement (tangled meshes)") {
+TEST_CASE("smoothing never leaves more hexes newly inverted than the operation's own placement (thrown grid)") {
   // A 5x5x5 grid with every interior vertex thrown by up to 0.9 edge lengths (seeded): tangled
   // nearly everywhere, where the local untangling can trade old inversions for new ones.
   Complex grid = makeGrid(5, 5, 5);
@@ -379,6 +379,11 @@ TEST_CASE("smoothing never leaves more hexes newly inverted than the operation's
   CHECK(g.steps == 32);  // 8 of each atomic kind with candidates on a fresh grid (pillow, chord push, hex push, face collapse)
   CHECK(g.worseOff == 11);  // this seed's steps
   CHECK(g.worseOn == 4);
+}
+
+// Apart from the grid's case so that the sanitizer stage keeps that one: under ASan this mesh's
+// steps take over 8 minutes (.ci/test skips this case there; the release stage runs it).
+TEST_CASE("smoothing never leaves more hexes newly inverted than the operation's own placement (tangled ECR_block)") {
   const auto file = devMeshDir() / "ECR_block_stresstest_in.mesh.gz";
   if (!std::filesystem::exists(file)) {
     MESSAGE("skipped: no development-set meshes at " << devMeshDir().string());
