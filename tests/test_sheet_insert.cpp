@@ -5,6 +5,7 @@
 
 #include "complex/builders.hpp"
 #include "flips/flip.hpp"
+#include "geometry/scaled_jacobian.hpp"
 
 using namespace hexdual;
 using namespace hexdual::test;
@@ -154,4 +155,32 @@ TEST_CASE("sheet-pillow: random runs on grids and an O-grid (fixed seeds)") {
   auto b = randomSheetRuns(makeRing(6, 2, 2), 20261503, 20, OpKind::SheetPillow);
   CHECK(a["applied"] > 40);
   CHECK(b["applied"] > 20);
+}
+
+TEST_CASE("sheet-insert and sheet-pillow: the new hexes are right-handed with the operation's own placement, from either side") {
+  // The smallest scaled Jacobian of the created hexes, the operation's placement kept as it is.
+  auto newHexesMinSJ = [](Complex& cx, const OpStep& step) {
+    const OpResult r = applyStep(cx, step);
+    REQUIRE_FALSE(r.createdHexes.empty());
+    double lo = 2;
+    for (HexId h : r.createdHexes) lo = std::min(lo, scaledJacobian(cx, h));
+    return lo;
+  };
+  std::vector<QuadSide> fromBelow, fromAbove;  // the 25 quads between layers 2 and 3 of a 5^3 grid
+  for (HexId h = 50; h < 75; ++h) {
+    fromBelow.push_back({h, 5});       // odd faces: the moving hexes lie below
+    fromAbove.push_back({h + 25, 4});  // even faces: the moving hexes lie above
+  }
+  Complex a = makeGrid(5, 5, 5), b = a;
+  CHECK(newHexesMinSJ(a, quadsStep(OpKind::SheetInsert, fromBelow)) > 0.5);
+  CHECK(newHexesMinSJ(b, quadsStep(OpKind::SheetInsert, fromAbove)) > 0.5);
+  CHECK(isomorphic(a, makeGrid(5, 5, 6), false));
+  // A pillowed hex's six sides are three even and three odd faces; an interior 2x2x1 block, a
+  // corner hex (the sheet ends on the boundary) and a boundary column.
+  for (const char* step : {"sheet-pillow h62", "sheet-pillow h31 h32 h36 h37", "sheet-pillow h0", "sheet-pillow h2 h27 h52 h77 h102"}) {
+    CAPTURE(step);
+    Complex cx = makeGrid(5, 5, 5);
+    CHECK(newHexesMinSJ(cx, parseOpStep(step)) > 0.3);
+    for (HexId h : cx.hexes()) CHECK(scaledJacobian(cx, h) > 0);  // the moved hexes too
+  }
 }

@@ -212,6 +212,18 @@ int sideFaceBetween(const Complex& cx, HexId h, VertexId a, VertexId b) {
   return -1;
 }
 
+// The new hex's bottom (its face 4, in kFaceCorners[4] order) on the moving quad m's vertices.
+// Every face's corner cycle in kFaceCorners turns about +axis: inward for even faces (face 4's,
+// +z, points into its hex), outward for odd ones. The new hex lies on the moving hex's side of m,
+// so an odd face's cycle is reversed: otherwise the new hex is mirrored (scaled Jacobian -1).
+std::array<VertexId, 4> bottomOf(const Complex& cx, QuadSide m) {
+  static constexpr int kReversed[4] = {0, 3, 2, 1};
+  std::array<VertexId, 4> v;
+  for (int p = 0; p < 4; ++p)
+    v[size_t(p)] = cx.vertex(m.hex, kFaceCorners[size_t(m.face)][size_t(m.face % 2 ? kReversed[p] : p)]);
+  return v;
+}
+
 // What the edit needs, all read before it: per quad the old vertices of its moving side (the new
 // hex's bottom) and its staying side (none on the boundary); per shared surface edge the two
 // quads and the edge's ends.
@@ -231,9 +243,7 @@ Layer layerOf(const Complex& cx, const Surface& s, const Plan& plan,
   Layer l;
   for (size_t i = 0; i < s.named.size(); ++i) {
     const QuadSide m = plan.moving[i];
-    std::array<VertexId, 4> v;
-    for (int p = 0; p < 4; ++p) v[size_t(p)] = cx.vertex(m.hex, kFaceCorners[size_t(m.face)][size_t(p)]);
-    l.bottom.push_back(v);
+    l.bottom.push_back(bottomOf(cx, m));
     l.staying.push_back(cx.isBoundary(m) ? QuadSide{-1, 0} : QuadSide{cx.gluing(m).hex, cx.gluing(m).face});
   }
   for (auto [a, b] : pairs) {
