@@ -43,6 +43,7 @@ for n in $SIZES; do
   echo "$nat" >>"$RESULTS"
   # The wasm row comes from the package build (wasm/dist); marked when that build is absent or fails.
   was=$(node bench/bench_wasm.mjs build "$n" "$REPS" 2>/dev/null || echo '{"missing":true}')
+  echo "$was" >>"$RESULTS"
   node -e '
     const a = JSON.parse(process.argv[1]), b0 = JSON.parse(process.argv[2]);
     const b = b0.missing ? { coldMs: NaN, buildMs: NaN, dualMs: NaN, totalMs: NaN, peakRssMb: NaN } : b0;
@@ -144,6 +145,7 @@ fi
 echo "### The npm package's size"
 echo
 wasm=wasm/dist/hexdual.wasm
+[ -f "$wasm" ] && echo "{\"bench\":\"size\",\"wasmGzBytes\":$(gzip -9c $wasm | wc -c)}" >>"$RESULTS"
 echo "hexdual.wasm $(stat -c %s $wasm) bytes, $(gzip -9c $wasm | wc -c) gzipped; loader hexdual.mjs $(stat -c %s wasm/dist/hexdual.mjs) bytes, $(gzip -9c wasm/dist/hexdual.mjs | wc -c) gzipped"
 echo
 echo "### Peers, for context (quoted from the performance issue: CPU time on this kind of machine, not rerun here)"
@@ -166,12 +168,21 @@ t=$(GLIBC_TUNABLES=glibc.malloc.hugetlb=1 build/native/hexdual_bench build 100 "
 node -e 'const a = JSON.parse(process.argv[1]); console.log(`| ${a.n}³ | ${a.coldMs.toFixed(1)} | ${a.totalMs.toFixed(1)} | ${(a.coldMs / a.totalMs).toFixed(2)} |`);' "$t"
 
 echo
+echo "### Sheet extraction of the middle layer of a 100³ grid (issue 22; CPU ms, minimum of $REPS applications and undos)"
+echo
+echo "| step | op ms | op + dual update ms | slots the update visits |"
+echo "| --- | --- | --- | --- |"
+se=$(build/native/hexdual_bench sheetops 100 "$REPS" sheetExtract)
+echo "$se" >>"$RESULTS"
+node -e 'const a = JSON.parse(process.argv[1]); console.log(`| ${a.op} (10,000 hexes) | ${a.opMs.toFixed(1)} | ${a.opPlusDualMs.toFixed(1)} | ${a.slotsTouched} |`);' "$se"
+
+echo
 echo "### Against the performance targets (this run)"
 echo
 node -e '
   const rows = require("fs").readFileSync(process.argv[1], "utf8").trim().split("\n").filter(Boolean).map((l) => JSON.parse(l));
   const builds = rows.filter((r) => r.bench === "build"), floors = rows.filter((r) => r.floorMs !== undefined);
-  const ops = rows.filter((r) => r.op !== undefined), thr = rows.filter((r) => r.bench === "throughput" || r.appliedPerSec !== undefined);
+  const ops = rows.filter((r) => r.op !== undefined && r.bench !== "sheetop"), thr = rows.filter((r) => r.bench === "throughput" || r.appliedPerSec !== undefined);
   const verdict = (ok) => (ok ? "met" : "**not met**");
   console.log("| target | this run | verdict |");
   console.log("| --- | --- | --- |");
@@ -197,4 +208,13 @@ node -e '
     }
   }
   for (const t of thr) console.log(`| throughput at ${t.n}³ ≥ 50,000 applied/s | ${t.appliedPerSec} | ${verdict(t.appliedPerSec >= 50000)} |`);
+  const w100 = rows.find((r) => r.bench === "build-wasm" && r.n === 100);
+  if (b100 && w100) {
+    const ratio = w100.totalMs / (b100.buildMs + b100.trackerMs);
+    console.log(`| wasm ≤ 1.2× native, build + tracker at 100³ | ${w100.totalMs.toFixed(1)} / ${(b100.buildMs + b100.trackerMs).toFixed(1)} ms = ${ratio.toFixed(2)} | ${verdict(ratio <= 1.2)} |`);
+  }
+  const size = rows.find((r) => r.bench === "size");
+  if (size) console.log(`| .wasm ≤ 250 kB gzipped (gzip -9) | ${size.wasmGzBytes} bytes | ${verdict(size.wasmGzBytes <= 250000)} |`);
+  const se = rows.find((r) => r.bench === "sheetop" && r.op === "sheetExtract");
+  if (se) console.log(`| sheet extraction at 100³ ≤ 5 ms natively (issue 22; op + dual update) | ${se.opMs.toFixed(1)} + ${(se.opPlusDualMs - se.opMs).toFixed(1)} = ${se.opPlusDualMs.toFixed(1)} ms | ${verdict(se.opPlusDualMs <= 5)} |`);
 ' "$RESULTS"
