@@ -1,4 +1,7 @@
 #include <doctest/doctest.h>
+#include <algorithm>
+#include <map>
+#include <random>
 
 #include <cstdio>
 #include <fstream>
@@ -7,6 +10,8 @@
 #include "complex/huge_pages.hpp"
 #include "helpers.hpp"
 #include "io/io.hpp"
+#include "ops/candidates.hpp"
+#include "ops/oplog.hpp"
 
 using namespace hexdual;
 using namespace hexdual::test;
@@ -164,4 +169,48 @@ TEST_CASE("reserveHuge keeps the contents and, on Linux, advises huge pages for 
   INFO("VmFlags of the storage's mapping: " << flags);
   CHECK(flags.find(" hg") != std::string::npos);
 #endif
+}
+
+namespace {
+// The plain walk cornersOfVertex replaced: breadth first over facesOfCorner, a linear search for repeats.
+std::vector<std::pair<HexId, int>> cornersByPlainWalk(const Complex& cx, HexId h, int corner) {
+  std::vector<std::pair<HexId, int>> out{{h, corner}};
+  for (size_t i = 0; i < out.size(); ++i) {
+    auto [hh, cc] = out[i];
+    for (int f : tables::facesOfCorner(cc)) {
+      if (cx.gluing(hh, f).boundary()) continue;
+      std::pair<HexId, int> n{cx.gluing(hh, f).hex, cx.mappedCorner(hh, f, cc)};
+      if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+    }
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("cornersOfVertex lists a vertex's corners in the plain walk's order, large stars included") {
+  // Repeated pillows at one vertex's quads and random pillows and hex pushes elsewhere (fixed seed).
+  const unsigned seed = 20261204;
+  MESSAGE("seed " << seed);
+  std::mt19937 rng(seed);
+  Complex cx = makeGrid(4, 4, 4);
+  size_t largest = 0;
+  for (int step = 0; step < 300; ++step) {
+    const OpKind kind = step % 3 == 2 ? OpKind::HexPush : OpKind::Pillow;
+    std::vector<OpStep> steps = candidates(cx, kind);
+    if (steps.empty()) continue;
+    std::string why;
+    tryApplyStep(cx, step % 2 ? steps[rng() % steps.size()] : steps[0], &why);
+  }
+  std::map<VertexId, size_t> refs;  // corners per vertex (every star here is connected)
+  for (HexId h : cx.hexes())
+    for (int c = 0; c < 8; ++c) ++refs[cx.vertex(h, c)];
+  for (HexId h : cx.hexes())
+    for (int c = 0; c < 8; ++c) {
+      const auto walked = cx.cornersOfVertex(h, c);
+      REQUIRE(walked == cornersByPlainWalk(cx, h, c));
+      CHECK(walked.size() == refs[cx.vertex(h, c)]);
+      largest = std::max(largest, walked.size());
+    }
+  MESSAGE("largest star: " << largest << " corners");
+  CHECK(largest > 32);
 }

@@ -282,15 +282,13 @@ EdgeRef Complex::canonical(EdgeRef e) const {
 }
 
 std::vector<std::pair<HexId, int>> Complex::cornersOfVertex(HexId h, int corner) const {
-  std::vector<std::pair<HexId, int>> out{{h, corner}};
-  for (size_t i = 0; i < out.size(); ++i) {
-    auto [hh, cc] = out[i];
-    for (int f : facesOfCorner(cc)) {
-      if (gluing(hh, f).boundary()) continue;
-      std::pair<HexId, int> n{gluing(hh, f).hex, mappedCorner(hh, f, cc)};
-      if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
-    }
-  }
+  // walkStar's breadth-first walk over gluings (an open-addressing index, no allocation once warm;
+  // repeated pillows grow stars to hundreds of corners) finds the corners in the order of a plain
+  // walk over facesOfCorner with a linear search for repeats.
+  thread_local VertexStar star;
+  walkStar(h, corner, star);
+  std::vector<std::pair<HexId, int>> out(star.corners.size());
+  for (size_t i = 0; i < out.size(); ++i) out[i] = {star.corners[i].first, star.corners[i].second & 7};
   return out;
 }
 

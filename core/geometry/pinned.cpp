@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 #include <vector>
 
 #include "geometry/degenerate.hpp"
@@ -74,22 +75,40 @@ std::array<Vec3, 4> framePoints(const Complex& cx, HexId h, int c) {
           cx.position(cx.vertex(h, f[2]))};
 }
 
-unsigned pinnedMask(const Complex& cx, HexId h, int c) {
+// pinnedVertex per vertex id, each walked once per query: a certificate asks about the same few
+// vertices many times (4 per corner, over every corner of a star), and a star walk costs its size.
+// In a valid complex a vertex's star is connected (or the vertex is a tolerated non-manifold one,
+// pinned whatever the corner), so any corner of it gives the same answer.
+class PinnedVertices {
+ public:
+  explicit PinnedVertices(const Complex& cx) : cx_(cx) {}
+  bool operator()(HexId h, int c) {
+    const auto [at, added] = known_.try_emplace(cx_.vertex(h, c), false);
+    if (added) at->second = pinnedVertex(cx_, h, c);
+    return at->second;
+  }
+
+ private:
+  const Complex& cx_;
+  std::unordered_map<VertexId, bool> known_;
+};
+
+unsigned pinnedMask(PinnedVertices& pinned, HexId h, int c) {
   const int* f = kCornerFrame[c];
-  return unsigned(pinnedVertex(cx, h, c)) | unsigned(pinnedVertex(cx, h, f[0])) << 1 |
-         unsigned(pinnedVertex(cx, h, f[1])) << 2 | unsigned(pinnedVertex(cx, h, f[2])) << 3;
+  return unsigned(pinned(h, c)) | unsigned(pinned(h, f[0])) << 1 | unsigned(pinned(h, f[1])) << 2 |
+         unsigned(pinned(h, f[2])) << 3;
 }
 
 // Whether the corners of regular hexes whose only unpinned vertex is v (corner `corner` of hex h)
 // can all be positive.
-bool freeVertexFeasible(const Complex& cx, HexId h, int corner) {
+bool freeVertexFeasible(const Complex& cx, PinnedVertices& pinned, HexId h, int corner) {
   const VertexId v = cx.vertex(h, corner);
   std::vector<OneFreeCorner> corners;
   for (auto [h2, c2] : cx.cornersOfVertex(h, corner)) {
     if (degenerateByConstruction(cx, h2)) continue;
     const int moved[4] = {c2, kCornerFrame[c2][0], kCornerFrame[c2][1], kCornerFrame[c2][2]};
     for (int j : moved) {
-      const unsigned mask = pinnedMask(cx, h2, j);
+      const unsigned mask = pinnedMask(pinned, h2, j);
       if (__builtin_popcount(mask) != 3) continue;
       const int k = mask == 14 ? 0 : mask == 13 ? 1 : mask == 11 ? 2 : 3;
       if (cx.vertex(h2, k == 0 ? j : kCornerFrame[j][k - 1]) == v) corners.push_back({framePoints(cx, h2, j), k});
@@ -132,14 +151,15 @@ bool cornerStuck(const std::array<Vec3, 4>& p, unsigned fixedMask) {
 }
 
 bool pinnedInversion(const Complex& cx, HexId h) {
+  PinnedVertices pinned(cx);
   for (int c = 0; c < 8; ++c) {
     const std::array<Vec3, 4> p = framePoints(cx, h, c);
     if (det3(p[1] - p[0], p[2] - p[0], p[3] - p[0]) > 0) continue;
-    const unsigned mask = pinnedMask(cx, h, c);
+    const unsigned mask = pinnedMask(pinned, h, c);
     if (cornerStuck(p, mask)) return true;
     if (__builtin_popcount(mask) != 3) continue;
     const int k = mask == 14 ? 0 : mask == 13 ? 1 : mask == 11 ? 2 : 3;
-    if (!freeVertexFeasible(cx, h, k == 0 ? c : kCornerFrame[c][k - 1])) return true;
+    if (!freeVertexFeasible(cx, pinned, h, k == 0 ? c : kCornerFrame[c][k - 1])) return true;
   }
   return false;
 }
