@@ -41,6 +41,7 @@ EMSCRIPTEN_BINDINGS(hexdual) {
       .class_function("fourCube", &WasmMesh::fourCube, allow_raw_pointers())
       .class_function("load", &WasmMesh::load, allow_raw_pointers())
       .function("infoJson", &WasmMesh::infoJson)
+      .function("countsJson", &WasmMesh::countsJson)
       .function("save", &WasmMesh::save)
       .function("saveBytes", &WasmMesh::saveBytes)
       .function("validate", &WasmMesh::validate)

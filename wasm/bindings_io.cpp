@@ -34,6 +34,22 @@ std::string WasmMesh::infoJson() {
       "PRECONDITION", [&] { return io::infoJson(cx_, dual(), file_ ? &*file_ : nullptr); }, std::string());
 }
 
+std::string WasmMesh::countsJson() {
+  return guarded(
+      "PRECONDITION",
+      [&] {
+        if (!euler_) {
+          const Counts c = cx_.counts();
+          euler_ = c.vertices - c.edges + c.quads - c.hexes;
+        }
+        const int64_t v = cx_.numVertices(), f = cx_.numQuads(), h = cx_.numHexes();
+        return "{\"vertices\":" + std::to_string(v) + ",\"edges\":" + std::to_string(v + f - h - *euler_) +
+               ",\"quads\":" + std::to_string(f) + ",\"hexes\":" + std::to_string(h) +
+               ",\"boundaryQuads\":" + std::to_string(cx_.numBoundaryQuads()) + "}";
+      },
+      std::string());
+}
+
 std::string WasmMesh::save(const std::string& format, bool binary) {
   return guarded(
       "PRECONDITION", [&] { return io::writeMesh(cx_, formatNamed(format), binary); }, std::string());

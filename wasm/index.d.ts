@@ -371,6 +371,7 @@ export class Mesh {
   static load(bytes: Uint8Array | ArrayBuffer | ArrayBufferView | string, name?: string, options?: LoadOptions): Mesh;
   static isomorphic(a: Mesh, b: Mesh): boolean;
   info(): Info;
+  /** Constant time after the first read (info() is O(mesh) after every step). */
   readonly counts: Counts;
   readonly sheets: SheetInfo[];
   readonly chords: ChordInfo[];

@@ -216,8 +216,9 @@ export class Mesh {
     if (!this.#info) this.#info = JSON.parse(check(this.#live().infoJson()));
     return this.#info;
   }
+  /** V, E, F, H and boundary quads, in constant time after the first (no need to build info()). */
   get counts() {
-    const { vertices, edges, quads, hexes, boundaryQuads } = this.info();
+    const { vertices, edges, quads, hexes, boundaryQuads } = this.#info ?? JSON.parse(check(this.#live().countsJson()));
     return { vertices, edges, quads, hexes, boundaryQuads };
   }
   get sheets() {

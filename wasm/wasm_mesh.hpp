@@ -70,6 +70,9 @@ class WasmMesh {
   // hexesOnly: read the hex part of a file that also has tets/prisms/pyramids (io::ReadOptions).
   static WasmMesh* load(const std::string& bytes, const std::string& name, bool hexesOnly);
   std::string infoJson();
+  // V, E, F, H and boundary quads in O(1): E from the Euler characteristic V - E + F - H, counted
+  // once (one pass over the edges) and kept by every operation (docs/operations.md).
+  std::string countsJson();
   std::string save(const std::string& format, bool binary);
   // The file's bytes as a Uint8Array (binary VTK included); null on error.
   val saveBytes(const std::string& format, bool binary);
@@ -130,6 +133,7 @@ class WasmMesh {
   bool mentions(const OpStep& step, const std::string& kind, int hex, int local) const;
 
   std::optional<io::ReadReport> file_;  // what the reader found, for info() of a loaded file
+  std::optional<int64_t> euler_;        // V - E + F - H, counted at the first countsJson()
   Complex cx_;
   std::unique_ptr<DualTracker> tracker_;
   std::vector<StepRecord> history_, redo_;

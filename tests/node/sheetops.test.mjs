@@ -136,3 +136,46 @@ test('the package and the CLI give the same reports for a log of sheet operation
     rmSync(dir, { recursive: true, force: true });
   }
 });
+
+test('counts in constant time agree with info() after every kind of step, undo and redo (fixed seed)', () => {
+  const seed = 20261204;
+  console.log(`counts test seed ${seed}`);
+  let state = seed;
+  const pick = (k) => { state = (Math.imul(state, 1103515245) + 12345) >>> 0; return (state >>> 8) % k; };
+  const exact = (m) => {
+    const { vertices, edges, quads, hexes, boundaryQuads } = m.info();
+    return { vertices, edges, quads, hexes, boundaryQuads };
+  };
+  const ops = ['pillow', 'chordpush', 'hexpush', 'facecollapse', 'sheet-extract', 'sheet-pillow', 'column-collapse', 'sheet-dice', undefined];
+  let applied = 0;
+  for (const m of [Mesh.grid(4, 4, 4), Mesh.ring(8, 2, 2)]) {
+    m.smoothing = false;
+    const start = m.counts;  // the Euler characteristic is counted here, once
+    assert.deepEqual(start, exact(m));
+    for (let s = 0; s < 30; s++) {
+      const op = ops[pick(ops.length)];
+      // sheet-pillow has no candidate list: pillow the hex of a random pillow candidate (both
+      // apply there when the hex is away from self-touching; a refusal leaves the mesh as it was).
+      const steps = op === 'sheet-pillow'
+        ? m.candidates('pillow').map((st) => `sheet-pillow ${st.split(' ')[1].replace(/f\d$/, '')}`)
+        : op ? m.candidates(op) : [];
+      if (op && steps.length) {
+        try {
+          m.apply(steps[pick(steps.length)]);
+          applied++;
+        } catch (e) {
+          assert.ok(e instanceof HexdualError && op === 'sheet-pillow', String(e));
+        }
+      } else if (m.canUndo) {
+        m.undo();
+        if (pick(2)) m.redo();
+      }
+      const cheap = m.counts;  // before info() is built again
+      assert.deepEqual(cheap, exact(m), `seed ${seed}, step ${s}: ${m.log}`);
+    }
+    while (m.canUndo) m.undo();
+    assert.deepEqual(m.counts, start);
+    m.delete();
+  }
+  assert.ok(applied >= 30, `${applied} steps applied`);
+});
