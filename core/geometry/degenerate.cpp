@@ -39,10 +39,10 @@ bool oddPermutation(const std::array<VertexId, 3>& a, const std::array<VertexId,
          (at[0] > at[1]) + (at[0] > at[2]) + (at[1] > at[2]) == 3;
 }
 
-bool mirroredFrame(const Complex& cx, HexId h) {
+bool mirroredFrame(const Complex& cx, HexId h, VertexStars& stars) {
   for (int c = 0; c < 8; ++c) {
     const std::array<VertexId, 3> mine = frame(cx, h, c);
-    for (auto [h2, c2] : cx.cornersOfVertex(h, c))
+    for (auto [h2, c2] : stars.of(h, c))
       if (h2 != h && oddPermutation(mine, frame(cx, h2, c2))) return true;
   }
   return false;
@@ -50,6 +50,22 @@ bool mirroredFrame(const Complex& cx, HexId h) {
 
 }  // namespace
 
-bool degenerateByConstruction(const Complex& cx, HexId h) { return lowValenceEdge(cx, h) || mirroredFrame(cx, h); }
+const std::vector<std::pair<HexId, int>>& VertexStars::of(HexId h, int corner) {
+  const VertexId v = cx_.vertex(h, corner);
+  const auto& nm = cx_.nonManifoldVertices();
+  if (std::binary_search(nm.begin(), nm.end(), v)) return walked_ = cx_.cornersOfVertex(h, corner);
+  auto [at, added] = known_.try_emplace(v);
+  if (added) at->second = cx_.cornersOfVertex(h, corner);
+  return at->second;
+}
+
+bool degenerateByConstruction(const Complex& cx, HexId h, VertexStars& stars) {
+  return lowValenceEdge(cx, h) || mirroredFrame(cx, h, stars);
+}
+
+bool degenerateByConstruction(const Complex& cx, HexId h) {
+  VertexStars stars(cx);
+  return degenerateByConstruction(cx, h, stars);
+}
 
 }  // namespace hexdual

@@ -9,12 +9,33 @@
 // Reports call such hexes degenerate by construction, not inverted, and the smoothing leaves
 // them out of its energy (it keeps their neighbours valid instead).
 #pragma once
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
 #include "complex/complex.hpp"
 
 namespace hexdual {
 
+// The corners at a vertex (Complex::cornersOfVertex), each vertex's walked once while cx does not
+// change: a step's measure asks about the same vertices many times (8 per hex, and a certificate
+// asks again for every hex of a star). A manifold vertex's corners are the same set from any of
+// them; a tolerated non-manifold vertex's are walked from the corner asked each time.
+class VertexStars {
+ public:
+  explicit VertexStars(const Complex& cx) : cx_(cx) {}
+  const std::vector<std::pair<HexId, int>>& of(HexId h, int corner);
+
+ private:
+  const Complex& cx_;
+  std::unordered_map<VertexId, std::vector<std::pair<HexId, int>>> known_;
+  std::vector<std::pair<HexId, int>> walked_;
+};
+
 // Whether hex h has an interior edge (closed cycle) of valence 2 or less, or shares a corner
 // frame in opposite orientation with another hex.
 bool degenerateByConstruction(const Complex& cx, HexId h);
+// The same, reading the vertices' corners from `stars` (built on cx, which has not changed since).
+bool degenerateByConstruction(const Complex& cx, HexId h, VertexStars& stars);
 
 }  // namespace hexdual

@@ -101,11 +101,11 @@ unsigned pinnedMask(PinnedVertices& pinned, HexId h, int c) {
 
 // Whether the corners of regular hexes whose only unpinned vertex is v (corner `corner` of hex h)
 // can all be positive.
-bool freeVertexFeasible(const Complex& cx, PinnedVertices& pinned, HexId h, int corner) {
+bool freeVertexFeasible(const Complex& cx, PinnedVertices& pinned, VertexStars& stars, HexId h, int corner) {
   const VertexId v = cx.vertex(h, corner);
   std::vector<OneFreeCorner> corners;
-  for (auto [h2, c2] : cx.cornersOfVertex(h, corner)) {
-    if (degenerateByConstruction(cx, h2)) continue;
+  for (auto [h2, c2] : cx.cornersOfVertex(h, corner)) {  // in walk order (the list's order is the walk's)
+    if (degenerateByConstruction(cx, h2, stars)) continue;
     const int moved[4] = {c2, kCornerFrame[c2][0], kCornerFrame[c2][1], kCornerFrame[c2][2]};
     for (int j : moved) {
       const unsigned mask = pinnedMask(pinned, h2, j);
@@ -151,6 +151,11 @@ bool cornerStuck(const std::array<Vec3, 4>& p, unsigned fixedMask) {
 }
 
 bool pinnedInversion(const Complex& cx, HexId h) {
+  VertexStars stars(cx);
+  return pinnedInversion(cx, h, stars);
+}
+
+bool pinnedInversion(const Complex& cx, HexId h, VertexStars& stars) {
   PinnedVertices pinned(cx);
   for (int c = 0; c < 8; ++c) {
     const std::array<Vec3, 4> p = framePoints(cx, h, c);
@@ -159,7 +164,7 @@ bool pinnedInversion(const Complex& cx, HexId h) {
     if (cornerStuck(p, mask)) return true;
     if (__builtin_popcount(mask) != 3) continue;
     const int k = mask == 14 ? 0 : mask == 13 ? 1 : mask == 11 ? 2 : 3;
-    if (!freeVertexFeasible(cx, pinned, h, k == 0 ? c : kCornerFrame[c][k - 1])) return true;
+    if (!freeVertexFeasible(cx, pinned, stars, h, k == 0 ? c : kCornerFrame[c][k - 1])) return true;
   }
   return false;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "geometry/degenerate.hpp"
 
 namespace hexdual {
 
@@ -37,5 +38,7 @@ bool oneVertexFeasible(const std::vector<OneFreeCorner>& corners);
 // half-space that the corners of regular hexes with v as their only unpinned vertex ask for, and
 // those half-spaces have no common point (Fourier-Motzkin elimination, same tolerance).
 bool pinnedInversion(const Complex& cx, HexId h);
+// The same, reading vertex stars from `stars` (built on cx, which has not changed since).
+bool pinnedInversion(const Complex& cx, HexId h, VertexStars& stars);
 
 }  // namespace hexdual

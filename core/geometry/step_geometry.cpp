@@ -167,17 +167,18 @@ void measure(const Complex& cx, const StepBefore& before, const std::vector<HexI
     double sj = 1;
     if (before.scaledJacobianBefore(cx, h, sj)) q.before = std::min(q.before, sj);
   }
+  VertexStars stars(cx);  // cx does not change while it is measured
   for (HexId h : measured) {
     if (!cx.isHex(h)) continue;
     const double sj = scaledJacobian(cx, h);
-    const bool degenerate = degenerateByConstruction(cx, h);
+    const bool degenerate = degenerateByConstruction(cx, h, stars);
     q.after = std::min(q.after, sj);
     if (degenerate)
       q.degenerate.push_back(h);
     else
       q.afterRegular = std::min(q.afterRegular, sj);
     if (!degenerate && sj <= 0) q.inverted.push_back(h);
-    if (!degenerate && sj <= 0 && pinnedInversion(cx, h)) q.pinned.push_back(h);
+    if (!degenerate && sj <= 0 && pinnedInversion(cx, h, stars)) q.pinned.push_back(h);
   }
   q.measured = true;
 }
