@@ -81,15 +81,16 @@ std::array<Vec3, 4> framePoints(const Complex& cx, HexId h, int c) {
 // pinned whatever the corner), so any corner of it gives the same answer.
 class PinnedVertices {
  public:
-  explicit PinnedVertices(const Complex& cx) : cx_(cx) {}
+  PinnedVertices(const Complex& cx, VertexStars& stars) : cx_(cx), stars_(stars) {}
   bool operator()(HexId h, int c) {
     const auto [at, added] = known_.try_emplace(cx_.vertex(h, c), false);
-    if (added) at->second = pinnedVertex(cx_, h, c);
+    if (added) at->second = pinnedVertex(cx_, h, c, stars_);
     return at->second;
   }
 
  private:
   const Complex& cx_;
+  VertexStars& stars_;
   std::unordered_map<VertexId, bool> known_;
 };
 
@@ -129,13 +130,18 @@ bool oneVertexFeasible(const std::vector<OneFreeCorner>& corners) {
   return haveCommonPoint(std::move(hs), kTolerance * scale);
 }
 
-bool pinnedVertex(const Complex& cx, HexId h, int c) {
+bool pinnedVertex(const Complex& cx, HexId h, int c, VertexStars& stars) {
   const auto& nm = cx.nonManifoldVertices();
   if (std::binary_search(nm.begin(), nm.end(), cx.vertex(h, c))) return true;
-  for (auto [hh, cc] : cx.cornersOfVertex(h, c))
+  for (auto [hh, cc] : stars.of(h, c))
     for (int f : tables::facesOfCorner(cc))
       if (cx.isBoundary({hh, f})) return true;
   return false;
+}
+
+bool pinnedVertex(const Complex& cx, HexId h, int c) {
+  VertexStars stars(cx);
+  return pinnedVertex(cx, h, c, stars);
 }
 
 bool cornerStuck(const std::array<Vec3, 4>& p, unsigned fixedMask) {
@@ -156,7 +162,7 @@ bool pinnedInversion(const Complex& cx, HexId h) {
 }
 
 bool pinnedInversion(const Complex& cx, HexId h, VertexStars& stars) {
-  PinnedVertices pinned(cx);
+  PinnedVertices pinned(cx, stars);
   for (int c = 0; c < 8; ++c) {
     const std::array<Vec3, 4> p = framePoints(cx, h, c);
     if (det3(p[1] - p[0], p[2] - p[0], p[3] - p[0]) > 0) continue;

@@ -13,6 +13,8 @@ namespace hexdual {
 
 // Whether the vertex at corner c of hex h may never move: on the boundary or non-manifold.
 bool pinnedVertex(const Complex& cx, HexId h, int c);
+// The same, reading the vertex's corners from `stars` (built on cx, which has not changed since).
+bool pinnedVertex(const Complex& cx, HexId h, int c, VertexStars& stars);
 
 // Whether no placement of the free ones among a corner's four vertices (the corner, then its
 // frame's three; bit k of `fixedMask` = vertex k is fixed) makes its determinant positive: all
