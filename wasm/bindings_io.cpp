@@ -42,10 +42,11 @@ std::string WasmMesh::countsJson() {
           const Counts c = cx_.counts();
           euler_ = c.vertices - c.edges + c.quads - c.hexes;
         }
-        const int64_t v = cx_.numVertices(), f = cx_.numQuads(), h = cx_.numHexes();
-        return "{\"vertices\":" + std::to_string(v) + ",\"edges\":" + std::to_string(v + f - h - *euler_) +
-               ",\"quads\":" + std::to_string(f) + ",\"hexes\":" + std::to_string(h) +
-               ",\"boundaryQuads\":" + std::to_string(cx_.numBoundaryQuads()) + "}";
+        Counts c;
+        c.vertices = cx_.numVertices(), c.quads = cx_.numQuads(), c.hexes = cx_.numHexes();
+        c.edges = c.vertices + c.quads - c.hexes - *euler_;
+        c.boundaryQuads = cx_.numBoundaryQuads();
+        return io::countsJson(c);
       },
       std::string());
 }

@@ -71,7 +71,8 @@ class WasmMesh {
   static WasmMesh* load(const std::string& bytes, const std::string& name, bool hexesOnly);
   std::string infoJson();
   // V, E, F, H and boundary quads in O(1): E from the Euler characteristic V - E + F - H, counted
-  // once (one pass over the edges) and kept by every operation (docs/operations.md).
+  // once (one pass over the edges) and kept by every operation (each step's dE is derived from it;
+  // the sheet operations refuse a topology-change, docs/operations.md).
   std::string countsJson();
   std::string save(const std::string& format, bool binary);
   // The file's bytes as a Uint8Array (binary VTK included); null on error.

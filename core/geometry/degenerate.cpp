@@ -39,10 +39,12 @@ bool oddPermutation(const std::array<VertexId, 3>& a, const std::array<VertexId,
          (at[0] > at[1]) + (at[0] > at[2]) + (at[1] > at[2]) == 3;
 }
 
-bool mirroredFrame(const Complex& cx, HexId h, VertexStars& stars) {
+// starOf(h, c): the corners at hex h's corner c (walked, or read from a VertexStars).
+template <class StarOf>
+bool mirroredFrame(const Complex& cx, HexId h, StarOf&& starOf) {
   for (int c = 0; c < 8; ++c) {
     const std::array<VertexId, 3> mine = frame(cx, h, c);
-    for (auto [h2, c2] : stars.of(h, c))
+    for (auto [h2, c2] : starOf(h, c))
       if (h2 != h && oddPermutation(mine, frame(cx, h2, c2))) return true;
   }
   return false;
@@ -60,12 +62,12 @@ const std::vector<std::pair<HexId, int>>& VertexStars::of(HexId h, int corner) {
 }
 
 bool degenerateByConstruction(const Complex& cx, HexId h, VertexStars& stars) {
-  return lowValenceEdge(cx, h) || mirroredFrame(cx, h, stars);
+  return lowValenceEdge(cx, h) ||
+         mirroredFrame(cx, h, [&](HexId hh, int c) -> const std::vector<std::pair<HexId, int>>& { return stars.of(hh, c); });
 }
 
 bool degenerateByConstruction(const Complex& cx, HexId h) {
-  VertexStars stars(cx);
-  return degenerateByConstruction(cx, h, stars);
+  return lowValenceEdge(cx, h) || mirroredFrame(cx, h, [&](HexId hh, int c) { return cx.cornersOfVertex(hh, c); });
 }
 
 }  // namespace hexdual

@@ -20,7 +20,8 @@ namespace hexdual {
 // The corners at a vertex (Complex::cornersOfVertex), each vertex's walked once while cx does not
 // change: a step's measure asks about the same vertices many times (8 per hex, and a certificate
 // asks again for every hex of a star). A manifold vertex's corners are the same set from any of
-// them; a tolerated non-manifold vertex's are walked from the corner asked each time.
+// them; a tolerated non-manifold vertex's are walked from the corner asked each time (that list
+// lives until the next call).
 class VertexStars {
  public:
   explicit VertexStars(const Complex& cx) : cx_(cx) {}

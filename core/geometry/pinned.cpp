@@ -130,18 +130,26 @@ bool oneVertexFeasible(const std::vector<OneFreeCorner>& corners) {
   return haveCommonPoint(std::move(hs), kTolerance * scale);
 }
 
-bool pinnedVertex(const Complex& cx, HexId h, int c, VertexStars& stars) {
+namespace {
+// Whether vertex v, whose corners `starOf()` lists, is non-manifold or on the boundary (the walk
+// only when needed).
+template <class StarOf>
+bool pinnedAt(const Complex& cx, VertexId v, StarOf&& starOf) {
   const auto& nm = cx.nonManifoldVertices();
-  if (std::binary_search(nm.begin(), nm.end(), cx.vertex(h, c))) return true;
-  for (auto [hh, cc] : stars.of(h, c))
+  if (std::binary_search(nm.begin(), nm.end(), v)) return true;
+  for (auto [hh, cc] : starOf())
     for (int f : tables::facesOfCorner(cc))
       if (cx.isBoundary({hh, f})) return true;
   return false;
 }
+}  // namespace
+
+bool pinnedVertex(const Complex& cx, HexId h, int c, VertexStars& stars) {
+  return pinnedAt(cx, cx.vertex(h, c), [&]() -> const std::vector<std::pair<HexId, int>>& { return stars.of(h, c); });
+}
 
 bool pinnedVertex(const Complex& cx, HexId h, int c) {
-  VertexStars stars(cx);
-  return pinnedVertex(cx, h, c, stars);
+  return pinnedAt(cx, cx.vertex(h, c), [&] { return cx.cornersOfVertex(h, c); });
 }
 
 bool cornerStuck(const std::array<Vec3, 4>& p, unsigned fixedMask) {

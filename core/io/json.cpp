@@ -35,12 +35,25 @@ std::string JsonWriter::quote(const std::string& s) {
   return r + "\"";
 }
 
-std::string infoJson(const Complex& cx, const Dual& dual, const ReadReport* file) {
-  Counts c = cx.counts();
-  JsonWriter w;
-  w.beginObject();
+namespace {
+void writeCounts(JsonWriter& w, const Counts& c) {
   w.key("vertices").value(c.vertices).key("edges").value(c.edges).key("quads").value(c.quads);
   w.key("hexes").value(c.hexes).key("boundaryQuads").value(c.boundaryQuads);
+}
+}  // namespace
+
+std::string countsJson(const Counts& c) {
+  JsonWriter w;
+  w.beginObject();
+  writeCounts(w, c);
+  w.endObject();
+  return w.str();
+}
+
+std::string infoJson(const Complex& cx, const Dual& dual, const ReadReport* file) {
+  JsonWriter w;
+  w.beginObject();
+  writeCounts(w, cx.counts());
   w.key("sheets").beginArray();
   for (const Sheet& s : dual.sheets) {
     if (!s.alive) continue;

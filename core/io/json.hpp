@@ -65,6 +65,9 @@ class JsonWriter {
 // "[1,2,3]": ids as a JSON array (also the text reports' spelling).
 std::string idList(const std::vector<int32_t>& ids);
 
+// {"vertices":..,"edges":..,"quads":..,"hexes":..,"boundaryQuads":..}: the counts info() starts with.
+std::string countsJson(const Counts& c);
+
 // {"vertices":..,"edges":..,"quads":..,"hexes":..,"boundaryQuads":..,"sheets":[..],"chords":[..]},
 // and "file": {...} last (what the reader found, see ReadReport) when a report is given.
 std::string infoJson(const Complex& cx, const Dual& dual, const ReadReport* file = nullptr);
