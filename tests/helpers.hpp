@@ -1,15 +1,39 @@
 // Shared helpers for the doctest suites.
 #pragma once
+#include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <random>
 #include <string>
 
 #include <doctest/doctest.h>
 
+#include "complex/builders.hpp"
 #include "complex/complex.hpp"
 #include "dual/dual.hpp"
 
 namespace hexdual::test {
+
+// The complex read again with every vertex id moved (a shuffle drawn from `seed`, boundary ids too),
+// the hexes listed backwards and each hex's corners turned a quarter about its z axis; `perm` gets
+// the new id of each old vertex id. Gluings come from shared quads, as a file reader's do.
+inline Complex renumbered(const Complex& cx, unsigned seed, std::vector<VertexId>* permOut = nullptr) {
+  std::vector<VertexId> perm(size_t(cx.vertexCapacity()));
+  for (size_t i = 0; i < perm.size(); ++i) perm[i] = VertexId(i);
+  std::mt19937 rng(seed);
+  std::shuffle(perm.begin(), perm.end(), rng);
+  std::vector<Vec3> pos(perm.size());
+  for (size_t i = 0; i < perm.size(); ++i) pos[size_t(perm[i])] = cx.positions()[i];
+  std::vector<std::array<VertexId, 8>> hexes;
+  for (HexId h = cx.hexCapacity() - 1; h >= 0; --h) {
+    if (!cx.isHex(h)) continue;
+    auto v = cx.hexVertices(h);
+    for (VertexId& x : v) x = perm[size_t(x)];
+    hexes.push_back({v[1], v[2], v[3], v[0], v[5], v[6], v[7], v[4]});
+  }
+  if (permOut) *permOut = perm;
+  return fromConnectivity(pos, hexes);
+}
 
 // The message of the Error thrown by f, or "" when nothing was thrown.
 inline std::string errorOf(const std::function<void()>& f) {

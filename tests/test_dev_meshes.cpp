@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <map>
 
+#include "complex/canonical.hpp"
 #include "dev_mesh.hpp"
 #include "helpers.hpp"
 #include "io/io.hpp"
 #include "layout/diagram_spread.hpp"
 #include "layout/sheet_diagram.hpp"
+#include "ops/ops.hpp"
 
 using namespace hexdual;
 using hexdual::test::devMeshDir;
@@ -91,4 +93,34 @@ TEST_CASE("development-set meshes: every sheet laid out whole and checked") {
   CHECK(opened >= int(expected.size()));
   CHECK(topologies["torus"] >= 1);  // P_kitten
   CHECK(topologies["other"] >= 1);  // ECR_block_stresstest: a closed genus-3 sheet
+}
+
+TEST_CASE("development-set meshes: the free canonical form ignores any renumbering and sees a pillow") {
+  fs::path dir = test::devMeshDir();
+  if (!fs::is_directory(dir)) {
+    MESSAGE("skipped: no development-set meshes at " << dir.string());
+    return;
+  }
+  const unsigned seed = 20261205;
+  MESSAGE("seed " << seed);
+  int checked = 0;
+  for (const char* name : {"G_cylinder_2.vtk.gz", "MOAB_hex_2048.vtk.gz", "P_kitten.mesh.gz", "ECR_cap_in.mesh.gz"}) {
+    CAPTURE(name);
+    if (!fs::exists(dir / name)) continue;
+    const Complex cx = test::readDevMesh(dir / name);
+    const Complex again = test::renumbered(cx, seed);
+    CHECK(canonicalHash(cx, false) == canonicalHash(again, false));
+    CHECK(isomorphic(cx, again, false));
+    // A pillow on the first interior quad of the first hex: no longer isomorphic.
+    Complex changed = again;
+    for (int f = 0; f < 6; ++f)
+      if (!changed.gluing(0, f).boundary()) {
+        pillow(changed, {0, f});
+        break;
+      }
+    CHECK(changed.numHexes() == cx.numHexes() + 2);
+    CHECK_FALSE(isomorphic(cx, changed, false));
+    ++checked;
+  }
+  MESSAGE(checked << " meshes checked");
 }

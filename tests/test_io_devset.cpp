@@ -59,7 +59,7 @@ TEST_CASE("development set: every mesh and variant opens with exact counts or is
       {"variants/m05_version2_dim_inline.mesh", 240, 540, "", 480},
       {"variants/m06_tets_nonzero.mesh", 0, 0,
        "m06_tets_nonzero.mesh: the file holds 1 tetrahedron, 0 prisms and 0 pyramids besides 240 hexahedra; hexdual "
-       "reads hex meshes (--hexes-only reads the hex part)"},
+       "reads hex meshes (--hexes-only, or { hexesOnly: true } in the package, reads the hex part)"},
       {"variants/m07_no_end.mesh", 240, 540, "", 480},
       {"variants/m08_lowercase_indent.mesh", 240, 540, "", 480},
       {"variants/v00_base.vtk", 632, 1025, ""},
@@ -73,7 +73,7 @@ TEST_CASE("development set: every mesh and variant opens with exact counts or is
       {"variants/v08_hex_plus_quads.vtk", 632, 1025, "", 5},
       {"variants/v09_hex_plus_tet.vtk", 0, 0,
        "v09_hex_plus_tet.vtk: the file holds 1 tetrahedron, 0 prisms and 0 pyramids besides 632 hexahedra; hexdual "
-       "reads hex meshes (--hexes-only reads the hex part)"},
+       "reads hex meshes (--hexes-only, or { hexesOnly: true } in the package, reads the hex part)"},
       {"variants/v10_xml.vtu", 632, 1025, ""},
       {"variants/v11_gzip.vtk.gz", 632, 1025, ""},
       {"variants/v12_blank_lines_tabs.vtk", 632, 1025, ""},

@@ -325,7 +325,7 @@ TEST_CASE("mixed files: lower-dimensional cells skipped and counted; tets refuse
          "CELL_TYPES 7\n12\n12\n1\n3\n5\n9\n10\n";
   CHECK(errorOf([&] { io::readVtk(vtk, "mix.vtk"); }) ==
         "mix.vtk: the file holds 1 tetrahedron, 0 prisms and 0 pyramids besides 2 hexahedra; hexdual reads hex meshes "
-        "(--hexes-only reads the hex part)");
+        "(--hexes-only, or { hexesOnly: true } in the package, reads the hex part)");
   io::ReadReport rep;
   io::ReadOptions opt;
   opt.hexesOnly = true;

@@ -1,5 +1,8 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <random>
+
 #include "complex/builders.hpp"
 #include "complex/canonical.hpp"
 #include "helpers.hpp"
@@ -98,4 +101,44 @@ TEST_CASE("canonical form: isomorphic under renumbering, different after a chang
   // Closed complexes: every start flag is tried.
   CHECK(isomorphic(makeGrid(2, 1, 1), makeGrid(1, 2, 1), false));
   CHECK_FALSE(isomorphic(makeGrid(2, 1, 1), makeGrid(1, 2, 1), true));  // boundary vertex ids differ
+}
+
+TEST_CASE("canonical form with the boundary free: any renumbering of vertices and hexes, and nothing else") {
+  const Complex a = makeGrid(3, 4, 2);
+  // Every vertex id moved (boundary ones too) and the hexes listed backwards, corners rotated.
+  const unsigned seed = 20261204;
+  MESSAGE("seed " << seed);
+  std::vector<VertexId> perm;
+  const Complex b = test::renumbered(a, seed, &perm);
+  CHECK_FALSE(isomorphic(a, b));  // boundary kept: the boundary vertex ids moved
+  CHECK(isomorphic(a, b, false));
+  CHECK(canonicalHash(a, false) == canonicalHash(b, false));
+  CHECK(isomorphic(a, makeGrid(4, 3, 2), false));  // the same grid turned
+  CHECK(isomorphic(a, makeGrid(2, 3, 4), false));
+  CHECK_FALSE(isomorphic(a, makeGrid(3, 4, 3), false));  // another grid
+  // A pillow on the same quad in both numberings keeps them isomorphic; on another quad, not.
+  // Hex 5 of a is hex 24 - 1 - 5 of b, corners rotated: find b's face on the same vertices.
+  const HexId ha = 5, hb = HexId(a.hexCapacity() - 1 - 5);
+  auto faceInB = [&](int fa) {
+    std::array<VertexId, 4> want{};
+    for (int p = 0; p < 4; ++p) want[size_t(p)] = perm[size_t(a.vertex(ha, tables::kFaceCorners[size_t(fa)][size_t(p)]))];
+    std::sort(want.begin(), want.end());
+    for (int f = 0; f < 6; ++f) {
+      std::array<VertexId, 4> got{};
+      for (int p = 0; p < 4; ++p) got[size_t(p)] = b.vertex(hb, tables::kFaceCorners[size_t(f)][size_t(p)]);
+      std::sort(got.begin(), got.end());
+      if (got == want) return f;
+    }
+    return -1;
+  };
+  REQUIRE(faceInB(0) >= 0);
+  REQUIRE(faceInB(5) >= 0);
+  Complex pa = a, pb = b, other = b;
+  pillow(pa, {ha, 0});               // hex 5 is (2, 1, 0): its -x quad is interior
+  pillow(pb, {hb, faceInB(0)});      // the same quad in b
+  pillow(other, {hb, faceInB(5)});   // its +z quad (k = 0 of 2): interior too, elsewhere
+  CHECK(isomorphic(pa, pb, false));
+  CHECK_FALSE(isomorphic(pa, b, false));
+  CHECK_FALSE(isomorphic(pa, other, false));
+  CHECK(canonicalHash(pa, false) != canonicalHash(other, false));
 }

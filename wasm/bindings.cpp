@@ -20,7 +20,7 @@ namespace {
 std::string lastError() { return g_lastError; }
 std::string lastErrorCode() { return g_lastErrorCode; }
 
-int isomorphicMeshes(WasmMesh& a, WasmMesh& b) { return a.isomorphicTo(b); }
+int isomorphicMeshes(WasmMesh& a, WasmMesh& b, bool boundaryFree) { return a.isomorphicTo(b, boundaryFree); }
 
 // Bytes allocated by malloc right now: leak tests compare it before and after many calls.
 double heapUsed() { return double(mallinfo().uordblks); }

@@ -34,14 +34,14 @@ WasmMesh* WasmMesh::ring(int around, int radial, int axial) {
       "PRECONDITION", [&] { return new WasmMesh(makeRing(around, radial, axial)); }, nullptr);
 }
 
-std::string WasmMesh::canonicalHash() {
+std::string WasmMesh::canonicalHash(bool boundaryFree) {
   return guarded(
-      "PRECONDITION", [&] { return hexString(hexdual::canonicalHash(cx_)); }, std::string());
+      "PRECONDITION", [&] { return hexString(hexdual::canonicalHash(cx_, !boundaryFree)); }, std::string());
 }
 
-int WasmMesh::isomorphicTo(const WasmMesh& other) {
+int WasmMesh::isomorphicTo(const WasmMesh& other, bool boundaryFree) {
   return guarded(
-      "PRECONDITION", [&] { return isomorphic(cx_, other.cx_) ? 1 : 0; }, -1);
+      "PRECONDITION", [&] { return isomorphic(cx_, other.cx_, !boundaryFree) ? 1 : 0; }, -1);
 }
 
 val WasmMesh::hexCenters() {

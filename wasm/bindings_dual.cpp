@@ -50,7 +50,7 @@ val WasmMesh::slotsToArray(int id, bool sheet) {
   size_t n = sheet ? d.sheets.size() : d.chords.size();
   bool alive = id >= 0 && size_t(id) < n && (sheet ? d.sheets[size_t(id)].alive : d.chords[size_t(id)].alive);
   if (!alive) {
-    g_lastError = std::string(sheet ? "sheet " : "chord ") + std::to_string(id) + " does not exist";
+    g_lastError = std::string(sheet ? "sheetHexes: sheet " : "chordHexes: chord ") + std::to_string(id) + " does not exist";
     g_lastErrorCode = "PRECONDITION";
     return val::null();
   }

@@ -362,6 +362,15 @@ export interface LoadOptions {
   hexesOnly?: boolean;
 }
 
+export interface IsomorphismOptions {
+  /**
+   * 'kept' (the default): an isomorphism must keep every boundary vertex id (what the flips need:
+   * the same boundary). 'free': any renumbering of vertices and hexes, e.g. a mesh and its copy
+   * after `save` and `load`, which number the ids densely again.
+   */
+  boundary?: 'kept' | 'free';
+}
+
 export interface Mesh extends MaybeDisposable {}
 export class Mesh {
   private constructor(raw: never);
@@ -369,7 +378,8 @@ export class Mesh {
   static ring(around: number, radial: number, axial: number): Mesh;
   static fourCube(): Mesh;
   static load(bytes: Uint8Array | ArrayBuffer | ArrayBufferView | string, name?: string, options?: LoadOptions): Mesh;
-  static isomorphic(a: Mesh, b: Mesh): boolean;
+  /** Same complex up to renumbering: boundary 'kept' (default) lets only interior vertex ids differ, 'free' any. */
+  static isomorphic(a: Mesh, b: Mesh, options?: IsomorphismOptions): boolean;
   info(): Info;
   /** Constant time after the first read (info() is O(mesh) after every step). */
   readonly counts: Counts;
@@ -397,7 +407,7 @@ export class Mesh {
   /** The sheet through a picked edge or the chord through a picked quad. */
   select(pick: { hex: number; edge: number } | { hex: number; face: number }): Selection;
   flip(name: FlipName, hexes: Iterable<number>, options?: { viaAtomic?: boolean }): StepReport[];
-  canonicalHash(): string;
+  canonicalHash(options?: IsomorphismOptions): string;
   memoryBytes(): number;
   validate(): void;
   save(format: Format, options?: { binary?: boolean }): Uint8Array;

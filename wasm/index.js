@@ -118,7 +118,15 @@ function toBytes(what, data) {
   if (typeof data === 'string') return new TextEncoder().encode(data);
   if (data instanceof Uint8Array) return data;
   if (data instanceof ArrayBuffer || ArrayBuffer.isView(data)) return new Uint8Array(data.buffer ?? data, data.byteOffset ?? 0, data.byteLength);
-  throw new HexdualError('PRECONDITION', `${what} must be a Uint8Array, ArrayBuffer or string`);
+  throw new HexdualError('PRECONDITION', `${what} must be a string, a Uint8Array (or another typed array or DataView) or an ArrayBuffer, not ${describe(data)}`);
+}
+// { boundary: 'kept' | 'free' } of isomorphic() and canonicalHash(): true for 'free'.
+function boundaryFree(what, options) {
+  const boundary = options?.boundary ?? 'kept';
+  if (boundary !== 'kept' && boundary !== 'free') {
+    throw new HexdualError('PRECONDITION', `${what}: boundary must be 'kept' or 'free', not ${describe(boundary)}`);
+  }
+  return boundary === 'free';
 }
 function intVector(what, list) {
   if (!list || typeof list[Symbol.iterator] !== 'function') throw new HexdualError('PRECONDITION', `${what} must be a list of hex ids`);
@@ -198,9 +206,14 @@ export class Mesh {
     if (typeof name !== 'string') throw new HexdualError('PRECONDITION', 'load: name must be a string');
     return new Mesh(check(module().WasmMesh.load(data, name, !!options.hexesOnly)));
   }
-  /** Whether two meshes are the same complex up to renumbering, boundary kept. */
-  static isomorphic(a, b) {
-    return check(module().isomorphic(a.#live(), b.#live())) === 1;
+  /**
+   * Whether two meshes are the same complex up to renumbering. boundary 'kept' (the default): only
+   * interior vertex ids may differ; 'free': any renumbering (after save and load, or steps that
+   * renumber the boundary).
+   */
+  static isomorphic(a, b, options = {}) {
+    const free = boundaryFree('isomorphic', options);
+    return check(module().isomorphic(a.#live(), b.#live(), free)) === 1;
   }
 
   #live() {
@@ -277,6 +290,9 @@ export class Mesh {
    */
   apply(step) {
     if (typeof step !== 'string') throw new HexdualError('PRECONDITION', 'apply: step must be a string such as "pillow h13f5"');
+    if (step.includes(';')) {
+      throw new HexdualError('PARSE', `apply: takes one step, and ${describe(step)} holds ${step.split(';').length} parts; applyLog applies a log of several ('v1;pillow h13f5;hexpush h13f5')`);
+    }
     const report = toReport(JSON.parse(check(this.#live().applyReport(step))));
     this.#changed();
     return report;
@@ -385,9 +401,9 @@ export class Mesh {
       v.delete();
     }
   }
-  /** 64-bit hash (16 hex digits) of the canonical form, boundary kept: equal for isomorphic meshes. */
-  canonicalHash() {
-    return check(this.#live().canonicalHash());
+  /** 64-bit hash (16 hex digits) of the canonical form: equal for isomorphic meshes (see isomorphic's boundary option). */
+  canonicalHash(options = {}) {
+    return check(this.#live().canonicalHash(boundaryFree('canonicalHash', options)));
   }
   /** Number of sheets and chords, without building the JSON description (cheap after the first call). */
   dualSizes() {
@@ -405,6 +421,7 @@ export class Mesh {
   /** The mesh as a file: 'vtk' (ASCII, or binary with { binary: true }), 'mesh' or 'hxd'. */
   save(format, { binary = false } = {}) {
     if (!FORMATS.includes(format)) throw new HexdualError('PRECONDITION', `unknown format ${describe(format)} (vtk, mesh or hxd)`);
+    if (binary && format !== 'vtk') throw new HexdualError('PRECONDITION', `save: binary applies to 'vtk' only, not ${describe(format)}`);
     return check(this.#live().saveBytes(format, !!binary));
   }
   // ---- view data (explorer) ----

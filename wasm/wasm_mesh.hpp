@@ -41,9 +41,10 @@ class WasmMesh {
   // The closed boundary of the 4-cube: the complex the stored flip decompositions are written for.
   static WasmMesh* fourCube();
   static WasmMesh* ring(int around, int radial, int axial);
-  std::string canonicalHash();
-  // 1 when isomorphic (boundary kept), 0 when not, -1 on error.
-  int isomorphicTo(const WasmMesh& other);
+  // boundaryFree: any isomorphism (vertex ids free), else the boundary's vertex ids kept.
+  std::string canonicalHash(bool boundaryFree);
+  // 1 when isomorphic, 0 when not, -1 on error.
+  int isomorphicTo(const WasmMesh& other, bool boundaryFree);
   // Centroid of every hex, 3 numbers per hex id (NaN for removed ids).
   val hexCenters();
   double memoryBytes() const { return double(cx_.memoryBytes()); }

@@ -134,11 +134,85 @@ std::vector<int64_t> encodeFrom(const Complex& cx, HexId start, const Frame& sta
   return out;
 }
 
+// Classes of hexes that every isomorphism keeps: first by the number of boundary faces, then
+// refined by the neighbours' classes across the six faces (sorted), until the number of classes
+// stops growing (colour refinement; a few rounds). Class ids are ranks of sorted keys, so they
+// do not depend on the numbering.
+std::vector<int32_t> hexClasses(const Complex& cx) {
+  std::vector<int32_t> cls(size_t(cx.hexCapacity()), -1);
+  for (HexId h : cx.hexes()) {
+    int open = 0;
+    for (int f = 0; f < 6; ++f) open += cx.gluing(h, f).boundary() ? 1 : 0;
+    cls[size_t(h)] = open;
+  }
+  using Key = std::array<int32_t, 7>;
+  std::vector<std::pair<Key, HexId>> keyed;
+  size_t classes = 0;
+  for (int round = 0; round < 16; ++round) {
+    keyed.clear();
+    for (HexId h : cx.hexes()) {
+      Key k{};
+      k[0] = cls[size_t(h)];
+      for (int f = 0; f < 6; ++f) {
+        const Gluing g = cx.gluing(h, f);
+        k[size_t(f + 1)] = g.boundary() ? -1 : cls[size_t(g.hex)];
+      }
+      std::sort(k.begin() + 1, k.end());
+      keyed.push_back({k, h});
+    }
+    std::sort(keyed.begin(), keyed.end());
+    int32_t next = -1;
+    for (size_t i = 0; i < keyed.size(); ++i) {
+      if (i == 0 || keyed[i].first != keyed[i - 1].first) ++next;
+      cls[size_t(keyed[i].second)] = next;
+    }
+    if (size_t(next + 1) == classes) break;
+    classes = size_t(next + 1);
+  }
+  return cls;
+}
+
+// Start flags for the free form: the hexes of the smallest class (ties to the smaller class id),
+// each in the frames whose neighbours' classes, read across canonical faces 0..5, are smallest.
+// Every isomorphism keeps both choices, so the minimum over these flags is still canonical; a
+// complex with a boundary usually tries a handful of flags instead of 48 per hex.
+std::vector<std::pair<HexId, int>> startFlags(const Complex& cx) {
+  const std::vector<int32_t> cls = hexClasses(cx);
+  std::vector<int32_t> size;
+  for (HexId h : cx.hexes()) {
+    if (size.size() <= size_t(cls[size_t(h)])) size.resize(size_t(cls[size_t(h)]) + 1, 0);
+    ++size[size_t(cls[size_t(h)])];
+  }
+  const int32_t pick = int32_t(std::min_element(size.begin(), size.end()) - size.begin());
+  std::vector<std::pair<HexId, int>> flags;
+  for (HexId h : cx.hexes()) {
+    if (cls[size_t(h)] != pick) continue;
+    std::array<int32_t, 6> best{};
+    std::vector<int> frames;
+    for (int k = 0; k < 48; ++k) {
+      const Frame F = frameOf(k);
+      std::array<int32_t, 6> t{};
+      for (int j = 0; j < 6; ++j) {
+        const Gluing g = cx.gluing(h, actualFace(F, j));
+        t[size_t(j)] = g.boundary() ? -1 : cls[size_t(g.hex)];
+      }
+      if (frames.empty() || t < best) {
+        best = t;
+        frames.assign(1, k);
+      } else if (t == best) {
+        frames.push_back(k);
+      }
+    }
+    for (int k : frames) flags.push_back({h, k});
+  }
+  return flags;
+}
+
 }  // namespace
 
 std::vector<int64_t> canonicalForm(const Complex& cx, bool fixedBoundary) { return canonicalLabelling(cx, fixedBoundary).form; }
 
-CanonicalLabelling canonicalLabelling(const Complex& cx, bool fixedBoundary) {
+CanonicalLabelling canonicalLabelling(const Complex& cx, bool fixedBoundary, FreeStarts starts) {
   std::vector<uint8_t> keepId(size_t(cx.vertexCapacity()), 0);
   CanonicalLabelling bestL;
   std::vector<int64_t>& best = bestL.form;
@@ -188,8 +262,12 @@ CanonicalLabelling canonicalLabelling(const Complex& cx, bool fixedBoundary) {
     }
     return bestL;
   }
-  for (HexId h : cx.hexes())
-    for (int k = 0; k < 48; ++k) consider(encodeFrom(cx, h, frameOf(k), keepId, &order, &frames));
+  if (starts == FreeStarts::Every) {
+    for (HexId h : cx.hexes())
+      for (int k = 0; k < 48; ++k) consider(encodeFrom(cx, h, frameOf(k), keepId, &order, &frames));
+    return bestL;
+  }
+  for (const auto& [h, k] : startFlags(cx)) consider(encodeFrom(cx, h, frameOf(k), keepId, &order, &frames));
   return bestL;
 }
 

@@ -3,7 +3,10 @@
 // its neighbour and the relative frame across the gluing.
 // With a fixed boundary (the default) the isomorphism must keep every boundary vertex id, hence
 // every boundary quad: the start flag is read off the smallest boundary quad. A complex without
-// boundary (or fixedBoundary = false) tries every start flag: quadratic, for small complexes.
+// boundary (or fixedBoundary = false: any isomorphism, vertex ids free) starts from the hexes of
+// the smallest class of a colour refinement (boundary faces, then the neighbours' classes), in
+// the frames that read their neighbours' classes smallest: a handful of flags on most meshes,
+// every hex (quadratic) only when all hexes look alike.
 // Assumes a connected complex.
 #pragma once
 #include <cstdint>
@@ -31,6 +34,12 @@ struct CanonicalLabelling {
   std::vector<HexId> order;
   std::vector<std::array<int8_t, 8>> frame;  // per order index: canonical bit-corner -> local corner
 };
-CanonicalLabelling canonicalLabelling(const Complex& cx, bool fixedBoundary = true);
+// Where a free form starts: from the refined start flags (canonicalForm, canonicalHash and
+// isomorphic use these), or from all 48 frames of every hex (quadratic). Both are canonical, but
+// for a complex with symmetries they can pick different labellings: the flip replay
+// (flips/search_replay.cpp) matches a stored region with a host's by the labelling of every start,
+// which its stored decompositions were replayed and verified with.
+enum class FreeStarts { Refined, Every };
+CanonicalLabelling canonicalLabelling(const Complex& cx, bool fixedBoundary = true, FreeStarts starts = FreeStarts::Refined);
 
 }  // namespace hexdual

@@ -183,8 +183,8 @@ Replay::Replay(const SearchProblem& problem, const Complex& mesh, const std::vec
 // Boundary vertex map (problem -> embedding): the before sides are isomorphic with boundary kept,
 // so match them by their canonical labellings with both boundaries left free.
 void Replay::matchBeforeSides() {
-  CanonicalLabelling lp = canonicalLabelling(subcomplex(pb.start, regionP), false);
-  CanonicalLabelling le = canonicalLabelling(subcomplex(where.mesh, where.before), false);
+  CanonicalLabelling lp = canonicalLabelling(subcomplex(pb.start, regionP), false, FreeStarts::Every);
+  CanonicalLabelling le = canonicalLabelling(subcomplex(where.mesh, where.before), false, FreeStarts::Every);
   if (lp.form != le.form) throw Error(what + ": the hexes are not the before side");
   for (size_t i = 0; i < lp.order.size(); ++i)
     for (int b = 0; b < 8; ++b)

@@ -56,7 +56,7 @@ Complex assemble(CellSoup& soup, const std::string& name, const ReadOptions& opt
                 plural(kc(CellKind::Prism), "prism", "prisms") + " and " +
                 plural(kc(CellKind::Pyramid), "pyramid", "pyramids") + " besides " +
                 plural(int64_t(soup.hexes.size()), "hexahedron", "hexahedra") +
-                "; hexdual reads hex meshes (--hexes-only reads the hex part)");
+                "; hexdual reads hex meshes (--hexes-only, or { hexesOnly: true } in the package, reads the hex part)");
   if (soup.hexes.empty()) throw Error(name + ": the file holds no hexahedra");
   // Points no hex uses are dropped (a Complex has no isolated vertices) and counted.
   const int64_t np = int64_t(soup.points.size());

@@ -211,6 +211,26 @@ test('canonicalHash and isomorphic: renumbering-invariant, change-sensitive', ()
   b.delete();
 });
 
+test("isomorphic and canonicalHash with { boundary: 'free' }: a copy saved after a sheet extraction, and extraction then its inverse", () => {
+  const m = Mesh.grid(3, 3, 3);
+  const report = m.apply('sheet-extract h13e0');
+  const copy = Mesh.load(m.save('hxd'), 'copy.hxd');  // ids numbered densely again, boundary ones too
+  assert.equal(Mesh.isomorphic(m, copy), false);      // boundary kept: its vertex ids moved
+  assert.ok(Mesh.isomorphic(m, copy, { boundary: 'free' }));
+  assert.equal(m.canonicalHash({ boundary: 'free' }), copy.canonicalHash({ boundary: 'free' }));
+  assert.notEqual(m.canonicalHash({ boundary: 'free' }), m.canonicalHash());
+  m.apply(report.inverse);
+  const grid = Mesh.grid(3, 3, 3);
+  assert.ok(Mesh.isomorphic(m, grid, { boundary: 'free' }));
+  assert.ok(Mesh.isomorphic(Mesh.grid(3, 3, 4), Mesh.grid(4, 3, 3), { boundary: 'free' }));
+  assert.equal(Mesh.isomorphic(Mesh.grid(3, 3, 4), Mesh.grid(3, 3, 3), { boundary: 'free' }), false);
+  grid.apply('pillow h13f5');
+  assert.equal(Mesh.isomorphic(m, grid, { boundary: 'free' }), false);
+  assert.throws(() => Mesh.isomorphic(m, grid, { boundary: 'loose' }), { code: 'PRECONDITION', message: "isomorphic: boundary must be 'kept' or 'free', not 'loose'" });
+  assert.throws(() => m.canonicalHash({ boundary: 1 }), { code: 'PRECONDITION', message: "canonicalHash: boundary must be 'kept' or 'free', not 1" });
+  for (const x of [m, copy, grid]) x.delete();
+});
+
 test('dualSizes counts live sheets and chords: after pillow then its inverse, the start counts again', () => {
   const m = Mesh.grid(3, 3, 3);
   const start = m.dualSizes();
@@ -220,5 +240,20 @@ test('dualSizes counts live sheets and chords: after pillow then its inverse, th
   m.apply(r.inverse);
   assert.deepEqual(m.dualSizes(), start);
   assert.equal(m.sheets.length, start.sheets);
+  m.delete();
+});
+
+test('apply takes one step (a log with ; is refused and points to applyLog); save refuses binary for formats without it', () => {
+  const m = Mesh.grid(3, 3, 3);
+  const hash = m.canonicalHash();
+  assert.throws(() => m.apply('pillow h13f5;hexpush h13f5'), {
+    code: 'PARSE',
+    message: "apply: takes one step, and 'pillow h13f5;hexpush h13f5' holds 2 parts; applyLog applies a log of several ('v1;pillow h13f5;hexpush h13f5')",
+  });
+  assert.equal(m.canonicalHash(), hash);
+  assert.equal(m.log, 'v1');
+  assert.throws(() => m.save('mesh', { binary: true }), { code: 'PRECONDITION', message: "save: binary applies to 'vtk' only, not 'mesh'" });
+  assert.throws(() => m.save('hxd', { binary: true }), { code: 'PRECONDITION', message: "save: binary applies to 'vtk' only, not 'hxd'" });
+  assert.ok(m.save('vtk', { binary: true }).length > 0);
   m.delete();
 });

@@ -25,7 +25,10 @@ async function example(): Promise<number> {
   const svg: string = diagramToSVG(d);
   const centres: Float64Array = m.hexCenters();
   const same: boolean = Mesh.isomorphic(m, Mesh.load(bytes, 'x.hxd'));
-  const hash: string = m.canonicalHash();
+  const hash: string = m.canonicalHash() + m.canonicalHash({ boundary: 'free' });
+  const sameFree: boolean = Mesh.isomorphic(m, m, { boundary: 'free' });
+  // @ts-expect-error: boundary is 'kept' or 'free'
+  Mesh.isomorphic(m, m, { boundary: 'loose' });
   const splits: string[] = m.ringSplits({ hex: 0, edge: 0 }, { maxEdges: 6 });
   const records: DecompositionRecord[] = decompositions();
   const p: Preview = m.preview('sheet-extract h13e0');
@@ -52,7 +55,7 @@ async function example(): Promise<number> {
   new Mesh(null);
   return info.hexes + rb.indices.length + hexes.length + bytes.length + heapBytes() + (topo === 'disk' ? 1 : 0) +
     (inverse ?? '').length + reports.length + undone.length + redone.delta.H + log.length + cands.length + flipped.length +
-    svg.length + centres.length + (same ? 1 : 0) + hash.length + (code ? 1 : 0) + flips().length +
+    svg.length + centres.length + (same ? 1 : 0) + (sameFree ? 1 : 0) + hash.length + (code ? 1 : 0) + flips().length +
     splits.length + records.filter((r) => r.found && r.steps !== null).length + previewed +
     sel.hexes.length + ends.length + chordSel.steps.length + sheetOp.length + sheetCands.length;
 }

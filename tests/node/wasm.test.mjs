@@ -127,7 +127,8 @@ test('errors arrive as HexdualError with a code and the C++ message', () => {
     is('PARSE', "p.vtk:4: dataset type 'POLYDATA' is not supported; only UNSTRUCTURED_GRID holds hexahedra"));
   assert.throws(() => Mesh.load('', 'empty.vtk'), is('PARSE', 'empty.vtk: the file is empty'));
   const m = Mesh.grid(1, 1, 1);
-  assert.throws(() => m.sheetHexes(99), is('PRECONDITION', 'sheet 99 does not exist'));
+  assert.throws(() => m.sheetHexes(99), is('PRECONDITION', 'sheetHexes: sheet 99 does not exist'));
+  assert.throws(() => m.chordHexes(-1), is('PRECONDITION', 'chordHexes: chord -1 does not exist'));
   assert.throws(() => m.save('obj'), is('PRECONDITION', "unknown format 'obj' (vtk, mesh or hxd)"));
   assert.throws(() => m.apply('frobnicate h1'), is('PARSE', "oplog: position 0: unknown operation at 'frobnicate'"));
   assert.throws(() => m.undo(), is('PRECONDITION', 'undo: nothing to undo'));
@@ -252,7 +253,8 @@ test('mixed files: hexesOnly reads the hex part; without it the file is refused 
     '0 0 0', '1 0 0', '1 1 0', '0 1 0', '0 0 1', '1 0 1', '1 1 1', '0 1 1', '0 0 2', '1 0 2', '1 1 2', '0 1 2', '0.5 0.5 3',
     'CELLS 3 23', '8 0 1 2 3 4 5 6 7', '8 4 5 6 7 8 9 10 11', '4 8 9 10 12', 'CELL_TYPES 3', '12', '12', '10', '',
   ].join('\n');
-  assert.throws(() => Mesh.load(vtk, 'mixed.vtk'), (e) => e instanceof HexdualError && e.code === 'PARSE' && /tetrahedr/.test(e.message));
+  assert.throws(() => Mesh.load(vtk, 'mixed.vtk'), (e) => e instanceof HexdualError && e.code === 'PARSE' && /tetrahedr/.test(e.message) &&
+    e.message.endsWith('(--hexes-only, or { hexesOnly: true } in the package, reads the hex part)'));
   const m = Mesh.load(vtk, 'mixed.vtk', { hexesOnly: true });
   const info = m.info();
   assert.equal(info.hexes, 2);

@@ -43,11 +43,15 @@ after(async () => {
   if (work) rmSync(work, { recursive: true, force: true });
 });
 
-test('the tarball holds the entries, the .wasm, the types and the LICENSE, and nothing else', () => {
+test('the tarball holds the entries, the .wasm, the types, the LICENSE and the docs api.md links to, and nothing else', () => {
   assert.deepEqual(files, [
-    'LICENSE', 'README.md', 'docs/api.md', 'package.json', 'wasm/dist/hexdual.mjs', 'wasm/dist/hexdual.wasm', 'wasm/index.d.ts',
+    'LICENSE', 'README.md', 'docs/api.md', 'docs/cli.md', 'docs/flips.md', 'docs/operations.md', 'docs/oplog.md',
+    'docs/sheet-diagrams.md', 'package.json', 'wasm/dist/hexdual.mjs', 'wasm/dist/hexdual.wasm', 'wasm/index.d.ts',
     'wasm/index.js', 'wasm/index.node.js',
   ]);
+  // Every page api.md links to is in the tarball, so the docs read on their own.
+  const api = readFileSync(join(root, 'docs/api.md'), 'utf8');
+  for (const [, page] of api.matchAll(/\]\(([a-z-]+\.md)/g)) assert.ok(files.includes(`docs/${page}`), `docs/${page} (linked from api.md)`);
   assert.equal(pkg.dependencies, undefined, 'no runtime dependencies');
   assert.equal(pkg.sideEffects, false);
   const gz = execFileSync('gzip', ['-c', join(root, 'wasm/dist/hexdual.wasm')]).length;
