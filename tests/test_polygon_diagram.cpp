@@ -94,7 +94,7 @@ TEST_CASE("a torus sheet is cut open into the square a b a^-1 b^-1") {
       ++pieces[ch.chord];
     }
     CHECK(pieces.size() == 10);
-    CHECK(contains(dg.note, "cut open along 2 seam(s) into a fundamental polygon a b a"));
+    CHECK(contains(dg.note, "cut open along 2 seams: dashed sides with the same letter are the same seam (sides in order: a b a"));
     CHECK(contains(diagramJson(dg), "\"arcs\":[{\"label\":\"a\",\"pair\":0,\"sign\":1,\"points\":[["));
     CHECK(contains(diagramSvg(dg), ">b\u207b\u00b9</text>"));
   }

@@ -131,7 +131,13 @@ function singularSummary(root, sing) {
 export function createPanel(root, actions, view) {
   const $ = (sel) => document.querySelector(sel);
   const build = () => actions.build($('#mesh-kind').value, $('#mesh-dims').value);
+  let shownSpec = null; // the mesh spec the chooser shows (set from the state only when it changes)
   $('#mesh-build').addEventListener('click', build);
+  // Leaving a file's entry for a generator: its dimensions and Build come back.
+  $('#mesh-kind').addEventListener('change', (e) => {
+    const generator = e.target.value !== 'file';
+    $('#mesh-dims').hidden = $('#mesh-build').hidden = !generator;
+  });
   $('#mesh-dims').addEventListener('keydown', (e) => e.key === 'Enter' && build());
   $('#mesh-file').addEventListener('change', async (e) => {
     const file = e.target.files[0];
@@ -209,9 +215,21 @@ export function createPanel(root, actions, view) {
       $('#error').textContent = s.error || '';
       $('#notice').textContent = s.notice || '';
       for (const b of document.querySelectorAll('.tabs button')) b.classList.toggle('on', b.dataset.view === s.view);
-      if (s.spec && s.spec.kind !== 'file') {
-        $('#mesh-kind').value = s.spec.kind;
-        if (s.spec.dims.length) $('#mesh-dims').value = s.spec.dims.join('x');
+      if (s.spec && JSON.stringify(s.spec) !== shownSpec) {
+        shownSpec = JSON.stringify(s.spec);
+        // A file shows as its own entry ("file: NAME"); choosing a generator and Build replaces it.
+        let fileOption = $('#mesh-kind option[value="file"]');
+        if (s.spec.kind === 'file') {
+          if (!fileOption) fileOption = $('#mesh-kind').appendChild(new Option('', 'file'));
+          fileOption.textContent = `file: ${s.spec.name}`;
+          $('#mesh-kind').value = 'file';
+          $('#mesh-dims').hidden = $('#mesh-build').hidden = true;
+        } else {
+          fileOption?.remove();
+          $('#mesh-kind').value = s.spec.kind;
+          $('#mesh-dims').hidden = $('#mesh-build').hidden = false;
+          if (s.spec.dims.length) $('#mesh-dims').value = s.spec.dims.join('x');
+        }
       }
       $('#shrink').value = String(s.shrink);
       $('#overlay').checked = s.overlay;

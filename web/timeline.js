@@ -57,7 +57,15 @@ export function createTimeline(root, actions) {
       $('#tl-report').textContent = r
         ? `${r.step}: +${r.created.length} / −${r.removed.length} hexes · sheets ${r.changedSheets.join(', ') || '–'} · chords ${r.changedChords.slice(0, 8).join(', ') || '–'}${r.changedChords.length > 8 ? ' …' : ''}`
         : '';
-      $('#tl-steps .current')?.scrollIntoView({ block: 'nearest', inline: 'nearest' });
+      $('#tl-report').title = $('#tl-report').textContent;
+      // Scroll only the strip of chips (scrollIntoView would move the page and the buttons too).
+      const strip = $('#tl-steps'), cur = $('#tl-steps .current');
+      if (cur) {
+        const left = cur.getBoundingClientRect().left - strip.getBoundingClientRect().left + strip.scrollLeft;
+        const right = left + cur.offsetWidth;
+        if (left < strip.scrollLeft) strip.scrollLeft = left - 4;
+        else if (right > strip.scrollLeft + strip.clientWidth) strip.scrollLeft = right - strip.clientWidth + 4;
+      }
     },
   };
 }

@@ -54,7 +54,12 @@ SheetDiagram layoutPolygon(const Dual& dual, int sheet, const MidSurface& s) {
     d.arcs.push_back(std::move(arc));
   }
   d.euler = euler;
-  d.note = "cut open along " + std::to_string(poly.pairs) + " seam(s) into a fundamental polygon " + word;
+  // For a reader who has not met fundamental polygons: dashed sides with the same letter are one
+  // seam, glued back together; ∂ sides are the mesh boundary. The word lists the sides in order.
+  const bool boundary = word.find("\u2202") != std::string::npos;
+  d.note = "cut open along " + std::to_string(poly.pairs) + (poly.pairs == 1 ? " seam" : " seams") +
+           ": dashed sides with the same letter are the same seam" + (boundary ? ", \u2202 the mesh boundary" : "") +
+           " (sides in order: " + word + ")";
   return d;
 }
 

@@ -71,7 +71,7 @@ startPage(() => {
     sheet: (f) => sheetWith(f.mesh, [7, 12, 17, 112]), // the x = 2 sheet, through the column
     sheetChips: true,
     emphasis: (f, id) => (f.stage === 0 && [37, 62, 87].includes(id) ? '#7aa6ff' : null),
-    caption: 'TK03 §4.4: two hex pushes, then a ring collapse of a closed chord they made. Blue: the starting column; orange: hexes the steps created.',
+    caption: 'TK03 §4.4: two hex pushes, then a ring collapse of a closed chord they made. Orange: hexes the steps created; at the start (show before), the column of hexes 37, 62, 87 in blue.',
   });
   createFigure(document.getElementById('fig-face'), {
     title: 'face collapse',

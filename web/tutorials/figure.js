@@ -194,8 +194,10 @@ export function createFigure(root, opts) {
     if (id === state.picked) return PICKED;
     const extra = opts.emphasis?.(api, id);
     if (extra) return extra;
-    if (opts.sheetIn3d !== false && state.sheet !== null && dual.bySheet.get(state.sheet)?.has(id)) return sheetColor(state.sheet);
+    // New hexes are orange even on the chosen sheet (every caption says so); the rest of the sheet
+    // keeps its colour.
     if (created(id)) return NEW;
+    if (opts.sheetIn3d !== false && state.sheet !== null && dual.bySheet.get(state.sheet)?.has(id)) return sheetColor(state.sheet);
     return null;
   }
 

@@ -39,6 +39,6 @@ startPage(() => {
     labels: [`${PILLOW}: a new sphere sheet`, `${inverse}: the inverse`],
     sheet: (f) => sheetOf(f.mesh, (s) => s.topology === 'sphere') ?? sheetWith(f.mesh, [13, 22, 4]),
     sheetChips: true,
-    caption: 'Before: a sheet through the quad’s dual edge. After: the pillow’s sphere sheet (orange crossing = the opened face, drawn outside). Pick any sheet to compare.',
+    caption: 'Before: a sheet through the quad’s dual edge. After: the pillow’s sphere sheet of its two new hexes (both orange; the face of the first is opened and drawn as the outside). Pick any sheet to compare.',
   });
 });

@@ -224,9 +224,23 @@ function listPuzzles() {
       return b;
     }),
   );
-  // On a phone the list is one scrolling row: bring the current puzzle into it.
+  watchPuzzleList();
+  revealCurrentPuzzle();
+  requestAnimationFrame(revealCurrentPuzzle); // after layout, when a puzzle opens from the URL
+}
+
+// On a phone the list is one scrolling row: bring the current puzzle into it (also when the width
+// changes, e.g. a phone turned, and the row starts or stops scrolling).
+function revealCurrentPuzzle() {
   const list = $('puzzle-list'), current = list.querySelector('[aria-current=true]');
-  if (current && list.scrollWidth > list.clientWidth) list.scrollLeft = current.offsetLeft - list.offsetLeft - 12;
+  if (!current || list.scrollWidth <= list.clientWidth) return;
+  list.scrollLeft += current.getBoundingClientRect().left - list.getBoundingClientRect().left - 12;
+}
+let watchingList = false;
+function watchPuzzleList() {
+  if (watchingList || typeof ResizeObserver === 'undefined') return;
+  watchingList = true;
+  new ResizeObserver(() => revealCurrentPuzzle()).observe($('puzzle-list'));
 }
 
 /** Opens a puzzle with steps (from the URL or storage); steps the engine refuses are dropped. */
@@ -244,6 +258,7 @@ function open(id, steps) {
   $('puzzle-goal').textContent = p.goal;
   $('puzzle-next-text').textContent = '';
   $('puzzle-typed-result').textContent = '';
+  $('puzzle-typed').value = ''; // typed steps name another puzzle's hexes
   showHints();
   makeFigure(p);
   const wanted = steps ?? progress.steps(p.id);

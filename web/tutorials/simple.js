@@ -62,7 +62,7 @@ startPage(() => {
     hint: 'Click a hex to count at its dual vertex; hover to see its sheets.',
     sheetChips: true,
     onUpdate: showIncidences,
-    caption: 'A 3×3×3 grid; the picked hex in red. After the step the pillow’s two new hexes (orange) are drawn pulled apart.',
+    caption: 'A 3×3×3 grid; the picked hex in pink. After the step the pillow’s two new hexes (orange) are drawn pulled apart.',
   });
   const input = document.getElementById('hex-id');
   const pickTyped = () => fig.pick(Number(input.value));
