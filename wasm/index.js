@@ -72,11 +72,13 @@ export async function init(options = {}, loadDefault = defaultWasmBinary) {
     modulePromise = (async () => {
       requireWasmExceptions();
       const opts = { ...options };
+      if (opts.wasmBinary) checkWasmBinary(opts.wasmBinary);  // before Emscripten, which prints its own noise
       if (!opts.wasmBinary && !opts.locateFile) opts.wasmBinary = await loadDefault();
       try {
         return await createHexdual(opts);
       } catch (e) {
-        throw e instanceof HexdualError ? e : new HexdualError('IO', `hexdual: the WebAssembly module did not load: ${e?.message ?? e}`);
+        const why = String(e?.message ?? e).replace(/\s*Build with -s ASSERTIONS=1 for more info\.?/, '');
+        throw e instanceof HexdualError ? e : new HexdualError('IO', `hexdual: the WebAssembly module did not load: ${why}`);
       }
     })();
     modulePromise.catch(() => {
@@ -85,6 +87,16 @@ export async function init(options = {}, loadDefault = defaultWasmBinary) {
   }
   M = await modulePromise;
   return M;
+}
+
+// init's wasmBinary: bytes of a WebAssembly module (it starts with \0asm), else an IO error.
+function checkWasmBinary(bytes) {
+  const view = bytes instanceof ArrayBuffer ? new Uint8Array(bytes) : ArrayBuffer.isView(bytes) ? new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength) : null;
+  if (!view) throw new HexdualError('PRECONDITION', `init: wasmBinary must be the .wasm's bytes (an ArrayBuffer or Uint8Array), not ${describe(bytes)}`);
+  if (!WebAssembly.validate(view)) {
+    const head = [...view.subarray(0, 4)].map((b) => b.toString(16).padStart(2, '0')).join(' ');
+    throw new HexdualError('IO', `init: wasmBinary is not a valid WebAssembly module (${view.length} bytes, starting ${head || 'with nothing'}; a .wasm starts 00 61 73 6d)`);
+  }
 }
 
 function module() {
