@@ -15,6 +15,33 @@
 namespace hexdual {
 using namespace tracker;
 
+namespace {
+
+// Ids ascending, once each. A long list against its id range (a sheet operation logs hundreds of
+// thousands of edits) is put in order by a bitmap over the range, in linear time; a short one is
+// sorted.
+void sortUniqueIds(std::vector<HexId>& ids) {
+  if (ids.size() < 4096) {
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return;
+  }
+  const HexId top = *std::max_element(ids.begin(), ids.end());
+  const size_t words = size_t(top) / 64 + 1;
+  if (*std::min_element(ids.begin(), ids.end()) < 0 || words > 4 * ids.size()) {
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return;
+  }
+  std::vector<uint64_t> bits(words, 0);
+  for (HexId h : ids) bits[size_t(h) / 64] |= uint64_t(1) << (size_t(h) % 64);
+  ids.clear();
+  for (size_t w = 0; w < words; ++w)
+    for (uint64_t b = bits[w]; b; b &= b - 1) ids.push_back(HexId(64 * w + size_t(__builtin_ctzll(b))));
+}
+
+}  // namespace
+
 std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
   std::vector<HexId> out;
   for (const Complex::Edit& e : log.edits) {
@@ -36,8 +63,7 @@ std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
         break;
     }
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+  sortUniqueIds(out);
   return out;
 }
 
@@ -47,7 +73,31 @@ std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
 // removal is preceded by the ungluing of its faces, so the neighbours' edges are marked too).
 std::vector<uint16_t> edgesChangedBy(const Complex::EditLog& log, const std::vector<HexId>& touched) {
   std::vector<uint16_t> out(touched.size(), 0);
+  // Where each touched hex sits in `touched`: a binary search for a short list; for a long one
+  // (a sheet operation's hundreds of thousands of edits) an open-addressing table, built once.
+  const bool table = touched.size() >= 4096;
+  std::vector<std::pair<HexId, int32_t>> slots;  // (hex, index), hex -1 when empty
+  size_t mask = 0;
+  if (table) {
+    size_t n = 1;
+    while (n < 2 * touched.size()) n *= 2;
+    slots.assign(n, {-1, -1});
+    mask = n - 1;
+    for (size_t i = 0; i < touched.size(); ++i) {
+      size_t k = (uint32_t(touched[i]) * 2654435761u) & mask;
+      while (slots[k].first >= 0) k = (k + 1) & mask;
+      slots[k] = {touched[i], int32_t(i)};
+    }
+  }
   auto mark = [&](HexId h, uint16_t edges) {
+    if (table) {
+      for (size_t k = (uint32_t(h) * 2654435761u) & mask; slots[k].first >= 0; k = (k + 1) & mask)
+        if (slots[k].first == h) {
+          out[size_t(slots[k].second)] |= edges;
+          return;
+        }
+      return;
+    }
     const auto at = std::lower_bound(touched.begin(), touched.end(), h);
     if (at != touched.end() && *at == h) out[size_t(at - touched.begin())] |= edges;
   };

@@ -32,7 +32,18 @@ std::vector<int32_t> DualTracker::changedChords(const Complex& cx, const std::ve
       const int32_t c = dual_.chordAt(h, a);
       if (c >= 0) through.push_back({c, Slot{h, a}});
     }
-  std::sort(through.begin(), through.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  // Grouped by chord id (the order within a chord does not matter): counted into place when the
+  // list is long against the id range (a sheet operation), else sorted.
+  if (through.size() >= 4096 && dual_.chords.size() <= 4 * through.size()) {
+    std::vector<uint32_t> start(dual_.chords.size() + 1, 0);
+    for (const auto& x : through) ++start[size_t(x.first) + 1];
+    for (size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    std::vector<std::pair<int32_t, Slot>> grouped(through.size());
+    for (const auto& x : through) grouped[start[size_t(x.first)]++] = x;
+    through.swap(grouped);
+  } else {
+    std::sort(through.begin(), through.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  }
   std::vector<int32_t> ids;
   std::vector<Slot> own;
   for (size_t i = 0, j = 0; i < through.size(); i = j) {
