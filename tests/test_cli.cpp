@@ -73,6 +73,35 @@ TEST_CASE("cli: apply writes the result and reports each step; a failing step wr
   CHECK(parse.out == "hexdual: oplog: position 3: unknown operation at 'pilow'\n");
 }
 
+TEST_CASE("cli: apply -o gives the last step's inverse in the written file's numbering; it applies to that file") {
+  CHECK(run("grid 4x4x4 -o /tmp/hexdual_cli_inv.vtk").status == 0);
+  // Extracting the i = 1 layer removes hexes 1, 5, 9, ...: the file numbers the 48 left densely.
+  Run x = run("apply /tmp/hexdual_cli_inv.vtk --ops 'v1;sheet-extract h1e0' -o /tmp/hexdual_cli_inv_x.vtk --json");
+  CHECK(x.status == 0);
+  CHECK(contains(x.out, "\"inverse\":\"sheet-insert h0f1 h4f1 h8f1 h12f1 "));
+  CHECK(contains(x.out, "\"inverseInOutput\":\"sheet-insert h0f1 h3f1 h6f1 h9f1 h12f1 h15f1 h18f1 h21f1 h24f1 h27f1 h30f1 h33f1 "
+                        "h36f1 h39f1 h42f1 h45f1\"}"));
+  Run text = run("apply /tmp/hexdual_cli_inv.vtk --ops 'v1;sheet-extract h1e0' -o /tmp/hexdual_cli_inv_x.hxd");
+  CHECK(contains(text.out, "inverse of the last step in /tmp/hexdual_cli_inv_x.hxd (which numbers hexes densely): sheet-insert h0f1 h3f1 "));
+  // Applied to the file, it gives the grid back: 64 hexes, 12 layers of 16, none inverted (the
+  // merged vertices moved, so the hexes are not all cubes again).
+  Run back = run("apply /tmp/hexdual_cli_inv_x.vtk --ops 'v1;sheet-insert h0f1 h3f1 h6f1 h9f1 h12f1 h15f1 h18f1 h21f1 h24f1 h27f1 "
+                 "h30f1 h33f1 h36f1 h39f1 h42f1 h45f1' -o /tmp/hexdual_cli_inv_b.vtk --json");
+  CHECK(back.status == 0);
+  CHECK(contains(back.out, "\"counts\":{\"vertices\":125,\"edges\":300,\"quads\":240,\"hexes\":64}"));
+  Run info = run("info /tmp/hexdual_cli_inv_b.vtk");
+  CHECK(contains(info.out, "sheet 11: 16 hexes, disk"));
+  CHECK(contains(run("quality /tmp/hexdual_cli_inv_b.vtk").out, "; 0 <= 0\n"));
+  // Nothing written: no inverse in the output's numbering.
+  CHECK(contains(run("apply /tmp/hexdual_cli_inv.vtk --ops 'v1;sheet-extract h1e0' --dry-run --json").out, "\"inverseInOutput\":null}"));
+  // --binary is for VTK only: refused for .mesh, and nothing is written.
+  std::remove("/tmp/hexdual_cli_inv.mesh");
+  Run bin = run("convert /tmp/hexdual_cli_inv.vtk /tmp/hexdual_cli_inv.mesh --binary");
+  CHECK(bin.status == 1);
+  CHECK(bin.out == "hexdual: --binary applies to .vtk only, not .mesh (hexdual writes .mesh and .hxd as text)\n");
+  CHECK(run("info /tmp/hexdual_cli_inv.mesh").status == 1);
+}
+
 TEST_CASE("cli: candidates lists only steps that apply") {
   CHECK(run("grid 3x3x3 -o /tmp/hexdual_cli_c.hxd").status == 0);
   Run hp = run("candidates /tmp/hexdual_cli_c.hxd hexpush");

@@ -117,6 +117,8 @@ TEST_CASE("sheet-insert and sheet-pillow: refusals name their rule and leave the
   CHECK(refusal(parseOpStep("sheet-pillow h0 h13")) ==
         "sheet-pillow: non-manifold-surface: the surface passes vertex 21 (quad h13f0) more than once: it is pinched there");
   CHECK(refusal(parseOpStep("sheet-pillow h27")) == "sheet-pillow: no-such-entity: hex 27 does not exist");
+  CHECK(refusal(parseOpStep("sheet-pillow h0 h0")) == "sheet-pillow: duplicate: hex 0 is named twice");
+  CHECK(refusal(parseOpStep("sheet-pillow h13 h4 h13")) == "sheet-pillow: duplicate: hex 13 is named twice");
   Complex one = makeGrid(1, 1, 1);
   CHECK(errorOf([&] { applyStep(one, "sheet-pillow h0"); }) ==
         "sheet-pillow: no-surface: no quad lies between the set and the rest of the mesh");

@@ -213,7 +213,13 @@ int runApply(const Args& a) {
     text += io::stepReportText(reports.back(), k + 1);
   }
   if (!a.dryRun) io::writeFile(cx, a.output, a.binary);
-  std::cout << (a.json ? io::applyReportJson(reports, cx) + "\n" : text);
+  // The written file numbers hexes densely: the last step's inverse as it applies to that file.
+  std::optional<std::string> inverseInOutput;
+  if (!a.dryRun && !reports.empty() && reports.back().result.inverse)
+    if (const auto st = io::numberedAsWritten(cx, *reports.back().result.inverse)) inverseInOutput = formatOpStep(*st);
+  if (inverseInOutput && *inverseInOutput != formatOpStep(*reports.back().result.inverse))
+    text += "inverse of the last step in " + a.output + " (which numbers hexes densely): " + *inverseInOutput + "\n";
+  std::cout << (a.json ? io::applyReportJson(reports, cx, inverseInOutput) + "\n" : text);
   return 0;
 }
 

@@ -1,4 +1,5 @@
 #include "io/io.hpp"
+#include "io/dense.hpp"
 
 #include <sys/stat.h>
 
@@ -87,6 +88,8 @@ Complex readMesh(std::string_view data, const std::string& name, const ReadOptio
 }
 
 std::string writeMesh(const Complex& cx, Format f, bool binary) {
+  if (binary && f != Format::Vtk)
+    throw Error(std::string("--binary applies to .vtk only, not .") + formatName(f) + " (hexdual writes .mesh and .hxd as text)");
   switch (f) {
     case Format::Vtk: return writeVtk(cx, binary);
     case Format::Medit: return writeMedit(cx);
@@ -163,6 +166,22 @@ void writeTextFile(const std::string& path, const std::string& data) {
 
 void writeFile(const Complex& cx, const std::string& path, bool binary) {
   writeTextFile(path, writeMesh(cx, formatFromPath(path), binary));
+}
+
+std::optional<OpStep> numberedAsWritten(const Complex& cx, const OpStep& step) {
+  const Dense d = denseNumbering(cx);
+  auto renumber = [&](HexId& h) {
+    if (!cx.isHex(h)) return false;
+    h = d.hexIndex[size_t(h)];
+    return true;
+  };
+  OpStep out = step;
+  for (OpArg& a : out.args) {
+    if (a.kind == OpArg::Number) continue;
+    if (!renumber(a.hex)) return std::nullopt;
+    if (a.kind == OpArg::Pair && !renumber(a.second.hex)) return std::nullopt;
+  }
+  return out;
 }
 
 std::string reportText(const ReadReport& r) {

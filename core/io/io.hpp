@@ -4,11 +4,13 @@
 // Readers are all-or-nothing: on error they throw Error naming the file, line (or byte) and reason.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "ops/op_step.hpp"
 
 namespace hexdual::io {
 
@@ -62,6 +64,11 @@ std::string readBytes(const std::string& path, size_t maxBytes = kMaxFileBytes);
 Complex readFile(const std::string& path, const ReadOptions& opt = {}, ReadReport* rep = nullptr);
 // Writes to a temporary file next to `path` and renames it over `path` only on success.
 void writeFile(const Complex& cx, const std::string& path, bool binary = false);
+// The step with its hex ids as every writer numbers hexes (densely, in id order, skipping ids
+// steps removed), so that a step reported against `cx` applies to a file written from it; local
+// faces and edges stay (writers keep each hex's corner order). Empty when it names a hex cx does
+// not hold.
+std::optional<OpStep> numberedAsWritten(const Complex& cx, const OpStep& step);
 void writeTextFile(const std::string& path, const std::string& data);
 
 // The report as text lines ("file: ...") and as JSON members for `info`.

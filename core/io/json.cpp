@@ -155,13 +155,18 @@ std::string stepReportText(const StepReport& rep, size_t index) {
   return text + stepQualityText(r.quality);
 }
 
-std::string applyReportJson(const std::vector<StepReport>& steps, const Complex& after) {
+std::string applyReportJson(const std::vector<StepReport>& steps, const Complex& after,
+                            const std::optional<std::string>& inverseInOutput) {
   JsonWriter w;
   w.beginObject().key("steps").beginArray();
   for (size_t k = 0; k < steps.size(); ++k) writeStepReport(w, steps[k], k + 1);
   Counts c = after.counts();
   w.endArray().key("counts").beginObject().key("vertices").value(c.vertices).key("edges").value(c.edges);
-  w.key("quads").value(c.quads).key("hexes").value(c.hexes).endObject().key("positionsHash").value(positionsHash(after)).endObject();
+  w.key("quads").value(c.quads).key("hexes").value(c.hexes).endObject().key("positionsHash").value(positionsHash(after));
+  w.key("inverseInOutput");
+  if (inverseInOutput) w.value(*inverseInOutput);
+  else w.raw("null");
+  w.endObject();
   return w.str();
 }
 

@@ -1,6 +1,7 @@
 // Minimal JSON writing, and the reports shared by the CLI and the wasm module: `info`, the
 // per-step report of `apply`, and the flips list.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,7 +83,9 @@ std::string stepReportJson(const StepReport& r, size_t index);
 // The same as four lines of text ("step 1: pillow h13f5\n  hexes created ...").
 std::string stepReportText(const StepReport& r, size_t index);
 // {"steps":[..],"counts":{"vertices","edges","quads","hexes"},"positionsHash"}: the report of a whole log.
-std::string applyReportJson(const std::vector<StepReport>& steps, const Complex& after);
+// inverseInOutput: the last step's inverse in the written file's hex numbering (null: none, or nothing written).
+std::string applyReportJson(const std::vector<StepReport>& steps, const Complex& after,
+                            const std::optional<std::string>& inverseInOutput = std::nullopt);
 
 // The flips list: [{"name","inverse","before":[V,E,F,H],"after":[..],"geometric","decomposition":
 // op log or null}], and one line of text per flip.

@@ -29,12 +29,20 @@ std::string previewJson(const Preview& p, const OpStep& step) {
   return w.str();
 }
 
+// A step as the first line of a preview names it: its first 8 arguments, then how many more.
+static std::string stepHeadline(const OpStep& step) {
+  if (step.args.size() <= 8) return formatOpStep(step);
+  OpStep head = step;
+  head.args.resize(8);
+  return formatOpStep(head) + " ... (" + std::to_string(step.args.size()) + " arguments)";
+}
+
 std::string previewText(const Preview& p, const OpStep& step) {
   if (!p.applies)
-    return "preview: " + formatOpStep(step) + " would be refused" + (p.rule.empty() ? "" : " (rule " + p.rule + ")") + ": " +
+    return "preview: " + stepHeadline(step) + " would be refused" + (p.rule.empty() ? "" : " (rule " + p.rule + ")") + ": " +
            p.error + "\n";
   const OpResult& r = p.report.result;
-  return "preview: " + formatOpStep(step) + " would remove " + std::to_string(r.removedHexes.size()) + " hexes and create " +
+  return "preview: " + stepHeadline(step) + " would remove " + std::to_string(r.removedHexes.size()) + " hexes and create " +
          std::to_string(r.createdHexes.size()) + "; nothing was changed\n" + stepReportText(p.report, 1);
 }
 

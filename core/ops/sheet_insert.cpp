@@ -344,8 +344,9 @@ OpResult sheetPillow(Complex& cx, const std::vector<HexId>& hexes) {
   const std::string op = opName(OpKind::SheetPillow);
   std::vector<HexId> set = hexes;
   std::sort(set.begin(), set.end());
-  set.erase(std::unique(set.begin(), set.end()), set.end());
   if (set.empty()) refuse(op, "empty", "needs at least one hex");
+  if (const auto d = std::adjacent_find(set.begin(), set.end()); d != set.end())
+    refuse(op, "duplicate", hexName(*d) + " is named twice");  // as sheet-insert refuses a quad named twice
   std::vector<QuadSide> sides;
   for (HexId h : set) {
     if (!cx.isHex(h)) refuse(op, "no-such-entity", hexName(h) + " does not exist");
