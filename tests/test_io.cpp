@@ -69,6 +69,17 @@ TEST_CASE("malformed files each get their own error, naming file and line or byt
   // Truncated ASCII.
   CHECK(errorOf([] { io::readVtk(std::string(kTwoHexVtk).substr(0, 170), "t.vtk"); }) ==
         "t.vtk: CELLS declares 18 entries but only 11 bytes remain (at least 2 per entry)");
+  // Cut inside POINTS or CELLS with enough bytes left to pass the size check: the error says which
+  // section's values ran out.
+  {
+    Complex cx = makeGrid(3, 3, 3);
+    for (VertexId v = 0; v < cx.vertexCapacity(); ++v) cx.setPosition(v, 0.1 * cx.position(v));  // long decimals
+    const std::string grid = io::writeVtk(cx, false);
+    const std::string inPoints = grid.substr(0, grid.find("CELLS") - 20);
+    CHECK(contains(errorOf([&] { io::readVtk(inPoints, "p.vtk"); }), "unexpected end of file; expected one of the 192 values of POINTS"));
+    const std::string inCells = grid.substr(0, grid.find("CELL_TYPES") - 30);
+    CHECK(contains(errorOf([&] { io::readVtk(inCells, "c.vtk"); }), "unexpected end of file; expected one of the 243 values of CELLS"));
+  }
   // Truncated binary: the byte offset is named.
   std::string bin = io::writeVtk(makeGrid(1, 1, 1), true);
   auto cut = bin.substr(0, bin.find("CELLS") + 20);

@@ -87,6 +87,11 @@ class VtkReader {
   bool havePoints_ = false, haveCells_ = false, haveTypes_ = false;
 };
 
+// How a value of a section is named in errors: "one of the 8133 values of POINTS".
+static std::string valueOf(const char* section, int64_t n) {
+  return "one of the " + std::to_string(n) + " values of " + section;
+}
+
 std::vector<double> VtkReader::reals(int64_t n, VtkType t, const char* what) {
   std::vector<double> v(static_cast<size_t>(n));
   if (binary_) {
@@ -100,7 +105,9 @@ std::vector<double> VtkReader::reals(int64_t n, VtkType t, const char* what) {
       else lx_.fail(std::string(what) + ": unsupported binary type");
     }
   } else {
-    for (auto& x : v) x = lx_.real(what);
+    // Named once for every value, so that a file cut inside the section says where it ended.
+    const std::string value = valueOf(what, n);
+    for (auto& x : v) x = lx_.real(value.c_str());
   }
   return v;
 }
@@ -121,7 +128,8 @@ std::vector<int64_t> VtkReader::integers(int64_t n, VtkType t, const char* what)
       }
     }
   } else {
-    for (auto& x : v) x = lx_.integer(what);
+    const std::string value = valueOf(what, n);
+    for (auto& x : v) x = lx_.integer(value.c_str());
   }
   return v;
 }
