@@ -220,6 +220,8 @@ DualChange DualTracker::updateSorted(const Complex& cx, const std::vector<HexId>
   }
   slotsTouched_ = sheetSlotsTouched_;
   updateChords(cx, touched, change);
+  // Reported ascending (the chords' lists are sorted by updateChords).
+  for (std::vector<int>* list : {&change.sheetsCreated, &change.sheetsRemoved, &change.sheetsChanged}) std::sort(list->begin(), list->end());
 #ifdef HEXDUAL_CHECK_INVARIANTS
   checkInvariants(cx);
 #endif
