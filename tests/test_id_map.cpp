@@ -1,4 +1,4 @@
-// ops::IdMap (core/ops/id_map.hpp), the flat map of the sheet operations' per-sheet tables: it
+// IdMap (core/complex/id_map.hpp), the flat map of the sheet operations' per-sheet tables: it
 // keeps every entry across its growth, reports whether an emplace inserted, and finds no absent id.
 #include <cstdio>
 #include <map>
@@ -6,9 +6,9 @@
 
 #include <doctest/doctest.h>
 
-#include "ops/id_map.hpp"
+#include "complex/id_map.hpp"
 
-using hexdual::ops::IdMap;
+using hexdual::IdMap;
 
 TEST_CASE("IdMap: the same entries as std::map across growth, random ids (fixed seed)") {
   const uint32_t seed = 20261203;

@@ -1,5 +1,7 @@
 // The timeline: applied steps as a strip, back / forward / play, ←/→ keys (main.js), click a step to
 // jump there. Steps after the current position are kept (greyed) until a new step replaces them.
+import { revealInStrip } from './scrollStrip.js';
+
 export function createTimeline(root, actions) {
   root.innerHTML = `<button id="tl-start" title="start mesh">«</button><button id="tl-back" title="back (←)">◀</button>
     <button id="tl-play" title="play">▶︎ play</button><button id="tl-fwd" title="forward (→)">▶</button>
@@ -58,14 +60,7 @@ export function createTimeline(root, actions) {
         ? `${r.step}: +${r.created.length} / −${r.removed.length} hexes · sheets ${r.changedSheets.join(', ') || '–'} · chords ${r.changedChords.slice(0, 8).join(', ') || '–'}${r.changedChords.length > 8 ? ' …' : ''}`
         : '';
       $('#tl-report').title = $('#tl-report').textContent;
-      // Scroll only the strip of chips (scrollIntoView would move the page and the buttons too).
-      const strip = $('#tl-steps'), cur = $('#tl-steps .current');
-      if (cur) {
-        const left = cur.getBoundingClientRect().left - strip.getBoundingClientRect().left + strip.scrollLeft;
-        const right = left + cur.offsetWidth;
-        if (left < strip.scrollLeft) strip.scrollLeft = left - 4;
-        else if (right > strip.scrollLeft + strip.clientWidth) strip.scrollLeft = right - strip.clientWidth + 4;
-      }
+      revealInStrip($('#tl-steps'), $('#tl-steps .current'));
     },
   };
 }

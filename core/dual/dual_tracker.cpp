@@ -10,6 +10,7 @@
 #include <algorithm>
 
 #include "complex/huge_pages.hpp"
+#include "complex/id_map.hpp"
 #include "dual/tracker/slots.hpp"
 
 namespace hexdual {
@@ -21,14 +22,12 @@ namespace {
 // thousands of edits) is put in order by a bitmap over the range, in linear time; a short one is
 // sorted.
 void sortUniqueIds(std::vector<HexId>& ids) {
-  if (ids.size() < 4096) {
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    return;
+  size_t words = 0;  // of the bitmap, when it pays: a long list, ids >= 0, a range at most 256 ids per entry
+  if (ids.size() >= 4096) {
+    const auto [lo, hi] = std::minmax_element(ids.begin(), ids.end());
+    if (*lo >= 0 && size_t(*hi) / 64 + 1 <= 4 * ids.size()) words = size_t(*hi) / 64 + 1;
   }
-  const HexId top = *std::max_element(ids.begin(), ids.end());
-  const size_t words = size_t(top) / 64 + 1;
-  if (*std::min_element(ids.begin(), ids.end()) < 0 || words > 4 * ids.size()) {
+  if (!words) {
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     return;
@@ -74,28 +73,16 @@ std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
 std::vector<uint16_t> edgesChangedBy(const Complex::EditLog& log, const std::vector<HexId>& touched) {
   std::vector<uint16_t> out(touched.size(), 0);
   // Where each touched hex sits in `touched`: a binary search for a short list; for a long one
-  // (a sheet operation's hundreds of thousands of edits) an open-addressing table, built once.
+  // (a sheet operation's hundreds of thousands of edits) an IdMap, built once.
   const bool table = touched.size() >= 4096;
-  std::vector<std::pair<HexId, int32_t>> slots;  // (hex, index), hex -1 when empty
-  size_t mask = 0;
+  IdMap<int32_t> indexOf;
   if (table) {
-    size_t n = 1;
-    while (n < 2 * touched.size()) n *= 2;
-    slots.assign(n, {-1, -1});
-    mask = n - 1;
-    for (size_t i = 0; i < touched.size(); ++i) {
-      size_t k = (uint32_t(touched[i]) * 2654435761u) & mask;
-      while (slots[k].first >= 0) k = (k + 1) & mask;
-      slots[k] = {touched[i], int32_t(i)};
-    }
+    indexOf.reserve(touched.size());
+    for (size_t i = 0; i < touched.size(); ++i) indexOf.emplace(touched[i], int32_t(i));
   }
   auto mark = [&](HexId h, uint16_t edges) {
     if (table) {
-      for (size_t k = (uint32_t(h) * 2654435761u) & mask; slots[k].first >= 0; k = (k + 1) & mask)
-        if (slots[k].first == h) {
-          out[size_t(slots[k].second)] |= edges;
-          return;
-        }
+      if (const int32_t* i = indexOf.find(h)) out[size_t(*i)] |= edges;
       return;
     }
     const auto at = std::lower_bound(touched.begin(), touched.end(), h);
@@ -199,8 +186,7 @@ DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits,
 }
 
 DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bool sheetsKeepTopology) {
-  std::sort(touched.begin(), touched.end());
-  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  sortUniqueIds(touched);
   edgesToWalk_.clear();  // not known: every edge of a live touched hex is walked
   return updateSorted(cx, touched, sheetsKeepTopology);
 }
@@ -220,8 +206,10 @@ DualChange DualTracker::updateSorted(const Complex& cx, const std::vector<HexId>
   }
   slotsTouched_ = sheetSlotsTouched_;
   updateChords(cx, touched, change);
-  // Reported ascending (the chords' lists are sorted by updateChords).
-  for (std::vector<int>* list : {&change.sheetsCreated, &change.sheetsRemoved, &change.sheetsChanged}) std::sort(list->begin(), list->end());
+  // Reported ascending, whichever way each list was found.
+  for (std::vector<int>* list : {&change.sheetsCreated, &change.sheetsRemoved, &change.sheetsChanged, &change.chordsCreated,
+                                 &change.chordsRemoved, &change.chordsChanged})
+    std::sort(list->begin(), list->end());
 #ifdef HEXDUAL_CHECK_INVARIANTS
   checkInvariants(cx);
 #endif

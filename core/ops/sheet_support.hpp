@@ -10,7 +10,7 @@
 
 #include "complex/complex.hpp"
 #include "ops/sheet_ops.hpp"
-#include "ops/id_map.hpp"
+#include "complex/id_map.hpp"
 #include "ops/support.hpp"
 
 namespace hexdual::ops {

@@ -10,6 +10,7 @@ import { PUZZLES, preparePuzzle, checkPuzzle, stars, placeOf } from './puzzles.j
 import { createCandidates, stepsAt } from './candidates.js';
 import { createProgress, parsePuzzleHash, puzzleHash } from './progress.js';
 import { stepText, effectText, pickText } from './stepText.js';
+import { revealInStrip } from '../scrollStrip.js';
 import { explodedLayout, flipColors, cubeLabels } from './fourCube.js';
 
 const eng = { build: meshAfter, flips, record, stepsAt };
@@ -232,9 +233,8 @@ function listPuzzles() {
 // On a phone the list is one scrolling row: bring the current puzzle into it (also when the width
 // changes, e.g. a phone turned, and the row starts or stops scrolling).
 function revealCurrentPuzzle() {
-  const list = $('puzzle-list'), current = list.querySelector('[aria-current=true]');
-  if (!current || list.scrollWidth <= list.clientWidth) return;
-  list.scrollLeft += current.getBoundingClientRect().left - list.getBoundingClientRect().left - 12;
+  const list = $('puzzle-list');
+  revealInStrip(list, list.querySelector('[aria-current=true]'), 12);
 }
 let watchingList = false;
 function watchPuzzleList() {

@@ -21,8 +21,6 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
     slotsTouched_ = before;  // a rejoin that gave up counts nothing: the re-walk is the work done
     rewalkChords(cx, touched, ids, change);
   }
-  // Reported ascending, like the sheets.
-  for (std::vector<int>* list : {&change.chordsCreated, &change.chordsRemoved, &change.chordsChanged}) std::sort(list->begin(), list->end());
 }
 
 // The chords through the touched slots that the edit changed, ascending. The touched slots are

@@ -1,6 +1,7 @@
-// A map from ids (hexes or vertices: non-negative) to small values for the sheet operations'
-// per-sheet tables: open addressing in two flat arrays, so a sheet of n hexes costs two
-// allocations, not one node per hex as std::unordered_map did (issue 22: sheet operations' cost).
+// A map from ids (hexes or vertices: non-negative) to small values: open addressing in two flat
+// arrays, so n ids cost two allocations, not one node per id as std::unordered_map did. Used by
+// the sheet operations' per-sheet tables and by the dual tracker's index of a long edit's hexes
+// (issue 22: sheet operations' cost).
 // Owns its arrays; keeps: keys_ has a power-of-two size, at most half of it used, -1 marking a free slot.
 #pragma once
 #include <cassert>
@@ -8,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace hexdual::ops {
+namespace hexdual {
 
 template <class V>
 class IdMap {
@@ -68,4 +69,4 @@ class IdMap {
   size_t used_ = 0;
 };
 
-}  // namespace hexdual::ops
+}  // namespace hexdual
