@@ -92,6 +92,11 @@ TEST_CASE("cli: apply -o gives the last step's inverse in the written file's num
   Run info = run("info /tmp/hexdual_cli_inv_b.vtk");
   CHECK(contains(info.out, "sheet 11: 16 hexes, disk"));
   CHECK(contains(run("quality /tmp/hexdual_cli_inv_b.vtk").out, "; 0 <= 0\n"));
+  // A preview names a long step by its first 8 arguments.
+  Run pv = run("preview /tmp/hexdual_cli_inv_x.vtk --ops 'v1;sheet-insert h0f1 h3f1 h6f1 h9f1 h12f1 h15f1 h18f1 h21f1 h24f1 "
+               "h27f1 h30f1 h33f1 h36f1 h39f1 h42f1 h45f1'");
+  CHECK(pv.out.rfind("preview: sheet-insert h0f1 h3f1 h6f1 h9f1 h12f1 h15f1 h18f1 h21f1 ... (16 arguments) would remove 0 hexes "
+                     "and create 16; nothing was changed\n", 0) == 0);
   // Nothing written: no inverse in the output's numbering.
   CHECK(contains(run("apply /tmp/hexdual_cli_inv.vtk --ops 'v1;sheet-extract h1e0' --dry-run --json").out, "\"inverseInOutput\":null}"));
   // --binary is for VTK only: refused for .mesh, and nothing is written.

@@ -53,6 +53,10 @@ TEST_CASE("sheet-extract: the x=1 layer of a 4x4x4 grid; a 3x4x4 grid is left, o
   CHECK(c.report.dual.sheetsCreated.empty());
   CHECK(sorted(c.report.dual.chordsRemoved) == sorted(inLayer));
   CHECK(sorted(c.report.dual.chordsChanged) == crossing);
+  // Every list is reported ascending (the text and JSON reports print them as they are).
+  CHECK(c.report.dual.chordsRemoved == sorted(c.report.dual.chordsRemoved));
+  CHECK(c.report.dual.chordsChanged == crossing);
+  CHECK(c.report.dual.sheetsChanged == sorted(c.report.dual.sheetsChanged));
   for (int32_t id : crossing) CHECK(tracker.dual().chords[size_t(id)].slots.size() == 3);
   CHECK(tracker.dual().sheets.size() - size_t(std::count_if(tracker.dual().sheets.begin(), tracker.dual().sheets.end(),
                                                             [](const Sheet& s) { return !s.alive; })) == 11);
