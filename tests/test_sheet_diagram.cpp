@@ -7,6 +7,7 @@
 #include "flips/flip.hpp"
 #include "flips/fourcube.hpp"
 #include "helpers.hpp"
+#include "layout/diagram_spread.hpp"
 #include "layout/sheet_diagram.hpp"
 #include "ops/oplog.hpp"
 
@@ -99,6 +100,34 @@ TEST_CASE("sheet diagrams after chord push, hex push, the 1-7 flip, and in every
     flip(f, fc.name, facetsOf(fc.before));
     checkAllSheets(f);
   }
+}
+
+// A face collapse joins two 4x4 layer disks crosswise at one quad each: an annulus with a neck of
+// 4 sides between two 16-sided loops. Drawn between two circles, the inner disk has to fit inside
+// the neck and came out squeezed round a dot (crossings 0.063 of an even spread apart); cut open
+// along one seam it spreads about 4.6x better, so that drawing is chosen (TK03 §4.4, the
+// tutorial's face collapse).
+TEST_CASE("a face collapse's merged annulus is drawn cut open: its crossings spread, not crowded round the hole") {
+  Complex g = makeGrid(4, 4, 4);
+  applyStep(g, "facecollapse h21e11 h21f1 h26f0");
+  Dual d = extractDual(g);
+  int merged = -1;
+  for (const Sheet& s : d.sheets)
+    if (s.topology == "annulus") merged = s.id;
+  REQUIRE(merged >= 0);
+  CHECK(d.sheets[size_t(merged)].slots.size() == 32);
+  SheetDiagram dg = layoutSheet(g, d, merged);
+  CHECK(dg.method == "polygon");
+  CHECK(dg.crossings.size() == 32);
+  CHECK(diagramSpread(dg) > 0.25);
+  CHECK(contains(dg.note, "cut open along 1 seam"));
+  checkAllSheets(g);
+  // The annuli of a ring mesh stay drawn between two circles (spread well above the threshold).
+  Complex r = makeRing(8, 3, 3);
+  Dual rd = extractDual(r);
+  SheetDiagram ring = layoutSheet(r, rd, 0);
+  CHECK(ring.method == "annulus");
+  CHECK(diagramSpread(ring) >= kReadableSpread);
 }
 
 TEST_CASE("local diagrams: k rings of chosen hexes inside a dotted circle") {

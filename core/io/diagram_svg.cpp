@@ -122,8 +122,10 @@ std::string diagramSvg(const SheetDiagram& d) {
       "font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
       2 * S * M, 2 * S * M + 24, 2 * S * M, 2 * S * M + 24);
   out += buf;
-  std::snprintf(buf, sizeof buf, "<text x=\"8\" y=\"%.0f\" font-size=\"13\">sheet %d · %s · %s</text>\n",
-                2 * S * M + 16, d.sheet, d.topology.c_str(), d.method.c_str());
+  // "sheet 6 · annulus", or "sheet 6 · annulus · polygon" when drawn another way (as the explorer's title).
+  const std::string how = d.method == d.topology ? "" : " · " + d.method;
+  std::snprintf(buf, sizeof buf, "<text x=\"8\" y=\"%.0f\" font-size=\"13\">sheet %d · %s%s</text>\n",
+                2 * S * M + 16, d.sheet, d.topology.c_str(), how.c_str());
   out += buf;
   if (!d.note.empty())
     out += "<title>" + escapeXml(d.note) + "</title>\n";  // which face was opened, the polygon's word

@@ -10,7 +10,8 @@ namespace hexdual {
 // min over crossings of the distance to the nearest other crossing, times sqrt(crossings / pi).
 double diagramSpread(const SheetDiagram& d);
 
-// Below this, layoutSheet tries another way of drawing the sheet (cut open into a polygon).
-constexpr double kReadableSpread = 0.05;
+// Below this, layoutSheet tries another way of drawing the sheet (cut open into a polygon) and
+// keeps the one that spreads better. 0.1 (was 0.05): a face collapse's necked annulus drew at 0.063.
+constexpr double kReadableSpread = 0.1;
 
 }  // namespace hexdual

@@ -187,6 +187,8 @@ test('live numbers: the paper\'s counts match the engine', async () => {
   assert.equal(await page.locator('[data-live="trad-delta"]').textContent(), '(+8, +20, +18, +6)');
   assert.equal(await page.locator('[data-live="ring-region"]').textContent(), '7');
   assert.equal(await page.locator('[data-live="face-delta"]').textContent(), '(−2, −2, 0, 0)');
+  // The merged annulus has a neck of 4 sides: drawn cut open along one seam, not squeezed round its hole.
+  assert.match(await page.locator('#fig-face .diagram-note').textContent(), /^cut open along 1 seam: dashed sides with the same letter are the same seam/);
   await open('simple');
   assert.deepEqual(
     await page.$$eval('#incidences [data-live="quads"], #incidences [data-live="edges"], #incidences [data-live="vertices"]', (e) => e.map((x) => x.textContent)),

@@ -80,6 +80,6 @@ startPage(() => {
     startAfter: true,
     sheet: (f) => (f.stage === 0 ? merged.removed[0]?.id : merged.into?.id),
     sheetChips: true,
-    caption: 'TK03 §4.4: face collapse in a 4×4×4 grid. Before: one of the two sheets that merge; after: the merged sheet.',
+    caption: 'TK03 §4.4: face collapse in a 4×4×4 grid. Before: one of the two sheets that merge; after: the merged sheet, an annulus whose two halves meet at a neck of 4 sides, so it is drawn cut open along one seam (the sides marked a and a⁻¹ are glued): between two circles one half would be squeezed inside the neck.',
   });
 });
