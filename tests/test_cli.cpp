@@ -136,8 +136,12 @@ TEST_CASE("cli: sheets writes SVG and JSON diagrams; bad arguments are one-line 
   CHECK(run("sheets /tmp/hexdual_cli_s.hxd --sheet 2").out == "hexdual: sheets needs --json OUTDIR or --svg OUTDIR\n");
   CHECK(run("sheets /tmp/hexdual_cli_s.hxd --sheet 99 --svg /tmp/hexdual_cli_sd").out ==
         "hexdual: sheet diagram: sheet 99 does not exist\n");
-  CHECK(run("sheets /tmp/hexdual_cli_s.hxd --sheet 1 --svg /nonexistent/dir").out ==
-        "hexdual: /nonexistent/dir/sheet-1.svg: cannot open file for writing (does the directory exist?)\n");
+  // A missing output directory is made (as mkdir -p); one that cannot be made is named with the reason.
+  std::remove("/tmp/hexdual_cli_sd_new/deeper/sheet-1.svg");
+  CHECK(run("sheets /tmp/hexdual_cli_s.hxd --sheet 1 --svg /tmp/hexdual_cli_sd_new/deeper").out ==
+        "/tmp/hexdual_cli_sd_new/deeper/sheet-1.svg\n");
+  CHECK(run("sheets /tmp/hexdual_cli_s.hxd --sheet 1 --svg /tmp/hexdual_cli_s.hxd/dir").out ==
+        "hexdual: /tmp/hexdual_cli_s.hxd/dir: cannot create the output directory (Not a directory)\n");
 }
 
 TEST_CASE("cli: flip search stopped at a cap writes a checkpoint; --resume finishes it with the uninterrupted result") {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -447,13 +448,18 @@ int runSheets(const Args& a) {
   } else {
     ids.push_back(a.sheet);
   }
+  for (const std::string& dir : {a.jsonDir, a.svgDir}) {  // made when missing, as `mkdir -p` would
+    std::error_code ec;
+    if (!dir.empty()) std::filesystem::create_directories(dir, ec);
+    if (ec) throw Error(dir + ": cannot create the output directory (" + ec.message() + ")");
+  }
   for (int id : ids) {
     SheetDiagram d = around.empty() ? layoutSheet(cx, dual, id) : layoutLocal(cx, dual, id, around, a.rings);
     std::string base = "sheet-" + std::to_string(id) + (around.empty() ? "" : "-local");
     auto write = [&](const std::string& dir, const std::string& ext, const std::string& text) {
       std::string path = dir + "/" + base + ext;
       std::ofstream out(path);
-      if (!out) throw Error(path + ": cannot open file for writing (does the directory exist?)");
+      if (!out) throw Error(path + ": cannot open file for writing");
       out << text;
       std::cout << path << "\n";
     };
