@@ -31,6 +31,7 @@ export function createTimeline(root, actions) {
     const li = e.target.closest('li[data-k]');
     if (li) actions.goTo(Number(li.dataset.k));
   });
+  $('#tl-report').addEventListener('click', () => $('#tl-report').classList.toggle('full'));
   let shown = null;
   return {
     update(s) {
