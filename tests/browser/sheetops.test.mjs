@@ -98,6 +98,15 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   const singularAfter = await page.evaluate(() => window.hexdual.store.get().mesh.singularities().edges.length);
   assert.equal(await singularShown(), singularAfter, 'the overlay follows the step');
   await page.screenshot({ path: join(screenshotDir, 'explorer-sheet-extract.png') });
+  // The step's report: two lines at most, the whole text in its title; a click shows it all, another folds it.
+  const report = page.locator('#tl-report');
+  assert.match(await report.getAttribute('title'), /^sheet-extract h\d+e\d+: \+0 \/ −\d+ hexes · sheets /);
+  const lines = () => report.evaluate((e) => Math.round(e.getBoundingClientRect().height / parseFloat(getComputedStyle(e).lineHeight)));
+  assert.ok((await lines()) <= 2, `report folded to ${await lines()} lines`);
+  await report.click();
+  assert.equal(await report.getAttribute('class'), 'pos full');
+  await report.click();
+  assert.equal(await report.getAttribute('class'), 'pos');
 
   // Undo (the timeline's back key): the mesh and its singular edges as before.
   await page.keyboard.press('ArrowLeft');
