@@ -59,9 +59,11 @@ export function createView3d(container, options = {}) {
   }
   const classify = (hit, mode) => classifyHit(layers, tables, hit, mode);
 
+  const STALE = Symbol('stale marks');
   let lastSelection = null, lastHover = null;
   function redrawMarks() {
-    drawMarks(marks, layers, tables, [[lastHover, HOVER, 0.45], [lastSelection, ACCENT, 0.9]]);
+    const selection = lastSelection === STALE ? null : lastSelection;
+    drawMarks(marks, layers, tables, [[lastHover, HOVER, 0.45], [selection, ACCENT, 0.9]]);
     sc.requestRender();
   }
 
@@ -155,7 +157,8 @@ export function createView3d(container, options = {}) {
         dirty = true;
         layers.paint(hexColors(state));
         layers.showFresh(report && layers.hasFaint ? report.created : null);
-        lastSelection = null;
+        // New colours need the marks redrawn, also when the selection went from something to null.
+        lastSelection = STALE;
       }
       if (lastSelection !== state.selection) {
         lastSelection = state.selection;
@@ -236,6 +239,10 @@ export function createView3d(container, options = {}) {
     /** Hexes drawn over the faint pass (the last step's created hexes while the rest is dimmed). */
     get freshCount() {
       return layers.fresh.visible ? layers.fresh.geometry.index.count / 36 : 0;
+    },
+    /** Selection and hover marks drawn (0 when nothing is selected or hovered). */
+    get marksShown() {
+      return marks.children.length;
     },
     get ghostCount() {
       return ghosts.children.length;

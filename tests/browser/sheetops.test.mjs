@@ -66,6 +66,9 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   assert.match(summary, /98 interior and 76 boundary singular edges/);
   assert.match(summary, /interior valence 3: 63/);
   assert.match(summary, /interior valence 5: 35/);
+  // vertices counts every singular vertex once; boundaryVertices is the part of them on the boundary.
+  assert.ok(c.boundaryVertices <= c.vertices);
+  assert.match(summary, new RegExp(`· ${c.vertices} singular vertices \\(${c.boundaryVertices} on the boundary\\)`));
   await page.screenshot({ path: join(screenshotDir, 'explorer-singular.png') });
 
   // A picked singular edge: its valence and the sheet and chords through it.
@@ -90,8 +93,13 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   }
   assert.match(preview, new RegExp(`would remove ${expected.hexesRemoved} and create ${expected.hexesCreated} hexes`));
   await page.locator('#palette').screenshot({ path: join(screenshotDir, 'explorer-sheet-preview.png') });
+  const marksShown = () => page.evaluate(() => window.hexdual.view.marksShown);
+  assert.ok((await marksShown()) > 0, 'the picked edge is marked');
   await item.click();
   await x.settle();
+  // The edge's hex went with the sheet: the selection is cleared, and so is its mark.
+  assert.equal((await x.state()).selection, null);
+  assert.equal(await marksShown(), 0, 'no mark left on removed hexes');
   const after = 980 - expected.hexesRemoved + expected.hexesCreated;
   assert.equal((await x.shownCounts()).hexes, after);
   assert.equal(expected.hexesRemoved, dual.hexes.length, 'the sheet\'s hexes go');
