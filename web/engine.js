@@ -129,6 +129,22 @@ export function createEngine(store) {
       const label = `flip ${name} at ${hexes.map((h) => 'h' + h).join(' ')} (${reports.length} steps)`;
       store.set({ steps, at: steps.length, meshKey, report: diffReport(before, after, null, label, meshKey), quality: s.colorBy === 'quality' ? s.mesh.quality() : null });
     },
+    /**
+     * Applies an operation log ('v1;...' or its URL form) at the current position, all or nothing
+     * (on an error no step of it stays applied and the error is thrown); its steps join the timeline.
+     */
+    applyLog(log) {
+      const s = store.get();
+      const before = engine.hexDual();
+      const reports = s.mesh.applyLog(log);
+      const after = hexDualOf(s.mesh);
+      const steps = [...s.steps.slice(0, s.at), ...reports.map((r) => r.step)];
+      const meshKey = key(s.mesh, steps.length);
+      hd = after;
+      hdKey = meshKey;
+      const label = `log of ${reports.length} step${reports.length === 1 ? '' : 's'}`;
+      store.set({ steps, at: steps.length, meshKey, report: diffReport(before, after, null, label, meshKey), quality: s.colorBy === 'quality' ? s.mesh.quality() : null });
+    },
     /** Moves to step k of the current list (0 = the start mesh). */
     goTo(k) {
       const s = store.get();

@@ -73,16 +73,7 @@ export function createFiles(body, actions, store, view) {
     e.preventDefault();
     depth = 0;
     zone.hidden = true;
-    const file = e.dataTransfer?.files?.[0];
-    if (!file) return;
-    const bytes = new Uint8Array(await file.arrayBuffer());
-    actions.open(bytes, file.name);
-    // A URL that named this file (mesh=file:NAME) replays its steps once the file is dropped.
-    const pending = actions.pendingFileSteps();
-    if (pending && store.get().spec?.name === file.name && pending.steps.length) {
-      const err = actions.engine.replay(pending.steps, pending.at);
-      store.set({ error: err, notice: '' });
-    }
+    await actions.openFiles([...(e.dataTransfer?.files ?? [])]);
   });
 
   const exports = document.getElementById('exports');

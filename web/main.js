@@ -10,7 +10,7 @@ import { createTimeline } from './timeline.js';
 import { createPalette } from './palette.js';
 import { createFlipsView } from './flipsView.js';
 import { createFiles } from './files.js';
-import { parseHash, formatHash } from './urlState.js';
+import { parseHash, formatHash, parseStepLog } from './urlState.js';
 import { formatSelection, sameSelection, dualThrough } from './selection.js';
 import { createEngine } from './engine.js';
 
@@ -21,7 +21,7 @@ timings.init = performance.now();
 const store = createState({
   mesh: null, spec: null, meshKey: '', steps: [], at: 0, report: null, selection: null, diagrams: [],
   shrink: 0.15, overlay: false, singular: false, ghosts: true, focusChanges: true, colorBy: 'plain', quality: null, slice: null, camera: null,
-  error: '', notice: '', view: 'explore', flip: null, focus: null, busy: false,
+  error: '', opError: null, notice: '', view: 'explore', flip: null, focus: null, busy: false,
 });
 const engine = createEngine(store);
 
@@ -43,24 +43,31 @@ function survivors(s, mesh) {
   return { selection: sel, diagrams };
 }
 
-// Runs a step or a move in time as one state change, keeping what survives; errors go to the panel.
+// Runs a step or a move in time as one state change, keeping what survives. Its error is shown
+// once, under the step box (state.opError, for this mesh state only); the step's name is not repeated.
 function changeMesh(change, errorPrefix) {
   try {
     store.batch(() => {
       change();
       const s = store.get();
-      store.set({ ...survivors(s, s.mesh), error: '' });
+      store.set({ ...survivors(s, s.mesh), error: '', opError: null });
     });
   } catch (e) {
-    store.set({ error: errorPrefix + e.message });
+    const op = errorPrefix.split(/[ :]/)[0];
+    const message = op && e.message.startsWith(`${op}: `) ? e.message.slice(op.length + 2) : e.message;
+    store.set({ opError: { key: store.get().meshKey, text: errorPrefix + message } });
   }
 }
+
+// A URL naming a local file (mesh=file:NAME), waiting for that file to be opened or dropped.
+let pendingFile = null;
 
 const actions = {
   flips: flips(),
   engine,
   /** Builds a grid, ring or the 4-cube boundary (`dims` like 3x3x3). */
   build(kind, dimsText) {
+    pendingFile = null;
     let spec = { kind: 'fourcube', dims: [] };
     if (kind !== 'fourcube') {
       const m = /^\s*(\d+)\s*x\s*(\d+)\s*x\s*(\d+)\s*$/.exec(dimsText);
@@ -76,22 +83,69 @@ const actions = {
       store.set({ error: e.message });
     }
   },
+  /**
+   * Opens a mesh file (Open or a drop). When the URL named this file (mesh=file:NAME), its steps
+   * replay and its selection, diagrams and view come back, as for a generated mesh's URL.
+   */
   open(bytes, name) {
+    const pending = pendingFile;
     try {
       store.batch(() => engine.start({ kind: 'file', name }, bytes));
-      store.set({ selection: null, diagrams: [], camera: null, error: '', focus: null,
-        notice: `${name} is a local file: the URL cannot carry it. Share it with "download .hxd + steps".` });
     } catch (e) {
-      store.set({ error: `${name}: ${e.message}` });
+      return store.set({ error: `${name}: ${e.message}` });
     }
+    pendingFile = null;
+    const notice = `${name} is a local file: the URL cannot carry it. Share it with "download .hxd + steps".`;
+    if (pending && pending.mesh.name === name) {
+      store.batch(() => {
+        const errors = [...pending.errors];
+        const stepError = engine.replay(pending.steps, pending.at);
+        if (stepError) errors.push(stepError);
+        showUrlState(pending, errors, notice);
+      });
+      return;
+    }
+    const other = pending ? `the URL's steps were for ${pending.mesh.name}, not ${name}: not replayed` : '';
+    store.set({ selection: null, diagrams: [], camera: null, error: other, focus: null, notice });
+  },
+  /**
+   * Opens what was dropped or chosen: a mesh file, a steps file (.txt: the log of "download .hxd +
+   * steps"), or both at once. The mesh opens first, then the log applies to it.
+   */
+  async openFiles(files) {
+    const isLog = (f) => /\.txt$/i.test(f.name);
+    const mesh = files.find((f) => !isLog(f));
+    const log = files.find(isLog);
+    if (mesh) actions.open(new Uint8Array(await mesh.arrayBuffer()), mesh.name);
+    if (!log) return;
+    const parsed = parseStepLog(await log.text());
+    if (parsed) actions.applyLog(parsed.log, parsed.at);
+    else store.set({ opError: { key: store.get().meshKey, text: `${log.name}: not an operation log (it starts with v1; or 1.)` } });
   },
   /** Applies a typed or palette step at the current position (later undone steps are dropped). */
   apply(step) {
-    if (!step) return store.set({ error: 'type an operation step, e.g. pillow h13f5' });
+    pendingFile = null; // working on the stand-in grid: the URL follows it from now on
+    if (!step) return store.set({ opError: { key: store.get().meshKey, text: 'type an operation step, e.g. pillow h13f5' } });
+    const log = parseStepLog(step);
+    if (log) return actions.applyLog(log.log, log.at);
     changeMesh(() => engine.applyStep(step), `${step}: `);
+  },
+  /**
+   * Applies an operation log (typed, pasted, or a dropped steps.txt of "download .hxd + steps") at
+   * the current position, all or nothing; `at` = K then shows the log's step K (0: before it).
+   */
+  applyLog(log, at = null) {
+    pendingFile = null;
+    const start = store.get().at;
+    changeMesh(() => {
+      engine.applyLog(log);
+      const end = store.get().at;
+      if (at !== null && start + at < end) engine.goTo(start + at); // at=K: step K of the log
+    }, 'operation log: ');
   },
   /** Applies a cubical flip at a place (hex ids of its before side) as its atomic steps. */
   applyFlip(name, hexes) {
+    pendingFile = null;
     changeMesh(() => engine.applyFlip(name, hexes), `flip ${name} at ${hexes.map((h) => 'h' + h).join(' ')}: `);
   },
   goTo(k) {
@@ -153,6 +207,7 @@ const files = createFiles(document.body, actions, store, view);
 
 let urlTimer = 0;
 function writeUrl(s) {
+  if (pendingFile) return; // the URL keeps naming the file and its steps until the file comes
   const hash = formatHash(s);
   if (location.hash !== hash) history.replaceState(null, '', hash);
 }
@@ -175,10 +230,17 @@ function loadFromUrlNow() {
   timings.urlStart = t0;
   const p = parseHash(location.hash);
   const errors = [...p.errors];
+  pendingFile = null;
   if (p.mesh.kind === 'file') {
-    errors.push(`mesh=file:${p.mesh.name} is a local file that the URL cannot carry: drop it on the page (its steps will replay)`);
-    p.mesh = { kind: 'grid', dims: [3, 3, 3] };
-    pendingFileSteps = p;
+    // The file itself cannot come with the URL: a 3x3x3 grid stands in, and the URL keeps naming the
+    // file and its steps until the file is opened or dropped (then they replay, see actions.open).
+    pendingFile = p;
+    engine.start({ kind: 'grid', dims: [3, 3, 3] });
+    store.set({
+      selection: null, diagrams: [], camera: null, shrink: p.shrink ?? 0.15, view: p.view, notice: '', quality: null,
+      error: [...errors, `mesh=file:${p.mesh.name} is a local file that the URL cannot carry: open or drop it on the page (its ${plural(p.steps.length, 'step')} will replay)`].join('\n'),
+    });
+    return;
   }
   try {
     engine.start(p.mesh);
@@ -187,9 +249,18 @@ function loadFromUrlNow() {
     engine.start({ kind: 'grid', dims: [3, 3, 3] });
     p.steps = [];
   }
-  const stepError = engine.replay(p.mesh.kind === 'file' ? [] : p.steps, p.at);
+  const stepError = engine.replay(p.steps, p.at);
   if (stepError) errors.push(stepError);
-  if (p.at !== null && p.at > p.steps.length) errors.push(`ignored at=${p.at}: there are only ${p.steps.length} steps`);
+  showUrlState(p, errors, '');
+  if (p.camera) view.setCamera(p.camera);
+}
+
+const plural = (n, word) => `${n} ${word}${n === 1 ? '' : 's'}`;
+
+// After a URL's steps replayed: its selection, diagrams and view settings, those naming missing
+// hexes, sheets or chords dropped with a message.
+function showUrlState(p, errors, notice) {
+  if (p.at !== null && p.at > p.steps.length) errors.push(`ignored at=${p.at}: there ${p.steps.length === 1 ? 'is' : 'are'} only ${plural(p.steps.length, 'step')}`);
   const s = store.get();
   const ids = dualIds(s.mesh);
   const range = (set) => (set.size ? `0..${Math.max(...set)}` : 'none');
@@ -202,28 +273,21 @@ function loadFromUrlNow() {
   for (const kind of ['sheet', 'chord']) {
     const set = kind === 'sheet' ? ids.sheets : ids.chords;
     if (sel && sel.kind === kind && !set.has(sel.id)) {
-      errors.push(`ignored ${kind}=${sel.id}: there are ${set.size} ${kind}s (${range(set)})`);
+      errors.push(`ignored ${kind}=${sel.id}: there are ${plural(set.size, kind)} (${range(set)})`);
       sel = null;
     }
   }
   const diags = [];
   for (const d of p.diagrams) {
     if (ids.sheets.has(d)) diags.push({ sheet: d, local: null });
-    else errors.push(`ignored diag=${d}: there are ${ids.sheets.size} sheets (${range(ids.sheets)})`);
+    else errors.push(`ignored diag=${d}: there are ${plural(ids.sheets.size, 'sheet')} (${range(ids.sheets)})`);
   }
   store.set({
     selection: sel, diagrams: diags, camera: p.camera, overlay: p.overlay, singular: p.singular, colorBy: p.colorBy, ghosts: p.ghosts,
-    shrink: p.shrink ?? 0.15, slice: p.slice, view: p.view, flip: p.flip, error: errors.join('\n'), notice: '',
+    shrink: p.shrink ?? 0.15, slice: p.slice, view: p.view, flip: p.flip, error: errors.join('\n'), notice,
     quality: p.colorBy === 'quality' ? s.mesh.quality() : null,
   });
-  if (p.camera) view.setCamera(p.camera);
 }
-let pendingFileSteps = null;
-actions.pendingFileSteps = () => {
-  const p = pendingFileSteps;
-  pendingFileSteps = null;
-  return p;
-};
 
 window.addEventListener('hashchange', () => {
   if (location.hash !== formatHash(store.get())) loadFromUrl();

@@ -139,7 +139,7 @@ export function createPalette(root, actions) {
   return {
     update(s) {
       if (!s.mesh) return;
-      $('#op-error').textContent = s.error && /^([a-z-]+ h\d|flip )/.test(s.error) ? s.error : '';
+      $('#op-error').textContent = s.opError && s.opError.key === s.meshKey ? s.opError.text : '';
       const key = `${s.meshKey}|${formatSelection(s.selection)}`;
       if (key === shownKey) return;
       shownKey = key;

@@ -139,10 +139,7 @@ export function createPanel(root, actions, view) {
     $('#mesh-dims').hidden = $('#mesh-build').hidden = !generator;
   });
   $('#mesh-dims').addEventListener('keydown', (e) => e.key === 'Enter' && build());
-  $('#mesh-file').addEventListener('change', async (e) => {
-    const file = e.target.files[0];
-    if (file) actions.open(new Uint8Array(await file.arrayBuffer()), file.name);
-  });
+  $('#mesh-file').addEventListener('change', (e) => actions.openFiles([...e.target.files]));
   $('#shrink').addEventListener('input', (e) => actions.set({ shrink: Number(e.target.value) }));
   $('#overlay').addEventListener('change', (e) => actions.set({ overlay: e.target.checked }));
   $('#ghosts').addEventListener('change', (e) => actions.set({ ghosts: e.target.checked }));

@@ -7,6 +7,19 @@ import { parseSelection, formatSelection } from './selection.js';
 const DIMS = /^(grid|ring):(\d{1,3})x(\d{1,3})x(\d{1,3})$/;
 const KNOWN = new Set(['mesh', 'steps', 'ops', 'at', 'sel', 'sheet', 'chord', 'cam', 'diag', 'local', 'overlay', 'sing', 'color', 'shrink', 'slice', 'ghosts', 'view', 'flip']);
 
+/**
+ * An operation log as typed, pasted or saved by "download .hxd + steps": 'v1;pillow h13f5;...' or
+ * its URL form '1.P13f5...', optionally followed (after a newline or a space) by 'at=K', the
+ * position to show. Returns { log, at } (at null when absent), or null when the text is one step.
+ */
+export function parseStepLog(text) {
+  const t = text.trim();
+  const m = /^([\s\S]*?)(?:\s+at=(\d{1,6}))?$/.exec(t);
+  const log = m[1].replace(/\s*\n\s*/g, ';').trim();
+  if (!/^v1(;|$)/.test(log) && !/^1\./.test(log)) return null;
+  return { log, at: m[2] === undefined ? null : +m[2] };
+}
+
 export function parseHash(hash) {
   const out = {
     mesh: { kind: 'grid', dims: [3, 3, 3] }, steps: [], at: null, selection: null, camera: null, diagrams: [],

@@ -139,6 +139,37 @@ test('exports: PNG with the state URL, the SVG of a diagram, every writable mesh
   assert.equal(nativeHexes(hxd.bytes, 'start.hxd'), 8);
   assert.equal(steps.name, 'cube8.steps.txt');
   assert.equal(steps.bytes.toString('utf8'), 'v1;pillow h0f1\nat=1\n');
+
+  // The recipient drops both files at once: the mesh opens, then its steps replay.
+  await x.open('#mesh=grid:3x3x3');
+  await page.evaluate(([hxdText, stepsText]) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([stepsText], 'cube8.steps.txt'));
+    dt.items.add(new File([hxdText], 'cube8.hxd'));
+    for (const type of ['dragenter', 'dragover', 'drop']) document.body.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true }));
+  }, [hxd.bytes.toString('utf8'), steps.bytes.toString('utf8')]);
+  await page.waitForFunction(() => window.hexdual.store.get().steps.length === 1);
+  await x.settle();
+  assert.deepEqual(((s) => [s.hexes, s.steps, s.at])(await x.state()), [10, ['pillow h0f1'], 1]);
+  assert.match(x.hash(), /mesh=file:cube8\.hxd&steps=v1;pillow h0f1/);
+
+  // Or pastes the log into the step box: all of it applies, or (a refused step in it) none of it.
+  await page.click('#tl-start');
+  await x.settle();
+  const typeLog = async (text) => {
+    await page.fill('#op-step', text);
+    await page.press('#op-step', 'Enter');
+    await x.settle();
+  };
+  await typeLog('v1;pillow h0f1;pillow h9999f0');
+  assert.deepEqual(((s) => [s.hexes, s.at])(await x.state()), [8, 0], 'nothing of a refused log stays');
+  assert.match(await page.locator('#op-error').textContent(), /^operation log: .*h9999/);
+  assert.equal(await page.locator('#error').textContent(), '', 'the error is shown once, under the step box');
+  await typeLog('v1;pillow h0f1 at=0'); // at=K: the log's step K is shown, the rest kept for redo
+  assert.deepEqual(((s) => [s.hexes, s.steps, s.at])(await x.state()), [8, ['pillow h0f1'], 0]);
+  await typeLog('v1;pillow h0f1 at=1');
+  assert.deepEqual(((s) => [s.hexes, s.steps, s.at])(await x.state()), [10, ['pillow h0f1'], 1]);
+  assert.equal(await page.locator('#op-error').textContent(), '');
   assert.deepEqual(errors, []);
 });
 

@@ -127,13 +127,18 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   assert.match(hash, new RegExp(`steps=v1;${step}`));
   assert.match(hash, /sing=1/);
   assert.match(hash, new RegExp(`mesh=file:${NAME.replace(/\./g, '\\.')}`));
-  // Shared: the page asks for the file; dropping it replays the steps, and redo gives the extraction.
+  // Shared: the page asks for the file and the URL keeps naming it and its steps meanwhile (nothing
+  // replays on the stand-in grid); opening it replays the steps, and redo gives the extraction.
   await x.open(new URL(page.url()).hash);
-  assert.match(await page.locator('#error').textContent(), /local file that the URL cannot carry/);
-  await dropBytes(bytes, NAME);
+  assert.match(await page.locator('#error').textContent(), /local file that the URL cannot carry: open or drop it on the page \(its 1 step will replay\)/);
+  assert.equal(x.hash(), hash, 'the URL waits for the file');
+  assert.deepEqual((await x.state()).steps, [], 'no step replayed on the stand-in grid');
+  await page.setInputFiles('#mesh-file', { name: NAME, mimeType: 'application/octet-stream', buffer: bytes });
   await page.waitForFunction(() => window.hexdual.store.get().mesh.counts.hexes === 980, null, { timeout: 30000 });
   await x.settle();
   assert.deepEqual((await x.state()).steps, [step]);
+  assert.equal(await page.evaluate(() => window.hexdual.store.get().singular), true, 'the URL\'s overlay comes back with the file');
+  assert.equal(await page.locator('#error').textContent(), '');
   await page.keyboard.press('ArrowRight');
   await x.settle();
   assert.equal((await x.shownCounts()).hexes, after);
