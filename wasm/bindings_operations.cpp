@@ -170,7 +170,7 @@ std::string WasmMesh::record(StepRecord s) {
 std::string WasmMesh::apply(const OpStep& step) {
   tracker();  // the tracker must see the state before the step
   StepRecord s;
-  s.report = applyStepTracked(cx_, *tracker_, step, stepOptions());
+  s.report = applyStepTracked(cx_, *tracker_, step, stepOptions(), &s.ids);
   return record(std::move(s));
 }
 
@@ -183,6 +183,7 @@ std::string WasmMesh::applyFlip(const std::string& name, const std::vector<int>&
     s.report.result.quality = placeStepGeometry(cx_, s.report.result.edits, stepOptions().geometry);
     s.flipName = name;
     s.flipHexes = hexes;
+    s.ids = tracker_->idMemo(cx_, s.report.result.edits);
     s.report.dual = tracker_->update(cx_, s.report.result.edits, false);
     return "[" + record(std::move(s)) + "]";
   }
@@ -206,9 +207,7 @@ std::string WasmMesh::applyFlip(const std::string& name, const std::vector<int>&
 void WasmMesh::undoOne() {
   StepRecord s = std::move(history_.back());
   history_.pop_back();
-  cx_.undo(s.report.result.edits);
-  tracker_->update(cx_, s.report.result.edits, keepsSheetTopology(s.report.result));
-  tracker_->releaseRetiredTail();
+  undoStepTracked(cx_, *tracker_, s.report, s.ids);  // exact, sheet and chord ids included
   redo_.push_back(std::move(s));
 }
 

@@ -27,6 +27,7 @@ using emscripten::val;
 // One entry of the undo list: the core's step report, or a flip applied directly (no log step).
 struct StepRecord {
   StepReport report;
+  DualIdMemo ids;  // what undo needs to give the dual its ids back
   std::string flipName;  // non-empty for a direct flip
   std::vector<int> flipHexes;
   bool loggable() const { return flipName.empty(); }

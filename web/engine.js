@@ -78,7 +78,11 @@ export function createEngine(store) {
       changedSheets = [...sheets].sort((x, y) => x - y);
       changedChords = [...chords].sort((x, y) => x - y);
     }
-    return { key: meshKey, step, created, removed, changedSheets, changedChords };
+    // The engine's own facts about a single step: its inverse and the geometry it left.
+    const facts = result && typeof result === 'object' && 'inverse' in result
+      ? { inverse: result.inverse, noInverse: result.noInverse ?? null, quality: result.quality ?? null }
+      : { inverse: null, noInverse: null, quality: null };
+    return { key: meshKey, step, created, removed, changedSheets, changedChords, ...facts };
   }
 
   const engine = {

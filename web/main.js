@@ -50,7 +50,8 @@ function changeMesh(change, errorPrefix) {
     store.batch(() => {
       change();
       const s = store.get();
-      store.set({ ...survivors(s, s.mesh), error: '', opError: null });
+      const focus = s.focus?.key?.startsWith('preview:') ? null : s.focus; // a preview's highlight ends with the step
+      store.set({ ...survivors(s, s.mesh), error: '', opError: null, focus });
     });
   } catch (e) {
     const op = errorPrefix.split(/[ :]/)[0];

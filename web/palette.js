@@ -5,6 +5,7 @@
 // before a click applies it (on a touch screen: the first tap previews, the second applies). Typed
 // steps work too; errors show next to it.
 import { formatSelection } from './selection.js';
+import { qualityText } from './stepText.js';
 
 export const OPS = {
   pillow: ['minimal pillow: two hexes on the quad\'s 8 vertices, a new sphere sheet (TK03 §4.3)', '+4,+8,+6,+2'],
@@ -42,6 +43,8 @@ export function createPalette(root, actions) {
   list.addEventListener('pointerover', (e) => {
     const li = e.target.closest('li.sheet-op');
     if (li && li.dataset.step !== preview.dataset.step) showPreview(li);
+    else if (li && previewFocus && window.hexdual.store.get().focus !== previewFocus) actions.set({ focus: previewFocus });
+    else if (!li) endPreview();
   });
   // A touch has no hover: its first tap on a sheet operation previews it, a second tap applies it.
   let pointerType = 'mouse';
@@ -78,10 +81,19 @@ export function createPalette(root, actions) {
       return;
     }
     const d = p.report.delta;
-    const q = p.report.quality;
+    const q = qualityText(p.report.quality);
     preview.textContent = `${p.step} would remove ${p.hexesRemoved} and create ${p.hexesCreated} hexes, Δ(${d.V},${d.E},${d.F},${d.H})` +
-      (q ? `; min scaled Jacobian ${q.before.toFixed(2)} → ${q.after.toFixed(2)}` : '') + `. ${then}`;
+      (q ? `; ${q}` : '') + `. ${then}`;
+    // The hexes it would remove, highlighted in 3D while the preview shows (the rest dimmed).
+    const removed = p.report.removed.hexes;
+    previewFocus = removed.length ? { key: `preview:${p.step}:${s.meshKey}`, hexes: [...removed] } : null;
+    if (previewFocus) actions.set({ focus: previewFocus });
   }
+  let previewFocus = null;
+  function endPreview() {
+    if (window.hexdual.store.get().focus?.key?.startsWith('preview:')) actions.set({ focus: null });
+  }
+  list.addEventListener('pointerleave', endPreview);
 
   /** The sheet through a picked edge or the chord through a picked quad, and its sheet-family steps. */
   function sheetSteps(s) {
@@ -143,7 +155,9 @@ export function createPalette(root, actions) {
       const key = `${s.meshKey}|${formatSelection(s.selection)}`;
       if (key === shownKey) return;
       shownKey = key;
-      if (s.selection && 'hex' in s.selection && !input.value) input.placeholder = `pillow ${formatSelection(s.selection)}`;
+      // An example step of the right form for the selection (pillow takes a quad, sheet-extract an edge).
+      const example = { quad: 'pillow', edge: 'sheet-extract', hex: 'sheet-pillow' }[s.selection?.kind];
+      if (example && !input.value) input.placeholder = `${example} ${formatSelection(s.selection)}`;
       const { items, flips, note } = candidatesFor(s);
       const sheet = sheetSteps(s);
       preview.textContent = '';

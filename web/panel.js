@@ -125,7 +125,7 @@ function singularSummary(root, sing) {
     ...Object.entries(c.interiorByValence).map(([v, n]) => chip(false, v, n)),
     ...Object.entries(c.boundaryByValence).map(([v, n]) => chip(true, v, n)),
   ];
-  root.innerHTML = `<div>${c.interiorEdges} interior and ${c.boundaryEdges} boundary singular edges · ${c.curves} curves · ${c.vertices} singular vertices (${c.boundaryVertices} on the boundary)</div>${chips.join(' ')}`;
+  root.innerHTML = `<div>${c.interiorEdges} interior and ${c.boundaryEdges} boundary singular edges · ${c.curves} curves · ${c.vertices} irregular vertices (${c.boundaryVertices} on the boundary)</div>${chips.join(' ')}`;
 }
 
 export function createPanel(root, actions, view) {

@@ -1,6 +1,7 @@
 // The timeline: applied steps as a strip, back / forward / play, ←/→ keys (main.js), click a step to
 // jump there. Steps after the current position are kept (greyed) until a new step replaces them.
 import { revealInStrip } from './scrollStrip.js';
+import { inverseText, qualityText } from './stepText.js';
 
 export function createTimeline(root, actions) {
   root.innerHTML = `<button id="tl-start" title="start mesh">«</button><button id="tl-back" title="back (←)">◀</button>
@@ -57,10 +58,11 @@ export function createTimeline(root, actions) {
         }),
       );
       const r = s.report && s.report.key === s.meshKey ? s.report : null;
+      const part = (t) => (t ? ` · ${t}` : '');
       $('#tl-report').textContent = r
-        ? `${r.step}: +${r.created.length} / −${r.removed.length} hexes · sheets ${r.changedSheets.join(', ') || '–'} · chords ${r.changedChords.slice(0, 8).join(', ') || '–'}${r.changedChords.length > 8 ? ' …' : ''}`
+        ? `${r.step}: +${r.created.length} / −${r.removed.length} hexes${part(inverseText(r))} · sheets ${r.changedSheets.join(', ') || '–'} · chords ${r.changedChords.slice(0, 8).join(', ') || '–'}${r.changedChords.length > 8 ? ' …' : ''}${part(qualityText(r.quality))}`
         : '';
-      $('#tl-report').title = $('#tl-report').textContent;
+      $('#tl-report').title = r && r.inverse ? $('#tl-report').textContent.replace(inverseText(r), inverseText(r, { full: true })) : $('#tl-report').textContent;
       revealInStrip($('#tl-steps'), $('#tl-steps .current'));
     },
   };

@@ -159,8 +159,11 @@ void DualTracker::growPerHexArrays(size_t cap) {
   growHuge(front_, 3 * cap, int32_t(0));
 }
 
-void DualTracker::releaseRetiredTail() {
-  while (!dual_.sheets.empty() && !dual_.sheets.back().alive) {
+void DualTracker::releaseRetiredTail() { dropRetiredAbove(0, 0); }
+
+// Drops the retired ids at the end of the id ranges, keeping at least `sheets` and `chords` ids.
+void DualTracker::dropRetiredAbove(size_t sheets, size_t chords) {
+  while (dual_.sheets.size() > sheets && !dual_.sheets.back().alive) {
     dual_.sheets.pop_back();
     selfPairs_.pop_back();
     if (labels_.size() > dual_.sheets.size()) {
@@ -168,7 +171,7 @@ void DualTracker::releaseRetiredTail() {
       labels_.pop_back();
     }
   }
-  while (!dual_.chords.empty() && !dual_.chords.back().alive) dual_.chords.pop_back();
+  while (dual_.chords.size() > chords && !dual_.chords.back().alive) dual_.chords.pop_back();
   pieces_.resize(dual_.chords.size());
   chordSelf_.resize(dual_.chords.size());
   unsettledMark_.resize(dual_.chords.size());

@@ -25,6 +25,7 @@
 //   tracker/chord_runs.cpp               chords as pieces of labelled runs: slicing, cutting, labels, settling
 //   tracker/chord_update.cpp             which chords changed; the whole re-walk (reference and fallback)
 //   tracker/chord_rejoin.cpp             the local chord update: stretches joined by walks through the edit
+//   tracker/id_restore.cpp               exact undo's ids: a step's ids read before it, given back after its undo
 // The undo journal itself is the complex's (Complex::EditLog, cx.undo); the tracker follows an undo
 // like any edit and gives the undone step's ids back with releaseRetiredTail().
 #pragma once
@@ -38,6 +39,14 @@ namespace hexdual {
 struct DualChange {
   std::vector<int> sheetsCreated, sheetsRemoved, sheetsChanged;  // changed: same id, new slots
   std::vector<int> chordsCreated, chordsRemoved, chordsChanged;
+};
+
+// What undoing a step needs to give the dual its ids back: the id ranges before the step and one
+// slot of each sheet and chord through the hexes it touched, with that sheet's or chord's id. Read
+// by idMemo() before the step's update; restoreIds() applies it after the update undoing the step.
+struct DualIdMemo {
+  size_t sheets = 0, chords = 0;  // dual().sheets.size(), dual().chords.size() before the step
+  std::vector<std::pair<Slot, int32_t>> sheetSlots, chordSlots;
 };
 
 class DualTracker {
@@ -62,6 +71,14 @@ class DualTracker {
   // Drops retired ids at the end of the id ranges, so that after an exact undo (LIFO) the ids the
   // undone step created are handed out again when it is redone.
   void releaseRetiredTail();
+
+  // Exact undo, ids included (tracker/id_restore.cpp). Before a step's update: idMemo of its edits.
+  // After the update that undoes it (cx.undo(edits), then update): restoreIds gives each sheet and
+  // chord the step changed the id it had before (the update names a restored sheet afresh), and
+  // drops the ids the step and its undo handed out. The dual is then the one before the step, ids
+  // and id ranges included, so a redo or another step hands out the same ids as a replay would.
+  DualIdMemo idMemo(const Complex& cx, const Complex::EditLog& edits) const;
+  void restoreIds(const DualIdMemo& memo);
 
   // Slots the last update visited (walked, flooded or re-labelled): its cost, independent of time.
   size_t slotsTouched() const { return slotsTouched_; }
@@ -155,6 +172,11 @@ class DualTracker {
   void checkLabelsOf(const Complex& cx) const;
   void checkOrientations(const Complex& cx) const;
   void checkPairCounts(const Complex& cx) const;
+
+  // ---- ids (tracker/id_restore.cpp): exchange everything two sheet (chord) ids name; either may be retired ----
+  void swapSheetIds(int32_t a, int32_t b);
+  void swapChordIds(int32_t a, int32_t b);
+  void dropRetiredAbove(size_t sheets, size_t chords);  // retired ids at the end, keeping at least these
 
   // ---- the frame (dual_tracker.cpp) ----
   void growPerHexArrays(size_t cap);

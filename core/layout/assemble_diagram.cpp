@@ -2,14 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-
+#include <numbers>
 
 namespace hexdual {
 using namespace tables;
 
 namespace {
-
-const double kPi = std::acos(-1.0);
 
 // The opened face of a sphere, drawn outside the circle: its mid-edge midpoints in angular order
 // are 0..3; the chord through (0,2) runs on an arc of radius 1.2 that passes the crossing at angle
@@ -28,7 +26,7 @@ struct OpenedFace {
       if (axisOfFace(f) != os.axis) {
         Point2 m = pl.pos[size_t(s.mid[size_t(pl.opened)][size_t(f)])];
         double t = std::atan2(m.y, m.x);
-        if (t < 0) t += 2 * kPi;
+        if (t < 0) t += 2 * std::numbers::pi;
         angle[f] = t;
         byAngle.push_back({t, f});
       }
@@ -47,7 +45,7 @@ struct OpenedFace {
     const int steps = 24;
     if (std::min(kin, kout) == 0) {  // inner arc a -> b, through the crossing
       double t1 = std::atan2(crossing.y, crossing.x);
-      if (t1 < 0) t1 += 2 * kPi;
+      if (t1 < 0) t1 += 2 * std::numbers::pi;
       for (int k = 0; k <= steps; ++k) {
         double t = ta + (tb - ta) * k / steps;
         if (k > 0) {

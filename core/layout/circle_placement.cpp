@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "layout/boundary_loops.hpp"
 #include "layout/arap_relax.hpp"
@@ -12,8 +13,6 @@ using namespace tables;
 
 namespace {
 
-const double kPi = std::acos(-1.0);
-
 // Loop k of the triangulation on the unit circle: corners at their angles (per corner id), mid
 // vertices (when the fan has them) halfway between their corners.
 void fixLoopOnCircle(const Triangulation& t, size_t k, const std::vector<double>& angle, Placement& pl,
@@ -22,7 +21,7 @@ void fixLoopOnCircle(const Triangulation& t, size_t k, const std::vector<double>
   const size_t per = t.withMids ? 2 : 1, nc = loop.size() / per;
   for (size_t j = 0; j < nc; ++j) {
     double a0 = angle[size_t(loop[per * j])], a1 = angle[size_t(loop[per * ((j + 1) % nc)])];
-    while (a1 <= a0) a1 += 2 * kPi;
+    while (a1 <= a0) a1 += 2 * std::numbers::pi;
     for (size_t p = 0; p < per; ++p) {
       double a = a0 + (a1 - a0) * double(p) / double(per);
       int v = loop[per * j + p];
@@ -36,13 +35,13 @@ void fixLoopOnCircle(const Triangulation& t, size_t k, const std::vector<double>
 std::vector<double> evenAngles(const MidSurface& s, const Triangulation& t, size_t k, double phase) {
   std::vector<double> a(size_t(s.nCorner), 0);
   const size_t n = t.loopEdges[k].size();
-  for (size_t j = 0; j < n; ++j) a[size_t(t.edges[size_t(t.loopEdges[k][j])].from)] = phase + 2 * kPi * double(j) / double(n);
+  for (size_t j = 0; j < n; ++j) a[size_t(t.edges[size_t(t.loopEdges[k][j])].from)] = phase + 2 * std::numbers::pi * double(j) / double(n);
   return a;
 }
 
 // Rings of virtual vertices closing a hole of n vertices: about its radius in edge lengths, so the
 // hole is drawn about as large as a disk of the sheet with that boundary would be.
-int holeRings(size_t n) { return int(double(n) / (2 * kPi)); }
+int holeRings(size_t n) { return int(double(n) / (2 * std::numbers::pi)); }
 
 // ARAP rounds: most drawings settle in a few; a lens or a blind chord opens up within a dozen.
 constexpr int kRelaxIterations = 8;
@@ -114,7 +113,7 @@ bool placeSurface(const MidSurface& s, Placement& pl, std::string* why) {
     pl.method = "sphere";
     pl.tri = triangulate(s, pl.opened);
     start(pl, fixed);
-    fixLoopOnCircle(pl.tri, 0, evenAngles(s, pl.tri, 0, kPi / 4), pl, fixed);
+    fixLoopOnCircle(pl.tri, 0, evenAngles(s, pl.tri, 0, std::numbers::pi / 4), pl, fixed);
   } else {
     pl.method = loops.size() == 1 ? "disk" : loops.size() == 2 ? "annulus" : "holes";
     pl.tri = triangulate(s, -1);

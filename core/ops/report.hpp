@@ -16,6 +16,13 @@ struct StepReport {
 
 // Applies `step` to cx and brings `tracker` (which follows cx) up to date. Throws as applyStep
 // does; the complex and the tracker are then unchanged.
-StepReport applyStepTracked(Complex& cx, DualTracker& tracker, const OpStep& step, const StepOptions& options = {});
+// With `memo`, also keeps what undoStepTracked needs to give the dual its ids back.
+StepReport applyStepTracked(Complex& cx, DualTracker& tracker, const OpStep& step, const StepOptions& options = {},
+                            DualIdMemo* memo = nullptr);
+
+// Undoes the step `rep` reports, applied last (LIFO), with the memo kept when it was applied: the
+// complex and the dual are exactly as before it, sheet and chord ids (and id ranges) included, so
+// the ids that follow are those a replay of the log without the step gives.
+void undoStepTracked(Complex& cx, DualTracker& tracker, const StepReport& rep, const DualIdMemo& memo);
 
 }  // namespace hexdual

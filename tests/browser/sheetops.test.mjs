@@ -56,6 +56,8 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   await page.waitForFunction(() => window.hexdual.store.get().mesh.counts.hexes === 980, null, { timeout: 30000 });
   await x.settle();
 
+  const sheetIds = () => page.evaluate(() => window.hexdual.store.get().mesh.sheets.map((x) => x.id).join(','));
+  const idsAtStart = await sheetIds();
   // The singular edges: the overlay draws every one, the panel counts them as the CLI does.
   await page.locator('#singular').check();
   await x.settle();
@@ -68,7 +70,7 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   assert.match(summary, /interior valence 5: 35/);
   // vertices counts every singular vertex once; boundaryVertices is the part of them on the boundary.
   assert.ok(c.boundaryVertices <= c.vertices);
-  assert.match(summary, new RegExp(`· ${c.vertices} singular vertices \\(${c.boundaryVertices} on the boundary\\)`));
+  assert.match(summary, new RegExp(`· ${c.vertices} irregular vertices \\(${c.boundaryVertices} on the boundary\\)`));
   await page.screenshot({ path: join(screenshotDir, 'explorer-singular.png') });
 
   // A picked singular edge: its valence and the sheet and chords through it.
@@ -92,6 +94,11 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
     assert.fail(`${step} is refused on ${NAME}: ${expected.error}`);
   }
   assert.match(preview, new RegExp(`would remove ${expected.hexesRemoved} and create ${expected.hexesCreated} hexes`));
+  // While the preview shows, the hexes it would remove are highlighted in 3D (the rest dimmed).
+  const focus = await page.evaluate(() => window.hexdual.store.get().focus);
+  assert.deepEqual(focus.hexes, expected.report.removedHexes);
+  await x.settle();
+  await page.screenshot({ path: join(screenshotDir, 'explorer-sheet-preview-3d.png') });
   await page.locator('#palette').screenshot({ path: join(screenshotDir, 'explorer-sheet-preview.png') });
   const marksShown = () => page.evaluate(() => window.hexdual.view.marksShown);
   assert.ok((await marksShown()) > 0, 'the picked edge is marked');
@@ -99,6 +106,7 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   await x.settle();
   // The edge's hex went with the sheet: the selection is cleared, and so is its mark.
   assert.equal((await x.state()).selection, null);
+  assert.equal(await page.evaluate(() => window.hexdual.store.get().focus), null, 'the preview\'s highlight ends with the step');
   assert.equal(await marksShown(), 0, 'no mark left on removed hexes');
   const after = 980 - expected.hexesRemoved + expected.hexesCreated;
   assert.equal((await x.shownCounts()).hexes, after);
@@ -108,7 +116,14 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   await page.screenshot({ path: join(screenshotDir, 'explorer-sheet-extract.png') });
   // The step's report: two lines at most, the whole text in its title; a click shows it all, another folds it.
   const report = page.locator('#tl-report');
-  assert.match(await report.getAttribute('title'), /^sheet-extract h\d+e\d+: \+0 \/ −\d+ hexes · sheets /);
+  // It names the inverse the engine reports (a sheet insertion of the glued quads; shortened in the
+  // text, whole in the title) and the touched hexes' quality, as the CLI does.
+  const title = await report.getAttribute('title');
+  assert.ok(title.startsWith(`${step}: +0 / −${expected.hexesRemoved} hexes · inverse: ${expected.report.inverse} · sheets `), title);
+  const q = expected.report.quality;
+  assert.ok(title.endsWith(`min scaled Jacobian ${q.before.toFixed(2)} → ${q.after.toFixed(2)}`), title);
+  const places = expected.report.inverse.split(' ').length - 1;
+  assert.match(await report.textContent(), new RegExp(`· inverse: sheet-insert (h\\d+f\\d ){4}… \\(${places} places\\) · sheets `));
   const lines = () => report.evaluate((e) => Math.round(e.getBoundingClientRect().height / parseFloat(getComputedStyle(e).lineHeight)));
   assert.ok((await lines()) <= 2, `report folded to ${await lines()} lines`);
   await report.click();
@@ -116,10 +131,12 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   await report.click();
   assert.equal(await report.getAttribute('class'), 'pos');
 
-  // Undo (the timeline's back key): the mesh and its singular edges as before.
+  // Undo (the timeline's back key): the mesh and its singular edges as before, and the sheets with
+  // their own ids (the extracted one is not renamed), as a fresh load gives them.
   await page.keyboard.press('ArrowLeft');
   await x.settle();
   assert.equal((await x.shownCounts()).hexes, 980);
+  assert.deepEqual(await sheetIds(), idsAtStart);
   assert.equal(await singularShown(), 174);
 
   // The URL: the steps of the timeline (the undone one kept for redo), the overlay, the file's name.

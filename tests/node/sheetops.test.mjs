@@ -17,6 +17,8 @@ test('sheet-extract: the report (ids, delta, one sheet fewer, chords shorter), e
   const hash = m.canonicalHash();
   const start = m.save('hxd');
   const sheets = m.dualSizes().sheets;
+  const dualBefore = m.hexDual();
+  const idsBefore = JSON.stringify([m.sheets.map((x) => [x.id, x.hexes]), m.chords.map((x) => [x.id, x.hexes])]);
   const r = m.apply('sheet-extract h13e0');
   assert.equal(r.op, 'sheet-extract');
   assert.deepEqual(r.removed.hexes, [1, 4, 7, 10, 13, 16, 19, 22, 25]);
@@ -32,6 +34,12 @@ test('sheet-extract: the report (ids, delta, one sheet fewer, chords shorter), e
   assert.equal(m.undo(), 'sheet-extract h13e0');
   assert.deepEqual(m.save('hxd'), start);
   assert.equal(m.canonicalHash(), hash);
+  // Exact undo includes the dual's ids: the extracted sheet and its chords come back with their own
+  // ids (not fresh ones), so a URL's sel=/diag= written after an undo names what a replay names.
+  assert.equal(JSON.stringify([m.sheets.map((x) => [x.id, x.hexes]), m.chords.map((x) => [x.id, x.hexes])]), idsBefore);
+  const dualAfter = m.hexDual();
+  assert.deepEqual([dualAfter.sheetOf, dualAfter.chordOf], [dualBefore.sheetOf, dualBefore.chordOf]);
+  assert.deepEqual(m.dualSizes(), { sheets, chords: m.dualSizes().chords });
   m.delete();
 });
 
