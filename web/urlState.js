@@ -73,6 +73,7 @@ export function parseHash(hash) {
       }
       case 'sing':
         out.singular = v === '1';
+        if (v !== '1' && v !== '0') ignore(k, v, 'expected 0 or 1');
         break;
       case 'overlay':
         out.overlay = v === '1';

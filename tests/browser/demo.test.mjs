@@ -141,7 +141,7 @@ test('picking a quad and an edge on the canvas; the selection is in the URL and 
 });
 
 test('a malformed URL says what it ignored, parameter by parameter', async () => {
-  await open('#mesh=grid:3x3x3&sheet=999&at=x&foo=1&cam=1,2&steps=v1;pillow%20h13f5;hexpush%20h0f0&diag=77');
+  await open('#mesh=grid:3x3x3&sheet=999&at=x&foo=1&cam=1,2&steps=v1;pillow%20h13f5;hexpush%20h0f0&diag=77&sing=banana');
   const err = await page.locator('#error').textContent();
   assert.match(err, /ignored sheet=999: there are 10 sheets \(0\.\.9\)/);
   assert.match(err, /ignored at=x: expected a step number/);
@@ -149,7 +149,10 @@ test('a malformed URL says what it ignored, parameter by parameter', async () =>
   assert.match(err, /ignored cam=1,2: expected six numbers/);
   assert.match(err, /ignored steps from step 2 \(hexpush h0f0\): hexpush: quad h0f0 is on the boundary/i);
   assert.match(err, /ignored diag=77: there are \d+ sheets/);
+  assert.match(err, /ignored sing=banana: expected 0 or 1/);
   assert.equal((await shownCounts()).hexes, 29);
+  await open('#mesh=grid:2x2x2&steps=v1;pillow%20h0f1&at=5');
+  assert.match(await page.locator('#error').textContent(), /ignored at=5: there is only 1 step$/);
   await open('#mesh=cube:zz&sel=h999');
   assert.match(await page.locator('#error').textContent(), /ignored mesh=cube:zz/);
   assert.match(await page.locator('#error').textContent(), /ignored sel=h999: hex 999 does not exist/);
