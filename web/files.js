@@ -91,7 +91,7 @@ export function createFiles(body, actions, store, view) {
   };
   const base = () => {
     const s = store.get();
-    return s.spec?.kind === 'file' ? s.spec.name.replace(/\.[^.]+$/, '') : s.spec?.kind === 'fourcube' ? 'fourcube' : `${s.spec.kind}-${s.spec.dims.join('x')}`;
+    return s.spec?.kind === 'file' ? s.spec.name.replace(/(\.gz)?$/i, '').replace(/\.[^.]+$/, '') : s.spec?.kind === 'fourcube' ? 'fourcube' : `${s.spec.kind}-${s.spec.dims.join('x')}`;
   };
   button('PNG', () => {
     view.requestRender();

@@ -21,7 +21,7 @@ timings.init = performance.now();
 const store = createState({
   mesh: null, spec: null, meshKey: '', steps: [], at: 0, report: null, selection: null, diagrams: [],
   shrink: 0.15, overlay: false, singular: false, ghosts: true, focusChanges: true, colorBy: 'plain', quality: null, slice: null, camera: null,
-  error: '', opError: null, notice: '', view: 'explore', flip: null, focus: null, busy: false,
+  error: '', opError: null, waitingFor: null, notice: '', view: 'explore', flip: null, focus: null, busy: false,
 });
 const engine = createEngine(store);
 
@@ -54,7 +54,8 @@ function changeMesh(change, errorPrefix) {
       store.set({ ...survivors(s, s.mesh), error: '', opError: null, focus });
     });
   } catch (e) {
-    const op = errorPrefix.split(/[ :]/)[0];
+    // The engine's message starts with the operation's name (or 'oplog' for a log): said once.
+    const op = errorPrefix.startsWith('operation log') ? 'oplog' : errorPrefix.split(/[ :]/)[0];
     const message = op && e.message.startsWith(`${op}: `) ? e.message.slice(op.length + 2) : e.message;
     store.set({ opError: { key: store.get().meshKey, text: errorPrefix + message } });
   }
@@ -62,6 +63,13 @@ function changeMesh(change, errorPrefix) {
 
 // A URL naming a local file (mesh=file:NAME), waiting for that file to be opened or dropped.
 let pendingFile = null;
+// While it waits, the 3x3x3 grid only stands in: a step there would replace the shared URL (its
+// file and steps), so steps are refused until the file comes or another mesh is built.
+function refuseOnStandIn() {
+  if (!pendingFile) return false;
+  store.set({ opError: { key: store.get().meshKey, text: `the URL's ${plural(pendingFile.steps.length, 'step')} are for ${pendingFile.mesh.name}: open or drop that file first (or build a mesh to work on another)` } });
+  return true;
+}
 
 const actions = {
   flips: flips(),
@@ -69,6 +77,7 @@ const actions = {
   /** Builds a grid, ring or the 4-cube boundary (`dims` like 3x3x3). */
   build(kind, dimsText) {
     pendingFile = null;
+    store.set({ waitingFor: null });
     let spec = { kind: 'fourcube', dims: [] };
     if (kind !== 'fourcube') {
       const m = /^\s*(\d+)\s*x\s*(\d+)\s*x\s*(\d+)\s*$/.exec(dimsText);
@@ -93,9 +102,10 @@ const actions = {
     try {
       store.batch(() => engine.start({ kind: 'file', name }, bytes));
     } catch (e) {
-      return store.set({ error: `${name}: ${e.message}` });
+      return store.set({ error: e.message.startsWith(name) ? e.message : `${name}: ${e.message}` });
     }
     pendingFile = null;
+    store.set({ waitingFor: null });
     const notice = `${name} is a local file: the URL cannot carry it. Share it with "download .hxd + steps".`;
     if (pending && pending.mesh.name === name) {
       store.batch(() => {
@@ -104,6 +114,7 @@ const actions = {
         if (stepError) errors.push(stepError);
         showUrlState(pending, errors, notice);
       });
+      if (pending.camera) view.setCamera(pending.camera);
       return;
     }
     const other = pending ? `the URL's steps were for ${pending.mesh.name}, not ${name}: not replayed` : '';
@@ -125,7 +136,7 @@ const actions = {
   },
   /** Applies a typed or palette step at the current position (later undone steps are dropped). */
   apply(step) {
-    pendingFile = null; // working on the stand-in grid: the URL follows it from now on
+    if (refuseOnStandIn()) return;
     if (!step) return store.set({ opError: { key: store.get().meshKey, text: 'type an operation step, e.g. pillow h13f5' } });
     const log = parseStepLog(step);
     if (log) return actions.applyLog(log.log, log.at);
@@ -136,7 +147,7 @@ const actions = {
    * the current position, all or nothing; `at` = K then shows the log's step K (0: before it).
    */
   applyLog(log, at = null) {
-    pendingFile = null;
+    if (refuseOnStandIn()) return;
     const start = store.get().at;
     changeMesh(() => {
       engine.applyLog(log);
@@ -146,7 +157,7 @@ const actions = {
   },
   /** Applies a cubical flip at a place (hex ids of its before side) as its atomic steps. */
   applyFlip(name, hexes) {
-    pendingFile = null;
+    if (refuseOnStandIn()) return;
     changeMesh(() => engine.applyFlip(name, hexes), `flip ${name} at ${hexes.map((h) => 'h' + h).join(' ')}: `);
   },
   goTo(k) {
@@ -232,12 +243,14 @@ function loadFromUrlNow() {
   const p = parseHash(location.hash);
   const errors = [...p.errors];
   pendingFile = null;
+  store.set({ waitingFor: null });
   if (p.mesh.kind === 'file') {
     // The file itself cannot come with the URL: a 3x3x3 grid stands in, and the URL keeps naming the
     // file and its steps until the file is opened or dropped (then they replay, see actions.open).
     pendingFile = p;
     engine.start({ kind: 'grid', dims: [3, 3, 3] });
     store.set({
+      waitingFor: p.mesh.name,
       selection: null, diagrams: [], camera: null, shrink: p.shrink ?? 0.15, view: p.view, notice: '', quality: null,
       error: [...errors, `mesh=file:${p.mesh.name} is a local file that the URL cannot carry: open or drop it on the page (its ${plural(p.steps.length, 'step')} will replay)`].join('\n'),
     });

@@ -36,7 +36,12 @@ export function createPalette(root, actions) {
   const $ = (s) => root.querySelector(s);
   const list = $('#candidates');
   const input = $('#op-step');
-  const apply = () => actions.apply(input.value.trim());
+  // A typed step or log that applied leaves the box (Enter again would apply it once more).
+  const apply = () => {
+    const before = window.hexdual.store.get().meshKey;
+    actions.apply(input.value.trim());
+    if (window.hexdual.store.get().meshKey !== before) input.value = '';
+  };
   $('#op-apply').addEventListener('click', apply);
   input.addEventListener('keydown', (e) => e.key === 'Enter' && apply());
   const preview = $('#op-preview');
@@ -44,7 +49,7 @@ export function createPalette(root, actions) {
     const li = e.target.closest('li.sheet-op');
     if (li && li.dataset.step !== preview.dataset.step) showPreview(li);
     else if (li && previewFocus && window.hexdual.store.get().focus !== previewFocus) actions.set({ focus: previewFocus });
-    else if (!li) endPreview();
+    else if (!li && e.target.closest('li')) endPreview(); // another kind of item: the preview is over
   });
   // A touch has no hover: its first tap on a sheet operation previews it, a second tap applies it.
   let pointerType = 'mouse';
@@ -68,6 +73,9 @@ export function createPalette(root, actions) {
     preview.dataset.step = li.dataset.step;
     delete preview.dataset.armed;
     for (const x of list.querySelectorAll('li.armed')) x.classList.remove('armed');
+    preview.classList.remove('warn');
+    previewFocus = null;
+    endFocus();
     let p;
     try {
       p = s.mesh.preview(li.dataset.step);
@@ -82,18 +90,30 @@ export function createPalette(root, actions) {
     }
     const d = p.report.delta;
     const q = qualityText(p.report.quality);
-    preview.textContent = `${p.step} would remove ${p.hexesRemoved} and create ${p.hexesCreated} hexes, Δ(${d.V},${d.E},${d.F},${d.H})` +
+    const inverted = p.report.quality?.inverted.length > 0;
+    preview.classList.toggle('warn', inverted);
+    preview.textContent = `${inverted ? '⚠ ' : ''}${p.step} would remove ${p.hexesRemoved} and create ${p.hexesCreated} hexes, Δ(${d.V},${d.E},${d.F},${d.H})` +
       (q ? `; ${q}` : '') + `. ${then}`;
-    // The hexes it would remove, highlighted in 3D while the preview shows (the rest dimmed).
-    const removed = p.report.removed.hexes;
-    previewFocus = removed.length ? { key: `preview:${p.step}:${s.meshKey}`, hexes: [...removed] } : null;
+    // In 3D, the hexes it would remove (or, for a dicing, which removes none, those of the sheet it
+    // splits) are highlighted while the preview shows, the rest dimmed.
+    const removed = p.report.removed.hexes.length ? [...p.report.removed.hexes] : operandHexes.get(p.step) ?? [];
+    previewFocus = removed.length ? { key: `preview:${p.step}:${s.meshKey}`, hexes: removed } : null;
     if (previewFocus) actions.set({ focus: previewFocus });
   }
   let previewFocus = null;
-  function endPreview() {
+  const operandHexes = new Map(); // sheet-family step -> the hexes of the sheet or chord it acts on
+  function endFocus() {
     if (window.hexdual.store.get().focus?.key?.startsWith('preview:')) actions.set({ focus: null });
   }
-  list.addEventListener('pointerleave', endPreview);
+  // The pointer left the list or moved to an item that is not a sheet operation.
+  function endPreview() {
+    endFocus();
+    preview.textContent = '';
+    preview.classList.remove('warn');
+    delete preview.dataset.step;
+  }
+  // (A touch's pointer leaves after every tap: its preview stays until another item is tapped.)
+  list.addEventListener('pointerleave', (e) => e.pointerType !== 'touch' && endPreview());
 
   /** The sheet through a picked edge or the chord through a picked quad, and its sheet-family steps. */
   function sheetSteps(s) {
@@ -102,6 +122,8 @@ export function createPalette(root, actions) {
     try {
       const pick = sel.kind === 'edge' ? { hex: sel.hex, edge: sel.edge } : { hex: sel.hex, face: sel.face };
       const x = s.mesh.select(pick);
+      operandHexes.clear();
+      for (const step of x.steps) operandHexes.set(step, [...x.hexes]);
       return { steps: x.steps, what: `${x.kind} ${x.id} (${x.hexes.length} hexes)` };
     } catch (e) {
       return { steps: [], what: '', error: `sheet operations at ${formatSelection(sel)}: ${e.message}` };
@@ -157,7 +179,7 @@ export function createPalette(root, actions) {
       shownKey = key;
       // An example step of the right form for the selection (pillow takes a quad, sheet-extract an edge).
       const example = { quad: 'pillow', edge: 'sheet-extract', hex: 'sheet-pillow' }[s.selection?.kind];
-      if (example && !input.value) input.placeholder = `${example} ${formatSelection(s.selection)}`;
+      input.placeholder = example ? `${example} ${formatSelection(s.selection)}` : 'pillow h13f5';
       const { items, flips, note } = candidatesFor(s);
       const sheet = sheetSteps(s);
       preview.textContent = '';

@@ -172,6 +172,7 @@ export function createPanel(root, actions, view) {
   let shownKey = null, qualityKey = null, singularKey = null;
 
   function describeSelection(s, sel) {
+    if (!sel && s.waitingFor) return `a 3×3×3 grid stands in: open or drop ${s.waitingFor} to replay the shared steps`;
     if (!sel) return `${s.mesh.counts.hexes} hexes — click a quad, an edge, or a sheet`;
     const id = formatSelection(sel);
     if (sel.kind === 'sheet') {

@@ -60,7 +60,7 @@ export function createTimeline(root, actions) {
       const r = s.report && s.report.key === s.meshKey ? s.report : null;
       const part = (t) => (t ? ` · ${t}` : '');
       $('#tl-report').textContent = r
-        ? `${r.step}: +${r.created.length} / −${r.removed.length} hexes${part(inverseText(r))} · sheets ${r.changedSheets.join(', ') || '–'} · chords ${r.changedChords.slice(0, 8).join(', ') || '–'}${r.changedChords.length > 8 ? ' …' : ''}${part(qualityText(r.quality))}`
+        ? `${r.step}: +${r.created.length} / −${r.removed.length} hexes${part(qualityText(r.quality))}${part(inverseText(r))} · sheets ${r.changedSheets.join(', ') || '–'} · chords ${r.changedChords.slice(0, 8).join(', ') || '–'}${r.changedChords.length > 8 ? ' …' : ''}`
         : '';
       $('#tl-report').title = r && r.inverse ? $('#tl-report').textContent.replace(inverseText(r), inverseText(r, { full: true })) : $('#tl-report').textContent;
       revealInStrip($('#tl-steps'), $('#tl-steps .current'));

@@ -99,6 +99,16 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   assert.deepEqual(focus.hexes, expected.report.removedHexes);
   await x.settle();
   await page.screenshot({ path: join(screenshotDir, 'explorer-sheet-preview-3d.png') });
+  // Dicing removes no hex: its preview highlights the sheet it splits; moving on to another kind of
+  // item ends the preview, text and highlight.
+  await page.locator(`#candidates li.sheet-op[data-step="sheet-dice h${edge.hex}e${edge.edge} 2"]`).hover();
+  await page.waitForFunction(() => window.hexdual.store.get().focus?.key.startsWith('preview:sheet-dice'));
+  assert.deepEqual([...(await page.evaluate(() => window.hexdual.store.get().focus.hexes))].sort((a, b) => a - b), [...dual.hexes].sort((a, b) => a - b));
+  await page.locator('#candidates li:not(.sheet-op)').first().hover();
+  assert.equal(await page.evaluate(() => window.hexdual.store.get().focus), null);
+  assert.equal(await page.locator('#op-preview').textContent(), '');
+  await item.hover();
+  await page.waitForFunction(() => window.hexdual.store.get().focus?.key.startsWith('preview:sheet-extract'));
   await page.locator('#palette').screenshot({ path: join(screenshotDir, 'explorer-sheet-preview.png') });
   const marksShown = () => page.evaluate(() => window.hexdual.view.marksShown);
   assert.ok((await marksShown()) > 0, 'the picked edge is marked');
@@ -119,11 +129,11 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   // It names the inverse the engine reports (a sheet insertion of the glued quads; shortened in the
   // text, whole in the title) and the touched hexes' quality, as the CLI does.
   const title = await report.getAttribute('title');
-  assert.ok(title.startsWith(`${step}: +0 / −${expected.hexesRemoved} hexes · inverse: ${expected.report.inverse} · sheets `), title);
   const q = expected.report.quality;
-  assert.ok(title.endsWith(`min scaled Jacobian ${q.before.toFixed(2)} → ${q.after.toFixed(2)}`), title);
+  const quality = `min scaled Jacobian ${q.before.toFixed(2)} → ${q.after.toFixed(2)}`;
+  assert.ok(title.startsWith(`${step}: +0 / −${expected.hexesRemoved} hexes · ${quality} · inverse: ${expected.report.inverse} · sheets `), title);
   const places = expected.report.inverse.split(' ').length - 1;
-  assert.match(await report.textContent(), new RegExp(`· inverse: sheet-insert (h\\d+f\\d ){4}… \\(${places} places\\) · sheets `));
+  assert.match(await report.textContent(), new RegExp(`· ${quality} · inverse: sheet-insert (h\\d+f\\d ){4}… \\(${places} places\\) · sheets `));
   const lines = () => report.evaluate((e) => Math.round(e.getBoundingClientRect().height / parseFloat(getComputedStyle(e).lineHeight)));
   assert.ok((await lines()) <= 2, `report folded to ${await lines()} lines`);
   await report.click();
@@ -144,11 +154,20 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   assert.match(hash, new RegExp(`steps=v1;${step}`));
   assert.match(hash, /sing=1/);
   assert.match(hash, new RegExp(`mesh=file:${NAME.replace(/\./g, '\\.')}`));
-  // Shared: the page asks for the file and the URL keeps naming it and its steps meanwhile (nothing
-  // replays on the stand-in grid); opening it replays the steps, and redo gives the extraction.
-  await x.open(new URL(page.url()).hash);
+  // Shared (with a view someone turned): the page asks for the file and the URL keeps naming it and
+  // its steps meanwhile (nothing replays on the stand-in grid, which takes no step); opening it
+  // replays the steps, the view comes back, and redo gives the extraction.
+  const cam = [5.25, 1.5, -5.5, 0, 0, 0];
+  const shared = `${new URL(page.url()).hash}&cam=${cam.join(',')}`;
+  await x.open(shared);
+  assert.match(await page.locator('#selection-label').textContent(), new RegExp(`stands in: open or drop ${NAME.replace(/\./g, '\\.')}`));
+  await page.fill('#op-step', 'pillow h13f5');
+  await page.press('#op-step', 'Enter');
+  await x.settle();
+  assert.match(await page.locator('#op-error').textContent(), new RegExp(`the URL's 1 step are for ${NAME.replace(/\./g, '\\.')}: open or drop that file first`));
+  assert.equal((await x.state()).hexes, 27);
   assert.match(await page.locator('#error').textContent(), /local file that the URL cannot carry: open or drop it on the page \(its 1 step will replay\)/);
-  assert.equal(x.hash(), hash, 'the URL waits for the file');
+  assert.equal(x.hash(), decodeURIComponent(shared).replace(/\+/g, ' '), 'the URL waits for the file');
   assert.deepEqual((await x.state()).steps, [], 'no step replayed on the stand-in grid');
   await page.setInputFiles('#mesh-file', { name: NAME, mimeType: 'application/octet-stream', buffer: bytes });
   await page.waitForFunction(() => window.hexdual.store.get().mesh.counts.hexes === 980, null, { timeout: 30000 });
@@ -156,6 +175,8 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   assert.deepEqual((await x.state()).steps, [step]);
   assert.equal(await page.evaluate(() => window.hexdual.store.get().singular), true, 'the URL\'s overlay comes back with the file');
   assert.equal(await page.locator('#error').textContent(), '');
+  assert.deepEqual(await page.evaluate(() => window.hexdual.view.getCamera()), cam, 'the URL\'s view comes back');
+  await page.locator('#op-step').blur(); // the arrow keys move in time when no text box has the focus
   await page.keyboard.press('ArrowRight');
   await x.settle();
   assert.equal((await x.shownCounts()).hexes, after);
