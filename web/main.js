@@ -55,7 +55,7 @@ function changeMesh(change, errorPrefix) {
     });
   } catch (e) {
     // The engine's message starts with the operation's name (or 'oplog' for a log): said once.
-    const op = errorPrefix.startsWith('operation log') ? 'oplog' : errorPrefix.split(/[ :]/)[0];
+    const op = /^operation log|\.txt\b/.test(errorPrefix) ? 'oplog' : errorPrefix.split(/[ :]/)[0];
     const message = op && e.message.startsWith(`${op}: `) ? e.message.slice(op.length + 2) : e.message;
     store.set({ opError: { key: store.get().meshKey, text: errorPrefix + message } });
   }
@@ -131,7 +131,9 @@ const actions = {
     if (mesh) actions.open(new Uint8Array(await mesh.arrayBuffer()), mesh.name);
     if (!log) return;
     const parsed = parseStepLog(await log.text());
-    if (parsed) actions.applyLog(parsed.log, parsed.at);
+    // Alone, a steps file applies to the mesh on screen, which may not be the one it was saved with.
+    const prefix = mesh ? `${log.name}: ` : `${log.name} (applied to the mesh on screen: was it saved with another?): `;
+    if (parsed) actions.applyLog(parsed.log, parsed.at, prefix);
     else store.set({ opError: { key: store.get().meshKey, text: `${log.name}: not an operation log (it starts with v1; or 1.)` } });
   },
   /** Applies a typed or palette step at the current position (later undone steps are dropped). */
@@ -146,14 +148,14 @@ const actions = {
    * Applies an operation log (typed, pasted, or a dropped steps.txt of "download .hxd + steps") at
    * the current position, all or nothing; `at` = K then shows the log's step K (0: before it).
    */
-  applyLog(log, at = null) {
+  applyLog(log, at = null, errorPrefix = 'operation log: ') {
     if (refuseOnStandIn()) return;
     const start = store.get().at;
     changeMesh(() => {
       engine.applyLog(log);
       const end = store.get().at;
       if (at !== null && start + at < end) engine.goTo(start + at); // at=K: step K of the log
-    }, 'operation log: ');
+    }, errorPrefix);
   },
   /** Applies a cubical flip at a place (hex ids of its before side) as its atomic steps. */
   applyFlip(name, hexes) {

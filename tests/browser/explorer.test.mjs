@@ -170,6 +170,12 @@ test('exports: PNG with the state URL, the SVG of a diagram, every writable mesh
   await typeLog('v1;pillow h0f1 at=1');
   assert.deepEqual(((s) => [s.hexes, s.steps, s.at])(await x.state()), [10, ['pillow h0f1'], 1]);
   assert.equal(await page.locator('#op-error').textContent(), '');
+  assert.equal(await page.inputValue('#op-step'), '', 'an applied log leaves the box');
+  // A steps file dropped alone applies to the mesh on screen, and a refusal says it may be another's.
+  await x.dropFile('v1;pillow h99f0\nat=1\n', 'other.steps.txt');
+  await x.settle();
+  assert.match(await page.locator('#op-error').textContent(), /^other\.steps\.txt \(applied to the mesh on screen: was it saved with another\?\): .*h99/);
+  assert.equal((await x.state()).hexes, 10);
   assert.deepEqual(errors, []);
 });
 
