@@ -5,34 +5,27 @@
 // restoreIds gives each of them its old id by exchanging ids, then drops the ids beyond the old
 // ranges (all retired by then). Owns nothing between calls: it moves what the other units own.
 #include <algorithm>
+#include <cstdint>
 
 #include "dual/dual_tracker.hpp"
 
 namespace hexdual {
 
-namespace {
-
-// One slot per id, the smallest (so the memo does not depend on the order of the touched hexes).
-void onePerId(std::vector<std::pair<Slot, int32_t>>& v) {
-  std::sort(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.second != b.second ? a.second < b.second : a.first < b.first; });
-  v.erase(std::unique(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.second == b.second; }), v.end());
-}
-
-}  // namespace
-
 DualIdMemo DualTracker::idMemo(const Complex& cx, const Complex::EditLog& edits) const {
   DualIdMemo m;
   m.sheets = dual_.sheets.size();
   m.chords = dual_.chords.size();
+  // One slot per id, the first in (hex, axis) order: touchedHexes lists hexes ascending. Marked per
+  // id, so the memo costs one pass over the touched slots.
+  std::vector<uint8_t> sheetSeen(m.sheets, 0), chordSeen(m.chords, 0);
   for (HexId h : touchedHexes(cx, edits)) {
     if (size_t(h) >= dual_.sheetLabel.size() || dual_.sheetLabel[size_t(h)][0] < 0) continue;  // new: no slots before
     for (int a = 0; a < 3; ++a) {
-      m.sheetSlots.push_back({Slot{h, a}, dual_.sheetAt(h, a)});
-      m.chordSlots.push_back({Slot{h, a}, dual_.chordAt(h, a)});
+      const int32_t s = dual_.sheetAt(h, a), c = dual_.chordAt(h, a);
+      if (s >= 0 && !sheetSeen[size_t(s)]) sheetSeen[size_t(s)] = 1, m.sheetSlots.push_back({Slot{h, a}, s});
+      if (c >= 0 && !chordSeen[size_t(c)]) chordSeen[size_t(c)] = 1, m.chordSlots.push_back({Slot{h, a}, c});
     }
   }
-  onePerId(m.sheetSlots);
-  onePerId(m.chordSlots);
   return m;
 }
 
