@@ -170,11 +170,11 @@ node -e 'const a = JSON.parse(process.argv[1]); console.log(`| ${a.n}³ | ${a.co
 echo
 echo "### Sheet extraction of the middle layer of a 100³ grid (issue 22; CPU ms, minimum of $REPS applications and undos)"
 echo
-echo "| step | op ms | op + dual update ms | slots the update visits |"
-echo "| --- | --- | --- | --- |"
+echo "| step | op ms | op + dual update ms | exact undo's ids (idMemo + restoreIds) ms | slots the update visits |"
+echo "| --- | --- | --- | --- | --- |"
 se=$(build/native/hexdual_bench sheetops 100 "$REPS" sheetExtract)
 echo "$se" >>"$RESULTS"
-node -e 'const a = JSON.parse(process.argv[1]); console.log(`| ${a.op} (10,000 hexes) | ${a.opMs.toFixed(1)} | ${a.opPlusDualMs.toFixed(1)} | ${a.slotsTouched} |`);' "$se"
+node -e 'const a = JSON.parse(process.argv[1]); console.log(`| ${a.op} (10,000 hexes) | ${a.opMs.toFixed(1)} | ${a.opPlusDualMs.toFixed(1)} | ${a.undoIdsMs.toFixed(1)} | ${a.slotsTouched} |`);' "$se"
 
 echo
 echo "### Against the performance targets (this run)"
