@@ -128,13 +128,28 @@ const actions = {
     const isLog = (f) => /\.txt$/i.test(f.name);
     const mesh = files.find((f) => !isLog(f));
     const log = files.find(isLog);
-    if (mesh) actions.open(new Uint8Array(await mesh.arrayBuffer()), mesh.name);
+    const pending = pendingFile; // a shared URL waiting for its file, if any
+    const parsed = log ? parseStepLog(await log.text()) : null;
+    const logSteps = parsed && parsed.log.startsWith('v1') ? parsed.log.split(';').slice(1).filter(Boolean) : null;
+    const sameSteps = (a, b) => !!a && !!b && a.length === b.length && a.every((x, i) => x === b[i]);
+    if (mesh) {
+      const replays = pending && pending.mesh.name === mesh.name;
+      actions.open(new Uint8Array(await mesh.arrayBuffer()), mesh.name);
+      // The URL named this file and its steps replayed: the same steps in the log are not applied twice.
+      if (replays && log && sameSteps(logSteps, pending.steps)) return;
+    }
     if (!log) return;
-    const parsed = parseStepLog(await log.text());
     // Alone, a steps file applies to the mesh on screen, which may not be the one it was saved with.
     const prefix = mesh ? `${log.name}: ` : `${log.name} (applied to the mesh on screen: was it saved with another?): `;
-    if (parsed) actions.applyLog(parsed.log, parsed.at, prefix);
-    else store.set({ opError: { key: store.get().meshKey, text: `${log.name}: not an operation log (it starts with v1; or 1.)` } });
+    if (!parsed) return store.set({ opError: { key: store.get().meshKey, text: `${log.name}: not an operation log (it starts with v1; or 1.)` } });
+    actions.applyLog(parsed.log, parsed.at, prefix);
+    // The sender's .hxd + steps dropped in the page their URL opened (whose file had another name,
+    // e.g. part.vtk.gz): the same steps, so the URL's selection, diagrams and view come back too.
+    const s = store.get();
+    if (mesh && pending && !pendingFile && sameSteps(s.steps, pending.steps)) {
+      store.batch(() => showUrlState({ ...pending, at: parsed.at ?? pending.at }, [], s.notice));
+      if (pending.camera) view.setCamera(pending.camera);
+    }
   },
   /** Applies a typed or palette step at the current position (later undone steps are dropped). */
   apply(step) {

@@ -141,17 +141,30 @@ test('exports: PNG with the state URL, the SVG of a diagram, every writable mesh
   assert.equal(steps.bytes.toString('utf8'), 'v1;pillow h0f1\nat=1\n');
 
   // The recipient drops both files at once: the mesh opens, then its steps replay.
-  await x.open('#mesh=grid:3x3x3');
-  await page.evaluate(([hxdText, stepsText]) => {
+  const dropBoth = () => page.evaluate(([hxdText, stepsText]) => {
     const dt = new DataTransfer();
     dt.items.add(new File([stepsText], 'cube8.steps.txt'));
     dt.items.add(new File([hxdText], 'cube8.hxd'));
     for (const type of ['dragenter', 'dragover', 'drop']) document.body.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true }));
   }, [hxd.bytes.toString('utf8'), steps.bytes.toString('utf8')]);
-  await page.waitForFunction(() => window.hexdual.store.get().steps.length === 1);
-  await x.settle();
-  assert.deepEqual(((s) => [s.hexes, s.steps, s.at])(await x.state()), [10, ['pillow h0f1'], 1]);
+  const droppedState = async () => {
+    await page.waitForFunction(() => window.hexdual.store.get().steps.length > 0 && window.hexdual.store.get().mesh.counts.hexes > 8);
+    await x.settle();
+    return ((s) => [s.hexes, s.steps, s.at, s.diagrams, s.error])(await x.state());
+  };
+  await x.open('#mesh=grid:3x3x3');
+  await dropBoth();
+  assert.deepEqual(await droppedState(), [10, ['pillow h0f1'], 1, [], '']);
   assert.match(x.hash(), /mesh=file:cube8\.hxd&steps=v1;pillow h0f1/);
+  // In the page the sender's URL opens (their file was cube8.vtk): the steps apply once, and the
+  // URL's diagrams come back with them.
+  await x.open('#mesh=file:cube8.vtk&steps=v1;pillow%20h0f1&at=1&diag=0');
+  await dropBoth();
+  assert.deepEqual(await droppedState(), [10, ['pillow h0f1'], 1, [0], '']);
+  // A URL naming the .hxd itself replays its steps when it comes: the log's same steps are not applied twice.
+  await x.open('#mesh=file:cube8.hxd&steps=v1;pillow%20h0f1&at=1&diag=0');
+  await dropBoth();
+  assert.deepEqual(await droppedState(), [10, ['pillow h0f1'], 1, [0], '']);
 
   // Or pastes the log into the step box: all of it applies, or (a refused step in it) none of it.
   await page.click('#tl-start');
