@@ -64,7 +64,7 @@ TEST_CASE("development-set meshes: every sheet laid out whole and checked") {
     ++opened;
     Dual d = extractDual(cx);
     int polygons = 0;
-    double spread = 1e9;
+    double spread = 1e9, diskSpread = 1e9;
     for (const Sheet& s : d.sheets) {
       CAPTURE(s.id);
       SheetDiagram dg = layoutSheet(cx, d, s.id);
@@ -72,16 +72,21 @@ TEST_CASE("development-set meshes: every sheet laid out whole and checked") {
       checkDiagram(dg, s.slots.size());
       CHECK(dg.euler == s.euler);
       spread = std::min(spread, diagramSpread(dg));
+      if (dg.method == "disk") diskSpread = std::min(diskSpread, diagramSpread(dg));
       if (dg.method == "polygon") {
         ++polygons;
         ++topologies[s.topology];
       }
       ++diagrams;
     }
-    MESSAGE(name << ": " << d.sheets.size() << " sheets, " << polygons << " cut open, smallest spread " << spread);
+    MESSAGE(name << ": " << d.sheets.size() << " sheets, " << polygons << " cut open, smallest spread " << spread
+                 << " (disks " << diskSpread << ")");
     // No two crossings of a sheet drawn on top of each other. The closest pairs are on the largest
-    // sheets (P_big_buddy's 1,448-hex disks: 0.005 of an even spacing, near the boundary circle).
+    // sheets (P_big_buddy's cut-open sheet: 0.0049 of an even spacing). Its disks of 1,392 hexes,
+    // squeezed onto a circle, were at 0.0057; drawn in the shape their quads give, 0.12, and the
+    // smallest disk spread is now 0.027 (a 1,448-hex disk whose cones crowd its corners).
     CHECK(spread >= 0.004);
+    CHECK(diskSpread >= 0.02);
     auto it = expected.find(name);
     if (it == expected.end()) continue;
     CHECK(cx.counts().hexes == it->second.hexes);

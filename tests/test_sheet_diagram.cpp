@@ -48,6 +48,36 @@ TEST_CASE("sheet diagrams of grids: disks, every slot once, chords meet only at 
   for (const auto& c : dg.chords) CHECK_FALSE(c.closed);
 }
 
+// The extent of a diagram's outer loop: (width, height).
+static std::pair<double, double> loopBox(const SheetDiagram& dg) {
+  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+  for (Point2 p : dg.loops.at(0)) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  return {x1 - x0, y1 - y0};
+}
+
+TEST_CASE("a disk is drawn in the shape its quads give: a 20 x 3 layer as a long rectangle, not squeezed onto a circle") {
+  Complex g = makeGrid(20, 3, 2);
+  Dual d = extractDual(g);
+  SheetDiagram dg = layoutSheet(g, d, d.sheetAt(0, 2));  // a z-layer: 20 x 3 hexes
+  REQUIRE(dg.crossings.size() == 60);
+  CHECK(dg.method == "disk");
+  auto [w, h] = loopBox(dg);
+  const double aspect = std::max(w, h) / std::min(w, h);
+  CAPTURE(aspect);
+  CHECK(aspect > 5.5);  // 20 : 3 (the loop's corners are the boundary quads' sides: 6.7 for a rectangle)
+  CHECK(aspect < 7.5);
+  for (Point2 p : dg.loops[0]) CHECK(std::hypot(p.x, p.y) <= 1 + 1e-9);  // inside the unit circle (radius)
+  // Evenly spread like a grid: on the circle the same sheet crowds its ends.
+  CHECK(diagramSpread(dg) > 0.3);
+  // A square layer is a square: its four corners, where one quad meets the boundary, are corners.
+  Complex c = makeGrid(6, 6, 2);
+  Dual dc = extractDual(c);
+  SheetDiagram sq = layoutSheet(c, dc, dc.sheetAt(0, 2));
+  auto [sw, sh] = loopBox(sq);
+  CHECK(sw == doctest::Approx(sh).epsilon(0.05));
+  CHECK(sw == doctest::Approx(std::sqrt(2.0)).epsilon(0.05));  // the square inscribed in the unit circle
+}
+
 TEST_CASE("sheet diagrams of the ring mesh: annuli drawn between two circles, closed chords") {
   for (auto dims : {std::array<int, 3>{8, 2, 2}, {8, 3, 3}, {6, 1, 4}}) {
     Complex r = makeRing(dims[0], dims[1], dims[2]);

@@ -3,6 +3,7 @@
 // (level of detail for 1,000-crossing sheets). Click a crossing (hex), a chord, a cell (edge) or a
 // boundary mark (quad) to select it in 3D; the 3D selection is marked here. Local mode draws k rings
 // around the selected hex in a dotted circle.
+import { diagramFrame } from './diagramFrame.js';
 import { chordColor } from './colors.js';
 import { formatSelection } from './selection.js';
 import { animateDiagram, crossingKey, crossingPlaces } from './diagramMotion.js';
@@ -39,7 +40,7 @@ function createPanel(host, actions, spec) {
   const note = Object.assign(document.createElement('div'), { className: 'diagram-note' });
   box.appendChild(note);
   const root = el('g', {}, svg);
-  let diagram = null, extent = 1.2, spacing = 0.1;
+  let diagram = null, extent = 1.2, spacing = 0.1, centre = { x: 0, y: 0 };
   let drawing = root; // the current drawing's group (a fading ghost of the previous one may sit before it)
   let vb = { x: -1.2, y: -1.2, w: 2.4, h: 2.4 };
   let drawnKey = null;
@@ -71,7 +72,7 @@ function createPanel(host, actions, spec) {
     box.dataset.labels = labels && labels.style.display !== 'none' ? 'shown' : 'hidden';
   }
   function fit() {
-    vb = { x: -extent, y: -extent, w: 2 * extent, h: 2 * extent };
+    vb = { x: centre.x - extent, y: -centre.y - extent, w: 2 * extent, h: 2 * extent };
     applyView();
   }
 
@@ -85,8 +86,11 @@ function createPanel(host, actions, spec) {
     if (old) root.appendChild(old.g).classList.add('ghost');
     const g = el('g', { transform: 'scale(1,-1)' }, root);
     drawing = g;
-    extent = d.openedHex !== null && d.openedHex !== undefined ? 1.6 : 1.15;
-    spacing = Math.max(0.004, Math.sqrt((Math.PI * extent * extent) / Math.max(1, d.crossings.length)) * 0.55);
+    const frame = diagramFrame(d);
+    extent = frame.half;
+    centre = { x: frame.cx, y: frame.cy };
+    // About the distance between evenly spread crossings (0.55 of the even spacing over what they fill).
+    spacing = Math.max(0.004, Math.sqrt(frame.area / Math.max(1, d.crossings.length)) * 0.55);
     if (d.local) el('circle', { cx: 0, cy: 0, r: 1, fill: 'none', stroke: '#666', 'stroke-width': 0.01, 'stroke-dasharray': '0.04 0.03' }, g);
     d.loops.forEach((loop, i) => el('polygon', { points: loop.map((p) => p.join(',')).join(' '), fill: i === 0 ? '#f4f6fa' : 'white', stroke: '#222', class: 'loop' }, g));
     const cells = el('g', { class: 'cells' }, g);

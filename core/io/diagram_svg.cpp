@@ -29,8 +29,10 @@ std::string escapeXml(const std::string& s) {
 
 struct Canvas {
   double S = 200, M = 1.2;  // scale; margin in diagram units
-  double X(double x) const { return S * (x + M); }
-  double Y(double y) const { return S * (M - y); }
+  double cx = 0, cy = 0;    // the drawing's centre
+  double hx = 0, hy = 0;    // half its width and height with the margin, in diagram units
+  double X(double x) const { return S * (x - cx + hx); }
+  double Y(double y) const { return S * (cy - y + hy); }
   std::string points(const std::vector<Point2>& ps) const {
     std::string out;
     char buf[64];
@@ -103,29 +105,40 @@ std::vector<double> nearestCrossing(const SheetDiagram& d, double cell) {
 std::string diagramSvg(const SheetDiagram& d) {
   Canvas cv;
   cv.M = d.openedHex >= 0 ? 1.65 : 1.2;
+  cv.hx = cv.hy = cv.M;
+  // A disk drawn in the shape its quads give (a long rectangle, a square) is framed by its box and
+  // drawn as large as the circle would be; local views and opened spheres keep the circle's frame.
+  double grow = 1;
+  if (!d.local && d.openedHex < 0 && !d.loops.empty() && !d.loops[0].empty()) {
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (Point2 p : d.loops[0]) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    grow = 2 / std::max({x1 - x0, y1 - y0, 0.2});
+    cv.cx = (x0 + x1) / 2, cv.cy = (y0 + y1) / 2;
+    cv.hx = (x1 - x0) / 2 + (cv.M - 1) / grow, cv.hy = (y1 - y0) / 2 + (cv.M - 1) / grow;
+  }
   // Readable at scale: the canvas grows with the number of crossings so that evenly spread ones
   // are 14 px apart; markers and strokes shrink where crossings are closer; a crossing is labelled
   // only when its label fits before its nearest neighbour (every crossing has its id as a tooltip).
   const double even = std::sqrt(std::acos(-1.0) / double(std::max<size_t>(d.crossings.size(), 1)));
-  cv.S = std::clamp(14 / even, 200.0, 2400.0);
-  const double px = even * cv.S, marker = std::clamp(0.3 * px, 1.5, 4.5), stroke = std::clamp(0.15 * px, 0.6, 2.2);
+  cv.S = std::clamp(14 / even, 200.0, 2400.0) * grow;
+  const double px = even * cv.S / grow, marker = std::clamp(0.3 * px, 1.5, 4.5), stroke = std::clamp(0.15 * px, 0.6, 2.2);
   const std::vector<double> near = nearestCrossing(d, 24 / cv.S);
   char sw[16];
   std::snprintf(sw, sizeof sw, "%.3g", stroke);
   const std::string strokeWidth = sw;
-  const double S = cv.S, M = cv.M;
+  const double S = cv.S;
   char buf[256];
   std::string out;
   std::snprintf(
       buf, sizeof buf,
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
       "font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
-      2 * S * M, 2 * S * M + 24, 2 * S * M, 2 * S * M + 24);
+      2 * S * cv.hx, 2 * S * cv.hy + 24, 2 * S * cv.hx, 2 * S * cv.hy + 24);
   out += buf;
   // "sheet 6 · annulus", or "sheet 6 · annulus · polygon" when drawn another way (as the explorer's title).
   const std::string how = d.method == d.topology ? "" : " · " + d.method;
   std::snprintf(buf, sizeof buf, "<text x=\"8\" y=\"%.0f\" font-size=\"13\">sheet %d · %s%s</text>\n",
-                2 * S * M + 16, d.sheet, d.topology.c_str(), how.c_str());
+                2 * S * cv.hy + 16, d.sheet, d.topology.c_str(), how.c_str());
   out += buf;
   if (!d.note.empty())
     out += "<title>" + escapeXml(d.note) + "</title>\n";  // which face was opened, the polygon's word

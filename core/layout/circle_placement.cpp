@@ -49,18 +49,24 @@ constexpr int kRelaxIterations = 8;
 // Tutte's drawing (planar by construction), turned counter-clockwise, relaxed towards square
 // quads without flipping a triangle; then the certificate, and the mid vertices a 4-triangle fan
 // leaves out halfway between their corners, on the corners' segment.
-void embed(const MidSurface& s, Placement& pl, const std::vector<bool>& fixed) {
-  DiskSolver solver(pl.tri, fixed);
+void start(Placement& pl, std::vector<bool>& fixed) {
+  pl.pos.assign(size_t(pl.tri.vertices), {});
+  fixed.assign(size_t(pl.tri.vertices), false);
+}
+
+// The first flipped or flat triangle of the drawing, or -1 when it is an embedding.
+int tryEmbed(Placement& pl, const std::vector<bool>& fixed, const DiskSolver& solver) {
   if (!solver.ok()) throw Error("sheet diagram: the Tutte solve failed");
   solver.solve(pl.pos, nullptr);
   if (!pl.tri.tris.empty() && signedArea2(pl.tri, pl.pos, 0) < 0)
-    for (Point2& p : pl.pos) p.y = -p.y;  // the mirror image: the boundary stays on its circle
+    for (Point2& p : pl.pos) p.y = -p.y;  // the mirror image: the boundary keeps its shape
   int bad = flippedTriangle(pl.tri, pl.pos);
   if (bad < 0) arapRelax(pl.tri, solver, fixed, pl.pos, kRelaxIterations);
   if (bad < 0) bad = flippedTriangle(pl.tri, pl.pos);
-  if (bad >= 0)
-    throw Error("sheet diagram: triangle " + std::to_string(bad) + " of the " + pl.method +
-                " drawing is flipped or flat: the drawing is not an embedding");
+  return bad;
+}
+
+void placeMids(const MidSurface& s, Placement& pl) {
   if (pl.tri.withMids) return;
   for (int m = 0; m < s.nMid; ++m) {
     auto [a, b] = s.midEnds[size_t(m)];
@@ -69,9 +75,94 @@ void embed(const MidSurface& s, Placement& pl, const std::vector<bool>& fixed) {
   }
 }
 
-void start(Placement& pl, std::vector<bool>& fixed) {
-  pl.pos.assign(size_t(pl.tri.vertices), {});
-  fixed.assign(size_t(pl.tri.vertices), false);
+void embed(const MidSurface& s, Placement& pl, const std::vector<bool>& fixed) {
+  int bad = tryEmbed(pl, fixed, DiskSolver(pl.tri, fixed));
+  if (bad >= 0)
+    throw Error("sheet diagram: triangle " + std::to_string(bad) + " of the " + pl.method +
+                " drawing is flipped or flat: the drawing is not an embedding");
+  placeMids(s, pl);
+}
+
+// The shape of a disk's boundary read from its quads, as if each were a unit square. A boundary
+// corner on q quads turns the loop by (2 - q) quarter turns (one quad: a convex corner; two: a
+// straight side). An interior corner on k quads is a cone whose (4 - k) quarter turns a flat drawing
+// has to put somewhere on the boundary: they go where a random walk from the cone leaves the disk
+// (its harmonic measure, one solve with the Tutte system), as a conformal flattening would. Reflex
+// turns are drawn straight, the turns scaled to one full turn and kEvenTurn of it spread over every
+// loop vertex, so the polygon is strictly convex and Tutte's theorem holds as on the circle. Sides get
+// unit length, then the least change of lengths that closes the polygon. So a 100 x 14 sheet is a
+// 100 x 14 rectangle, and a sheet wrapped round a box's corners is rounded where its cones are
+// instead of squeezed against a circle. Writes the loop's vertices (centred, inside the unit circle)
+// and returns true; false when the quads give no such polygon (a spike, a side shrunk).
+constexpr double kEvenTurn = 0.02;
+
+bool shapedLoop(const MidSurface& s, const Triangulation& t, size_t k, const DiskSolver& solver,
+                const std::vector<bool>& fixed, Placement& pl) {
+  const std::vector<int>& loop = t.loops[k];
+  const size_t m = loop.size();
+  if (m < 3) return false;
+  std::vector<int> quadsAt(size_t(s.nCorner), 0);
+  for (const auto& q : s.quad)
+    for (int j = 0; j < 4; ++j)
+      if (std::find(q.begin(), q.begin() + j, q[size_t(j)]) == q.begin() + j) ++quadsAt[size_t(q[size_t(j)])];
+  const double pi = std::numbers::pi;
+  // The cones' turns, carried to the boundary by their harmonic measure.
+  std::vector<Point2> cone(size_t(t.vertices), Point2{0, 0});
+  bool cones = false;
+  for (int v = 0; v < s.nCorner; ++v)
+    if (!fixed[size_t(v)] && quadsAt[size_t(v)] != 4) cone[size_t(v)].x = (4 - quadsAt[size_t(v)]) * pi / 2, cones = true;
+  std::vector<double> exitTurn(size_t(t.vertices), 0);
+  if (cones) {
+    std::fill(pl.pos.begin(), pl.pos.end(), Point2{0, 0});
+    solver.solve(pl.pos, &cone);
+    for (const auto& tri : t.tris)
+      for (int e = 0; e < 3; ++e) {
+        const int u = tri[size_t(e)], v = tri[size_t((e + 1) % 3)];
+        if (fixed[size_t(u)] && !fixed[size_t(v)]) exitTurn[size_t(u)] += pl.pos[size_t(v)].x;
+        if (fixed[size_t(v)] && !fixed[size_t(u)]) exitTurn[size_t(v)] += pl.pos[size_t(u)].x;
+      }
+  }
+  std::vector<double> turn(m, 0);
+  double total = 0;
+  for (size_t j = 0; j < m; ++j) {
+    const int v = loop[j];
+    double tj = exitTurn[size_t(v)];
+    if (v < s.nCorner) tj += (2 - quadsAt[size_t(v)]) * pi / 2;
+    turn[j] = std::max(0.0, tj);
+    total += turn[j];
+  }
+  if (total < pi) return false;
+  std::vector<Point2> dir(m);
+  double theta = 0, mxx = 0, mxy = 0, myy = 0, rx = 0, ry = 0;
+  for (size_t j = 0; j < m; ++j) {
+    const double tj = (1 - kEvenTurn) * turn[j] * 2 * pi / total + kEvenTurn * 2 * pi / double(m);
+    if (tj > 0.8 * pi) return false;  // a spike: the circle draws it better
+    theta += tj;
+    dir[j] = {std::cos(theta), std::sin(theta)};  // the side from loop[j] to loop[j + 1]
+    mxx += dir[j].x * dir[j].x, mxy += dir[j].x * dir[j].y, myy += dir[j].y * dir[j].y;
+    rx += dir[j].x, ry += dir[j].y;
+  }
+  const double det = mxx * myy - mxy * mxy;
+  if (det <= 1e-12) return false;
+  const double lx = (myy * rx - mxy * ry) / det, ly = (mxx * ry - mxy * rx) / det;
+  std::vector<Point2> at(m);
+  Point2 p{0, 0}, centre{0, 0};
+  double c4 = 0, s4 = 0;  // the sides' dominant direction modulo a quarter turn
+  for (size_t j = 0; j < m; ++j) {
+    const double len = 1 - dir[j].x * lx - dir[j].y * ly;
+    if (len < 0.3) return false;
+    at[(j + 1) % m] = p = {p.x + dir[j].x * len, p.y + dir[j].y * len};
+    const double a = std::atan2(dir[j].y, dir[j].x);
+    c4 += len * std::cos(4 * a), s4 += len * std::sin(4 * a);
+  }
+  // Turned so that those sides are level: a rectangle's sides horizontal and vertical.
+  const double level = -std::atan2(s4, c4) / 4, cl = std::cos(level), sl = std::sin(level);
+  for (Point2& q : at) q = {cl * q.x - sl * q.y, sl * q.x + cl * q.y};
+  for (const Point2& q : at) centre.x += q.x / double(m), centre.y += q.y / double(m);
+  double radius = 0;
+  for (const Point2& q : at) radius = std::max(radius, std::hypot(q.x - centre.x, q.y - centre.y));
+  for (size_t j = 0; j < m; ++j) pl.pos[size_t(loop[j])] = {(at[j].x - centre.x) / radius, (at[j].y - centre.y) / radius};
+  return true;
 }
 
 }  // namespace
@@ -94,7 +185,7 @@ void placeDisk(const MidSurface& s, const std::vector<double>& cornerAngle, Plac
   embed(s, pl, fixed);
 }
 
-bool placeSurface(const MidSurface& s, Placement& pl, std::string* why) {
+bool placeSurface(const MidSurface& s, Placement& pl, std::string* why, DiskBoundary disk) {
   auto refuse = [&](const std::string& w) {
     if (why) *why = w;
     return false;
@@ -121,6 +212,16 @@ bool placeSurface(const MidSurface& s, Placement& pl, std::string* why) {
     for (size_t k = 0; k < pl.tri.loops.size(); ++k)
       if (k != outer) fillHole(pl.tri, k, holeRings(pl.tri.loops[k].size()));
     start(pl, fixed);
+    // A disk's boundary takes the shape its quads give it when they give one; the circle otherwise.
+    if (loops.size() == 1 && disk == DiskBoundary::shaped) {
+      for (int v : pl.tri.loops[outer]) fixed[size_t(v)] = true;
+      DiskSolver solver(pl.tri, fixed);
+      if (solver.ok() && shapedLoop(s, pl.tri, outer, solver, fixed, pl) && tryEmbed(pl, fixed, solver) < 0) {
+        placeMids(s, pl);
+        return true;
+      }
+      start(pl, fixed);
+    }
     fixLoopOnCircle(pl.tri, outer, evenAngles(s, pl.tri, outer, 0), pl, fixed);
   }
   embed(s, pl, fixed);

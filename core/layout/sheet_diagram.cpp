@@ -21,8 +21,16 @@ SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
   SheetDiagram d;
   // A sphere opened at one face squeezes its far side by about its size: past a thousand hexes
   // that is never readable, so such a sphere is cut open straight away.
-  bool whole = !(sh.topology == "sphere" && sh.slots.size() > 1000) && placeSurface(s, pl);
+  bool whole = !(sh.topology == "sphere" && sh.slots.size() > 1000) && placeSurface(s, pl, nullptr, DiskBoundary::shaped);
   if (whole) d = assembleDiagram(dual, sheet, s, pl, false);
+  // A disk is drawn in the shape its quads give it (a 100 x 14 sheet as a long rectangle); where
+  // that crowds (cones close to the boundary make sharp corners), on the circle when it spreads better.
+  if (whole && sh.topology == "disk" && diagramSpread(d) < kReadableSpread) {
+    Placement round;
+    placeSurface(s, round, nullptr, DiskBoundary::circle);
+    SheetDiagram onCircle = assembleDiagram(dual, sheet, s, round, false);
+    if (diagramSpread(onCircle) > diagramSpread(d)) d = std::move(onCircle);
+  }
   if (!whole || (sh.topology != "disk" && diagramSpread(d) < kReadableSpread)) {
     SheetDiagram cut = layoutPolygon(dual, sheet, s);
     if (!whole || diagramSpread(cut) > diagramSpread(d)) d = std::move(cut);

@@ -5,6 +5,7 @@
 // animated (diagramMotion.js): crossings move, new ones fade in, the old drawing fades out.
 import { chordColor } from '../colors.js';
 import { animateDiagram, crossingKey, crossingPlaces } from '../diagramMotion.js';
+import { diagramFrame } from '../diagramFrame.js';
 
 const NS = 'http://www.w3.org/2000/svg';
 
@@ -75,8 +76,8 @@ export function createDiagram(container, { onHover, onPick } = {}) {
     const old = animate && shown && shown.sheet === d.sheet && svg ? { places: crossingPlaces(shown), g: svg.querySelector('g.drawing') } : null;
     box.replaceChildren();
     shown = d;
-    const m = d.openedHex !== null && d.openedHex !== undefined ? 1.6 : 1.15;
-    svg = el('svg', { viewBox: `${-m} ${-m} ${2 * m} ${2 * m}`, role: 'img', 'data-sheet': d.sheet, 'data-method': d.method }, box);
+    const f = diagramFrame(d);
+    svg = el('svg', { viewBox: `${f.cx - f.half} ${-f.cy - f.half} ${2 * f.half} ${2 * f.half}`, role: 'img', 'data-sheet': d.sheet, 'data-method': d.method }, box);
     el('title', {}, svg).textContent = title || `sheet ${d.sheet}: ${d.topology}`;
     if (old?.g) svg.appendChild(old.g).classList.add('ghost');
     const g = el('g', { transform: 'scale(1,-1)', class: 'drawing' }, svg);
