@@ -97,8 +97,21 @@ export function createPalette(root, actions) {
     // In 3D, the hexes it would remove (or, for a dicing, which removes none, those of the sheet it
     // splits) are highlighted while the preview shows, the rest dimmed.
     const removed = p.report.removed.hexes.length ? [...p.report.removed.hexes] : operandHexes.get(p.step) ?? [];
-    previewFocus = removed.length ? { key: `preview:${p.step}:${s.meshKey}`, hexes: removed } : null;
+    const what = p.report.removed.hexes.length ? `the ${removed.length} highlighted hexes would be removed` : `the highlighted sheet would be split`;
+    const touch = then !== 'Click to apply.';
+    previewFocus = removed.length
+      ? { key: `preview:${p.step}:${s.meshKey}`, hexes: removed, label: `preview of ${p.step}: ${what} — ${touch ? 'tap it again in the list to apply' : 'click to apply'}` }
+      : null;
     if (previewFocus) actions.set({ focus: previewFocus });
+    // On a phone the 3D view is above the list, out of sight while tapping: a way up to it.
+    if (previewFocus && touch && window.matchMedia('(max-width: 700px)').matches) {
+      const see = document.createElement('button');
+      see.type = 'button';
+      see.className = 'see-3d';
+      see.textContent = 'see it in 3D ↑';
+      see.addEventListener('click', () => document.querySelector('#view3d').scrollIntoView({ block: 'start' }));
+      preview.append(' ', see);
+    }
   }
   let previewFocus = null;
   const operandHexes = new Map(); // sheet-family step -> the hexes of the sheet or chord it acts on

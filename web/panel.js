@@ -244,7 +244,8 @@ export function createPanel(root, actions, view) {
       if (s.slice) $('#slice-at').value = String(s.slice.at);
       const label = describeSelection(s, s.selection);
       $('#selection-info').textContent = label;
-      $('#selection-label').textContent = label;
+      // A sheet operation's preview names itself over the 3D view, where its hexes are highlighted.
+      $('#selection-label').textContent = s.focus?.label ?? label;
       $('#open-sheets').disabled = !s.selection;
       const qk = s.colorBy === 'quality' ? s.meshKey : null;
       if (qualityKey !== qk) {

@@ -234,6 +234,17 @@ test('on a touch screen the first tap on a sheet operation previews it, the seco
   assert.equal(await item.evaluate((li) => li.classList.contains('armed')), true, 'the tapped item is marked');
   await item.scrollIntoViewIfNeeded();
   await page.screenshot({ path: join(screenshotDir, 'explorer-sheet-preview-phone.png') });
+  // The 3D view is above the list on a phone: the preview offers a way up, and the view names the preview.
+  const see = page.locator('#op-preview button.see-3d');
+  assert.equal(await see.count(), 1);
+  assert.ok((await page.locator('#view3d').boundingBox()).y + 100 < 0, 'the 3D view is out of sight while tapping');
+  await see.click();
+  await page.waitForFunction(() => Math.abs(document.querySelector('#view3d').getBoundingClientRect().top) < 2);
+  assert.equal(await page.locator('#selection-label').textContent(),
+    'preview of sheet-extract h13e0: the 9 highlighted hexes would be removed — tap it again in the list to apply');
+  assert.match((await page.evaluate(() => window.hexdual.store.get().focus?.key)) ?? '', /^preview:sheet-extract h13e0:/, 'the highlight stays');
+  await page.screenshot({ path: join(screenshotDir, 'explorer-sheet-preview-phone-3d.png') });
+  assert.equal(await item.evaluate((li) => li.classList.contains('armed')), true, 'still armed');
   await tap();
   await page.waitForFunction(() => document.querySelector('[data-count=hexes]').textContent === '18', null, { timeout: 10000 });
   assert.equal((await x.state()).hexes, 18, 'the second tap applies');
