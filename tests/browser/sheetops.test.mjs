@@ -97,6 +97,8 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   // While the preview shows, the hexes it would remove are highlighted in 3D (the rest dimmed).
   const focus = await page.evaluate(() => window.hexdual.store.get().focus);
   assert.deepEqual(focus.hexes, expected.report.removedHexes);
+  assert.equal(await page.locator('#selection-label').textContent(),
+    `preview of ${step}: the ${expected.hexesRemoved} highlighted hexes would be removed — click to apply`);
   await x.settle();
   await page.screenshot({ path: join(screenshotDir, 'explorer-sheet-preview-3d.png') });
   // Dicing removes no hex: its preview highlights the sheet it splits; moving on to another kind of
@@ -104,8 +106,10 @@ test('a development mesh: singular edges, a picked edge\'s valence, a previewed 
   await page.locator(`#candidates li.sheet-op[data-step="sheet-dice h${edge.hex}e${edge.edge} 2"]`).hover();
   await page.waitForFunction(() => window.hexdual.store.get().focus?.key.startsWith('preview:sheet-dice'));
   assert.deepEqual([...(await page.evaluate(() => window.hexdual.store.get().focus.hexes))].sort((a, b) => a - b), [...dual.hexes].sort((a, b) => a - b));
+  assert.match(await page.locator('#selection-label').textContent(), /^preview of sheet-dice .*: the highlighted sheet would be split/);
   await page.locator('#candidates li:not(.sheet-op)').first().hover();
   assert.equal(await page.evaluate(() => window.hexdual.store.get().focus), null);
+  assert.match(await page.locator('#selection-label').textContent(), /^edge h/, 'the label is the selection\'s again');
   assert.equal(await page.locator('#op-preview').textContent(), '');
   await item.hover();
   await page.waitForFunction(() => window.hexdual.store.get().focus?.key.startsWith('preview:sheet-extract'));
