@@ -185,16 +185,31 @@ export function createEngine(store) {
     replay(steps, at) {
       const s = store.get();
       const stop = at === null || at === undefined ? steps.length : Math.min(at, steps.length);
+      const before = stop > 0 ? hexDualOf(s.mesh) : null;
+      // What the replayed steps changed, for the timeline and the lists; textOnly: the 3D view shows
+      // the mesh as a fresh load does (no ghosts, no dimming, no motion).
+      const replayed = (n, meshKey) => {
+        const after = hexDualOf(s.mesh);
+        hd = after;
+        hdKey = meshKey;
+        return { ...diffReport(before, after, null, `replayed ${n} step${n === 1 ? '' : 's'} from the link`, meshKey), textOnly: true };
+      };
       for (let i = 0; i < stop; i++) {
         try {
           s.mesh.apply(steps[i]);
         } catch (e) {
-          store.set({ steps: steps.slice(0, i), at: i, meshKey: key(s.mesh, i) });
+          const meshKey = key(s.mesh, i);
+          store.set({ steps: steps.slice(0, i), at: i, meshKey, report: i > 0 ? replayed(i, meshKey) : null });
           return `ignored steps from step ${i + 1} (${steps[i]}): ${e.message}`;
         }
       }
       hd = null;
-      store.set(stop > 0 ? { steps: [...steps], at: stop, meshKey: key(s.mesh, stop) } : { steps: [...steps], at: 0 });
+      if (stop === 0) {
+        store.set({ steps: [...steps], at: 0 });
+        return '';
+      }
+      const meshKey = key(s.mesh, stop);
+      store.set({ steps: [...steps], at: stop, meshKey, report: replayed(stop, meshKey) });
       return '';
     },
     fileBytes: () => fileBytes,

@@ -148,7 +148,7 @@ export function createView3d(container, options = {}) {
     /** Draws the app state: geometry when the mesh changed, colours when the selection changed. */
     update(state) {
       if (!state.mesh) return;
-      const report = state.report && state.report.key === state.meshKey ? state.report : null;
+      const report = state.report && state.report.key === state.meshKey && !state.report.textOnly ? state.report : null;
       // Frames are drawn only when something here changed (other panels' changes draw nothing).
       let dirty = updateGeometry(state, report);
       const pk = paintKeyOf(state);

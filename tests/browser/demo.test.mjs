@@ -151,6 +151,10 @@ test('a malformed URL says what it ignored, parameter by parameter', async () =>
   assert.match(err, /ignored diag=77: there are \d+ sheets/);
   assert.match(err, /ignored sing=banana: expected 0 or 1/);
   assert.equal((await shownCounts()).hexes, 29);
+  // The step that replayed is reported in the timeline, as a step applied here would be; the 3D view
+  // shows the mesh as a fresh load does (the report is text only: no ghosts, no dimming).
+  assert.match(await page.locator('#tl-report').textContent(), /^replayed 1 step from the link: \+2 \/ −0 hexes · sheets [0-9, ]+ · chords /);
+  assert.equal(await page.evaluate(() => window.hexdual.store.get().report.textOnly), true);
   await open('#mesh=grid:2x2x2&steps=v1;pillow%20h0f1&at=5');
   assert.match(await page.locator('#error').textContent(), /ignored at=5: there is only 1 step$/);
   await open('#mesh=cube:zz&sel=h999');
