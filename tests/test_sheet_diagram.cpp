@@ -4,6 +4,7 @@
 #include <random>
 
 #include "complex/builders.hpp"
+#include "complex/hex_tables.hpp"
 #include "flips/flip.hpp"
 #include "flips/fourcube.hpp"
 #include "helpers.hpp"
@@ -76,6 +77,32 @@ TEST_CASE("a disk is drawn in the shape its quads give: a 20 x 3 layer as a long
   auto [sw, sh] = loopBox(sq);
   CHECK(sw == doctest::Approx(sh).epsilon(0.05));
   CHECK(sw == doctest::Approx(std::sqrt(2.0)).epsilon(0.05));  // the square inscribed in the unit circle
+}
+
+TEST_CASE("an L-shaped layer is drawn convex, and its note says which corner was straightened") {
+  // Three hexes in an L, one thick: the layer's boundary has a reflex corner where three quads meet it.
+  std::vector<Vec3> p;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) p.push_back({double(i), double(j), double(k)});
+  auto v = [](int i, int j, int k) { return VertexId(9 * k + 3 * j + i); };
+  std::vector<std::array<VertexId, 8>> hexes;
+  for (auto [i, j] : {std::pair{0, 0}, {1, 0}, {0, 1}}) {
+    std::array<VertexId, 8> h;
+    for (int c = 0; c < 8; ++c) h[size_t(c)] = v(i + tables::cornerBit(c, 0), j + tables::cornerBit(c, 1), tables::cornerBit(c, 2));
+    hexes.push_back(h);
+  }
+  Complex l = fromConnectivity(p, hexes);
+  Dual d = extractDual(l);
+  SheetDiagram dg = layoutSheet(l, d, d.sheetAt(0, 2));
+  CHECK(dg.crossings.size() == 3);
+  CHECK(dg.method == "disk");
+  CHECK(dg.note == "drawn convex: 1 reflex corner of its boundary (three quads meeting it) drawn straight");
+  checkDiagram(dg, 3);
+  // A grid's layer has none: no note.
+  Complex g = makeGrid(3, 3, 1);
+  Dual dg3 = extractDual(g);
+  CHECK(layoutSheet(g, dg3, dg3.sheetAt(0, 2)).note.empty());
 }
 
 TEST_CASE("sheet diagrams of the ring mesh: annuli drawn between two circles, closed chords") {

@@ -40,7 +40,8 @@ function createPanel(host, actions, spec) {
   const note = Object.assign(document.createElement('div'), { className: 'diagram-note' });
   box.appendChild(note);
   const root = el('g', {}, svg);
-  let diagram = null, extent = 1.2, spacing = 0.1, centre = { x: 0, y: 0 };
+  let diagram = null, spacing = 0.1, frame = null, fitW = 2.4, atFit = true;
+  let near = []; // per crossing: the distance to its nearest other crossing (diagram units)
   let drawing = root; // the current drawing's group (a fading ghost of the previous one may sit before it)
   let vb = { x: -1.2, y: -1.2, w: 2.4, h: 2.4 };
   let drawnKey = null;
@@ -53,10 +54,16 @@ function createPanel(host, actions, spec) {
     svg.setAttribute('viewBox', `${vb.x} ${vb.y} ${vb.w} ${vb.h}`);
     const s = pxPerUnit();
     const labels = drawing.querySelector('.labels');
+    let shown = 0;
     if (labels) {
       labels.setAttribute('font-size', String(LABEL_PX / s));
-      // Level of detail: labels only when neighbouring crossings are at least ~2 labels apart.
-      labels.style.display = spacing * s >= 22 ? '' : 'none';
+      // Level of detail, crossing by crossing (as the CLI's SVG): a label shows when it fits before
+      // its crossing's nearest neighbour, so sparse parts are labelled while crowded ones are not.
+      labels.querySelectorAll('text').forEach((t, k) => {
+        const fits = near[k] * s >= Math.max(22, 8 + 6.2 * t.textContent.length);
+        t.style.display = fits ? '' : 'none';
+        if (fits) shown++;
+      });
     }
     for (const c of drawing.querySelectorAll('.crossing')) {
       c.setAttribute('r', String(Math.min(0.32 * spacing, 6 / s)));
@@ -68,12 +75,59 @@ function createPanel(host, actions, spec) {
       t.setAttribute('x', String(Number(t.dataset.x) + 7 / s));
       t.setAttribute('y', String(-Number(t.dataset.y) - 5 / s));
     }
-    box.dataset.zoom = String((2 * extent) / vb.w);
-    box.dataset.labels = labels && labels.style.display !== 'none' ? 'shown' : 'hidden';
+    box.dataset.zoom = String(fitW / vb.w);
+    box.dataset.labels = shown > 0 ? 'shown' : 'hidden';
   }
+  // The drawing's box in the panel's own shape (a long disk fills a wide panel), y flipped.
   function fit() {
-    vb = { x: centre.x - extent, y: -centre.y - extent, w: 2 * extent, h: 2 * extent };
+    const f = frame ?? { cx: 0, cy: 0, hx: 1.15, hy: 1.15 };
+    const r = svg.getBoundingClientRect();
+    const aspect = r.width > 0 && r.height > 0 ? r.width / r.height : 1;
+    const w = Math.max(2 * f.hx, 2 * f.hy * aspect), h = w / aspect;
+    vb = { x: f.cx - w / 2, y: -f.cy - h / 2, w, h };
+    fitW = w;
+    atFit = true;
     applyView();
+  }
+  // A zoom by k about the point at client (cx, cy), the panel's aspect kept.
+  function zoomAt(cx, cy, k, from = vb) {
+    const r = svg.getBoundingClientRect();
+    const s = Math.min(r.width / from.w, r.height / from.h) || 100;
+    const ux = from.x + (cx - r.left - (r.width - from.w * s) / 2) / s;
+    const uy = from.y + (cy - r.top - (r.height - from.h * s) / 2) / s;
+    const w = Math.min(8 * fitW, Math.max(fitW / 200, from.w * k)), f = w / from.w;
+    vb = { x: ux - (ux - from.x) * f, y: uy - (uy - from.y) * f, w, h: from.h * f };
+    atFit = false;
+    applyView();
+  }
+  /** Per crossing, the distance to its nearest other crossing (a grid of cells; exact). */
+  function nearest(cs) {
+    const n = cs.length;
+    if (n < 2) return cs.map(() => Infinity);
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (const c of cs) x0 = Math.min(x0, c.x), x1 = Math.max(x1, c.x), y0 = Math.min(y0, c.y), y1 = Math.max(y1, c.y);
+    // About one crossing per cell; never thinner than a row of them (two crossings, a line of them).
+    const w = x1 - x0, h = y1 - y0;
+    const cell = Math.max(Math.sqrt((w * h) / n), Math.max(w, h) / (2 * Math.sqrt(n)), 1e-9);
+    const grid = new Map();
+    const at = (i, j) => `${i},${j}`;
+    cs.forEach((c, k) => {
+      const key = at(Math.floor((c.x - x0) / cell), Math.floor((c.y - y0) / cell));
+      if (!grid.has(key)) grid.set(key, []);
+      grid.get(key).push(k);
+    });
+    const maxRing = Math.ceil(Math.max(x1 - x0, y1 - y0) / cell) + 1;
+    return cs.map((c, k) => {
+      const ci = Math.floor((c.x - x0) / cell), cj = Math.floor((c.y - y0) / cell);
+      let best = Infinity;
+      for (let ring = 0; ring <= maxRing && best > (ring - 1) * cell; ring++)
+        for (let i = ci - ring; i <= ci + ring; i++)
+          for (let j = cj - ring; j <= cj + ring; j++) {
+            if (Math.max(Math.abs(i - ci), Math.abs(j - cj)) !== ring) continue;
+            for (const m of grid.get(at(i, j)) ?? []) if (m !== k) best = Math.min(best, Math.hypot(cs[m].x - c.x, cs[m].y - c.y));
+          }
+      return best;
+    });
   }
 
   let motion = null;
@@ -86,9 +140,8 @@ function createPanel(host, actions, spec) {
     if (old) root.appendChild(old.g).classList.add('ghost');
     const g = el('g', { transform: 'scale(1,-1)' }, root);
     drawing = g;
-    const frame = diagramFrame(d);
-    extent = frame.half;
-    centre = { x: frame.cx, y: frame.cy };
+    frame = diagramFrame(d);
+    near = nearest(d.crossings);
     // About the distance between evenly spread crossings (0.55 of the even spacing over what they fill).
     spacing = Math.max(0.004, Math.sqrt(frame.area / Math.max(1, d.crossings.length)) * 0.55);
     if (d.local) el('circle', { cx: 0, cy: 0, r: 1, fill: 'none', stroke: '#666', 'stroke-width': 0.01, 'stroke-dasharray': '0.04 0.03' }, g);
@@ -143,30 +196,58 @@ function createPanel(host, actions, spec) {
   // ---- zoom and pan ----
   svg.addEventListener('wheel', (e) => {
     e.preventDefault();
-    const r = svg.getBoundingClientRect();
-    const s = pxPerUnit();
-    const ux = vb.x + (e.clientX - r.left - (r.width - vb.w * s) / 2) / s;
-    const uy = vb.y + (e.clientY - r.top - (r.height - vb.h * s) / 2) / s;
-    const k = Math.exp(Math.sign(e.deltaY) * 0.18);
-    const w = Math.min(8 * extent, Math.max(extent / 200, vb.w * k));
-    const f = w / vb.w;
-    vb = { x: ux - (ux - vb.x) * f, y: uy - (uy - vb.y) * f, w, h: w };
-    applyView();
+    zoomAt(e.clientX, e.clientY, Math.exp(Math.sign(e.deltaY) * 0.18));
   }, { passive: false });
-  let drag = null;
+  // One pointer drags (pans); two pinch (zoom about their midpoint, which the fingers also move).
+  let drag = null, pinch = null;
+  const pointers = new Map();
+  const pair = () => [...pointers.values()].slice(0, 2);
   svg.addEventListener('pointerdown', (e) => {
-    drag = { x: e.clientX, y: e.clientY, vx: vb.x, vy: vb.y, moved: false };
-    svg.setPointerCapture(e.pointerId);
+    pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
+    try {
+      svg.setPointerCapture(e.pointerId);
+    } catch {}
+    if (pointers.size === 1) {
+      drag = { x: e.clientX, y: e.clientY, vx: vb.x, vy: vb.y, moved: false };
+      return;
+    }
+    const [a, b] = pair();
+    pinch = { d: Math.max(1, Math.hypot(a.x - b.x, a.y - b.y)), mx: (a.x + b.x) / 2, my: (a.y + b.y) / 2, vb: { ...vb } };
+    if (drag) drag.moved = true; // a pinch is not a tap
   });
   svg.addEventListener('pointermove', (e) => {
+    if (pointers.has(e.pointerId)) pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
+    if (pinch && pointers.size >= 2) {
+      const [a, b] = pair();
+      const d = Math.max(1, Math.hypot(a.x - b.x, a.y - b.y));
+      zoomAt(pinch.mx, pinch.my, pinch.d / d, pinch.vb);
+      const s = pxPerUnit();
+      vb.x -= ((a.x + b.x) / 2 - pinch.mx) / s;
+      vb.y -= ((a.y + b.y) / 2 - pinch.my) / s;
+      applyView();
+      return;
+    }
     if (!drag) return;
     const s = pxPerUnit();
     if (Math.hypot(e.clientX - drag.x, e.clientY - drag.y) > 3) drag.moved = true;
     vb.x = drag.vx - (e.clientX - drag.x) / s;
     vb.y = drag.vy - (e.clientY - drag.y) / s;
-    if (drag.moved) applyView();
+    if (drag.moved) {
+      atFit = false;
+      applyView();
+    }
+  });
+  const lift = (e) => {
+    pointers.delete(e.pointerId);
+    if (pointers.size < 2) pinch = null;
+  };
+  svg.addEventListener('pointercancel', (e) => {
+    lift(e);
+    if (pointers.size === 0) drag = null;
   });
   svg.addEventListener('pointerup', (e) => {
+    lift(e);
+    if (pointers.size > 0) return; // the other finger of a pinch is still down
     const d = drag;
     drag = null;
     if (d && d.moved) return;
@@ -183,7 +264,8 @@ function createPanel(host, actions, spec) {
       actions.select({ kind: 'quad', hex: +m[1], face: +m[2] });
     }
   });
-  new ResizeObserver(() => diagram && applyView()).observe(svg);
+  // A resized panel keeps its zoom, or fits again when the user had not zoomed or panned.
+  new ResizeObserver(() => diagram && (atFit ? fit() : applyView())).observe(svg);
 
   box.querySelector('.bar').addEventListener('click', (e) => {
     const act = e.target.dataset.act;

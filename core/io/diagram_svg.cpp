@@ -108,20 +108,29 @@ std::string diagramSvg(const SheetDiagram& d) {
   cv.hx = cv.hy = cv.M;
   // A disk drawn in the shape its quads give (a long rectangle, a square) is framed by its box and
   // drawn as large as the circle would be; local views and opened spheres keep the circle's frame.
-  double grow = 1;
-  if (!d.local && d.openedHex < 0 && !d.loops.empty() && !d.loops[0].empty()) {
-    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-    for (Point2 p : d.loops[0]) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  double grow = 1, area = std::acos(-1.0);  // what the crossings spread over: the unit disk, or the loop
+  const bool framed = !d.local && d.openedHex < 0 && !d.loops.empty() && d.loops[0].size() >= 3;
+  if (framed) {
+    const std::vector<Point2>& loop = d.loops[0];
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300, twice = 0;
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const Point2 p = loop[k], q = loop[(k + 1) % loop.size()];
+      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+      twice += p.x * q.y - q.x * p.y;
+    }
     grow = 2 / std::max({x1 - x0, y1 - y0, 0.2});
+    area = std::max(std::abs(twice) / 2, 1e-3);
     cv.cx = (x0 + x1) / 2, cv.cy = (y0 + y1) / 2;
-    cv.hx = (x1 - x0) / 2 + (cv.M - 1) / grow, cv.hy = (y1 - y0) / 2 + (cv.M - 1) / grow;
+    cv.hx = (x1 - x0) / 2, cv.hy = (y1 - y0) / 2;  // the margin is added below, once the scale is known
   }
   // Readable at scale: the canvas grows with the number of crossings so that evenly spread ones
-  // are 14 px apart; markers and strokes shrink where crossings are closer; a crossing is labelled
-  // only when its label fits before its nearest neighbour (every crossing has its id as a tooltip).
-  const double even = std::sqrt(std::acos(-1.0) / double(std::max<size_t>(d.crossings.size(), 1)));
-  cv.S = std::clamp(14 / even, 200.0, 2400.0) * grow;
-  const double px = even * cv.S / grow, marker = std::clamp(0.3 * px, 1.5, 4.5), stroke = std::clamp(0.15 * px, 0.6, 2.2);
+  // (over the unit disk, or over a shaped disk's own loop) are 24 px apart, room for their labels;
+  // markers and strokes shrink where crossings are closer; a crossing is labelled only when its
+  // label fits before its nearest neighbour (every crossing has its id as a tooltip).
+  const double even = std::sqrt(area / double(std::max<size_t>(d.crossings.size(), 1)));
+  cv.S = std::clamp(24 / even, 200.0 * grow, 2400.0 * grow);
+  if (framed) cv.hx += 36 / cv.S, cv.hy += 36 / cv.S;  // a margin of 36 px: the boundary marks and labels
+  const double px = even * cv.S, marker = std::clamp(0.3 * px, 1.5, 4.5), stroke = std::clamp(0.15 * px, 0.6, 2.2);
   const std::vector<double> near = nearestCrossing(d, 24 / cv.S);
   char sw[16];
   std::snprintf(sw, sizeof sw, "%.3g", stroke);
@@ -169,7 +178,7 @@ std::string diagramSvg(const SheetDiagram& d) {
                   "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"%s\" stroke=\"#111\"><title>hex %d</title></circle>",
                   cv.X(c.p.x), cv.Y(c.p.y), marker, c.outside ? "#fc6" : "#fff", c.hex);
     out += buf;
-    if (near[k] * cv.S >= 22) {
+    if (near[k] * cv.S >= std::max(22.0, 8 + 6.2 * double(std::to_string(c.hex).size()))) {  // room for its digits
       std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\">%d</text>", cv.X(c.p.x) + 6, cv.Y(c.p.y) - 6, c.hex);
       out += buf;
     }

@@ -124,10 +124,12 @@ bool shapedLoop(const MidSurface& s, const Triangulation& t, size_t k, const Dis
   }
   std::vector<double> turn(m, 0);
   double total = 0;
+  pl.straightened = 0;
   for (size_t j = 0; j < m; ++j) {
     const int v = loop[j];
     double tj = exitTurn[size_t(v)];
     if (v < s.nCorner) tj += (2 - quadsAt[size_t(v)]) * pi / 2;
+    if (v < s.nCorner && quadsAt[size_t(v)] >= 3 && tj < -1e-9) ++pl.straightened;
     turn[j] = std::max(0.0, tj);
     total += turn[j];
   }
@@ -158,6 +160,11 @@ bool shapedLoop(const MidSurface& s, const Triangulation& t, size_t k, const Dis
   // Turned so that those sides are level: a rectangle's sides horizontal and vertical.
   const double level = -std::atan2(s4, c4) / 4, cl = std::cos(level), sl = std::sin(level);
   for (Point2& q : at) q = {cl * q.x - sl * q.y, sl * q.x + cl * q.y};
+  // And lying down: the longer side horizontal, as panels and pages are wider than tall.
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const Point2& q : at) x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
+  if (y1 - y0 > 1.05 * (x1 - x0))
+    for (Point2& q : at) q = {-q.y, q.x};
   for (const Point2& q : at) centre.x += q.x / double(m), centre.y += q.y / double(m);
   double radius = 0;
   for (const Point2& q : at) radius = std::max(radius, std::hypot(q.x - centre.x, q.y - centre.y));

@@ -18,6 +18,7 @@ struct Placement {
   std::vector<Point2> pos;  // per vertex of the refined surface (corners, mids, centres), then virtual ones
   int opened = -1;          // the opened slot (sphere)
   std::string method;       // "disk", "annulus", "holes", "sphere", "polygon"
+  int straightened = 0;     // a disk in its own shape: reflex boundary corners drawn straight
   Triangulation tri;        // what was drawn: every triangle keeps its orientation
 };
 

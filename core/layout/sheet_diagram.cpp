@@ -1,5 +1,7 @@
 #include "layout/sheet_diagram.hpp"
 
+#include <cstdio>
+
 #include "layout/assemble_diagram.hpp"
 #include "layout/circle_placement.hpp"
 #include "layout/diagram_spread.hpp"
@@ -23,13 +25,23 @@ SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
   // that is never readable, so such a sphere is cut open straight away.
   bool whole = !(sh.topology == "sphere" && sh.slots.size() > 1000) && placeSurface(s, pl, nullptr, DiskBoundary::shaped);
   if (whole) d = assembleDiagram(dual, sheet, s, pl, false);
+  if (whole && pl.straightened > 0)
+    d.note = "drawn convex: " + std::to_string(pl.straightened) + " reflex corner" + (pl.straightened == 1 ? "" : "s") +
+             " of its boundary (three quads meeting it) drawn straight";
   // A disk is drawn in the shape its quads give it (a 100 x 14 sheet as a long rectangle); where
   // that crowds (cones close to the boundary make sharp corners), on the circle when it spreads better.
-  if (whole && sh.topology == "disk" && diagramSpread(d) < kReadableSpread) {
+  if (whole && sh.topology == "disk" && pl.method == "disk" && diagramSpread(d) < kReadableSpread) {
     Placement round;
     placeSurface(s, round, nullptr, DiskBoundary::circle);
     SheetDiagram onCircle = assembleDiagram(dual, sheet, s, round, false);
-    if (diagramSpread(onCircle) > diagramSpread(d)) d = std::move(onCircle);
+    const double shaped = diagramSpread(d), circle = diagramSpread(onCircle);
+    if (circle > shaped) {
+      d = std::move(onCircle);
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "drawn on a circle: in the shape its quads give, crossings crowd (spread %.3f; %.3f on the circle)",
+                    shaped, circle);
+      d.note = buf;
+    }
   }
   if (!whole || (sh.topology != "disk" && diagramSpread(d) < kReadableSpread)) {
     SheetDiagram cut = layoutPolygon(dual, sheet, s);

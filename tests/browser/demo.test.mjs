@@ -199,6 +199,52 @@ test('a sheet diagram: opens from the list, zooms with the wheel, labels appear,
   await page.screenshot({ path: join(screenshotDir, 'explorer-diagrams.png') });
 });
 
+test('a long disk fills a wide panel lying down; on a phone two fingers pinch-zoom a diagram and labels appear', async () => {
+  await open('#mesh=grid:20x3x2&diag=2');
+  const panel = page.locator('.diagram[data-sheet="2"]');
+  await panel.locator('svg .crossing').first().waitFor();
+  assert.equal(await panel.locator('svg .crossing').count(), 60);
+  const extentOf = () => page.evaluate(() => {
+    const svg = document.querySelector('.diagram[data-sheet="2"] svg').getBoundingClientRect();
+    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    for (const c of document.querySelectorAll('.diagram[data-sheet="2"] .crossing')) {
+      const r = c.getBoundingClientRect();
+      x0 = Math.min(x0, r.x); x1 = Math.max(x1, r.right); y0 = Math.min(y0, r.y); y1 = Math.max(y1, r.bottom);
+    }
+    return { w: x1 - x0, h: y1 - y0, panel: svg.width };
+  });
+  const e = await extentOf();
+  assert.ok(e.w > 4 * e.h, `the 20 x 3 layer lies down: ${JSON.stringify(e)}`);
+  assert.ok(e.w > 0.7 * e.panel, `and fills the panel's width: ${JSON.stringify(e)}`);
+
+  await page.setViewportSize({ width: 390, height: 844 });
+  await open('#mesh=grid:6x6x3&diag=13');
+  const svg = page.locator('.diagram[data-sheet="13"] svg');
+  await svg.locator('.crossing').first().waitFor();
+  await svg.scrollIntoViewIfNeeded();
+  const zoom0 = Number(await page.locator('.diagram[data-sheet="13"]').getAttribute('data-zoom'));
+  const labelsShown = () => page.evaluate(() => [...document.querySelectorAll('.diagram[data-sheet="13"] .labels text')].filter((t) => t.style.display !== 'none').length);
+  const before = await labelsShown();
+  const selection = (await state()).selection;
+  // Two touch pointers move apart from the panel's centre (synthetic events, as a phone sends them).
+  await svg.evaluate((el) => {
+    const r = el.getBoundingClientRect(), cx = r.x + r.width / 2, cy = r.y + r.height / 2;
+    const ev = (type, id, x) => el.dispatchEvent(new PointerEvent(type, { pointerId: id, pointerType: 'touch', isPrimary: id === 1, clientX: x, clientY: cy, bubbles: true }));
+    ev('pointerdown', 1, cx - 20);
+    ev('pointerdown', 2, cx + 20);
+    for (let k = 1; k <= 10; k++) ev('pointermove', 1, cx - 20 - 8 * k), ev('pointermove', 2, cx + 20 + 8 * k);
+    ev('pointerup', 2, cx + 100);
+    ev('pointerup', 1, cx - 100);
+  });
+  const zoom1 = Number(await page.locator('.diagram[data-sheet="13"]').getAttribute('data-zoom'));
+  assert.ok(zoom1 > 4 * zoom0, `pinched from ${zoom0} to ${zoom1}`);
+  assert.ok((await labelsShown()) >= before, 'labels stay or appear as the crossings spread');
+  assert.deepEqual((await state()).selection, selection, 'a pinch selects nothing');
+  await page.screenshot({ path: join(screenshotDir, 'explorer-diagram-pinched-phone.png') });
+  await page.setViewportSize({ width: 1200, height: 760 });
+  assert.deepEqual(errors, []);
+});
+
 test('dual overlay, quality colouring with a histogram, slicing plane', async () => {
   await open('#mesh=grid:3x3x3&steps=v1;pillow%20h13f5&overlay=1&color=quality&slice=y:0.5');
   assert.equal(await page.evaluate(() => window.hexdual.view.overlayShown), true);
