@@ -228,7 +228,7 @@ const view = createView3d(document.getElementById('view3d'), {
   onCamera: () => store.set({ camera: view.getCamera() }),
 });
 const panel = createPanel(document.getElementById('panel'), actions, view);
-const diagrams = createDiagrams(document.getElementById('diagrams'), actions);
+const diagrams = createDiagrams(document.getElementById('diagrams'), actions, { onHover: (pick) => panel.hover(pick, null) });
 const timeline = createTimeline(document.getElementById('timeline'), actions);
 const palette = createPalette(document.getElementById('palette'), actions);
 const flipsView = createFlipsView(document.getElementById('flips'), actions, store);

@@ -28,7 +28,7 @@ function layout(mesh, d, selection) {
 }
 
 /** One diagram panel: draws once per mesh state; zoom, pan and selection only touch attributes. */
-function createPanel(host, actions, spec) {
+function createPanel(host, actions, spec, onHover) {
   const box = document.createElement('div');
   box.className = 'diagram';
   box.dataset.sheet = spec.sheet;
@@ -264,6 +264,12 @@ function createPanel(host, actions, spec) {
       actions.select({ kind: 'quad', hex: +m[1], face: +m[2] });
     }
   });
+  // The hex of the crossing under the pointer is shown in 3D too.
+  svg.addEventListener('pointerover', (e) => {
+    const c = e.target.closest?.('.crossing');
+    if (c) onHover({ kind: 'hex', hex: Number(c.dataset.hex) });
+  });
+  svg.addEventListener('pointerout', (e) => e.target.closest?.('.crossing') && onHover(null));
   // A resized panel keeps its zoom, or fits again when the user had not zoomed or panned.
   new ResizeObserver(() => diagram && (atFit ? fit() : applyView())).observe(svg);
 
@@ -338,7 +344,8 @@ function createPanel(host, actions, spec) {
   };
 }
 
-export function createDiagrams(host, actions) {
+/** `onHover(pick | null)`: a crossing under the pointer, to show its hex in 3D (as the tutorials do). */
+export function createDiagrams(host, actions, { onHover = () => {} } = {}) {
   const panels = new Map();
   const style = document.createElement('style');
   style.textContent = `.diagram .sel.crossing { fill: #ff7a00; } .diagram .sel.cell { fill: rgba(255,122,0,0.6); }
@@ -351,7 +358,7 @@ export function createDiagrams(host, actions) {
       const want = new Map(s.diagrams.map((d) => [d.sheet, d]));
       for (const [sheet, p] of panels) if (!want.has(sheet)) (p.box.remove(), panels.delete(sheet));
       for (const [sheet, d] of want) {
-        if (!panels.has(sheet)) panels.set(sheet, createPanel(host, actions, d));
+        if (!panels.has(sheet)) panels.set(sheet, createPanel(host, actions, d, onHover));
         panels.get(sheet).update(s, d);
       }
     },

@@ -63,7 +63,8 @@ export function createView3d(container, options = {}) {
   let lastSelection = null, lastHover = null;
   function redrawMarks() {
     const selection = lastSelection === STALE ? null : lastSelection;
-    drawMarks(marks, layers, tables, [[lastHover, HOVER, 0.45], [selection, ACCENT, 0.9]]);
+    // A hovered hex (a crossing under the pointer in a sheet diagram) is marked on all six faces.
+    drawMarks(marks, layers, tables, [[lastHover, HOVER, 0.45, true], [selection, ACCENT, 0.9]]);
     sc.requestRender();
   }
 

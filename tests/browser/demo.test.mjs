@@ -189,6 +189,18 @@ test('a sheet diagram: opens from the list, zooms with the wheel, labels appear,
     }
     return best;
   });
+  // Hovering a crossing shows its hex in 3D too (a hover mark, nothing selected yet).
+  const marks = () => page.evaluate(() => window.hexdual.view.marksShown);
+  await page.mouse.move(box.x + 2, box.y + 2);
+  await page.evaluate(() => window.hexdual.actions.select(null));  // the list's click selected the sheet
+  await settle();
+  assert.equal(await marks(), 0);
+  await page.mouse.move(x, y, { steps: 3 });
+  await page.waitForFunction(() => window.hexdual.view.marksShown > 0);
+  await settle();
+  await page.screenshot({ path: join(screenshotDir, 'explorer-diagram-hover.png') });
+  await page.mouse.move(box.x + 2, box.y + 2);
+  await page.waitForFunction(() => window.hexdual.view.marksShown === 0);
   await page.mouse.click(x, y);
   assert.deepEqual((await state()).selection, { kind: 'hex', hex });
   assert.match(hash(), new RegExp(`sel=h${hex}&diag=0`));

@@ -67,10 +67,11 @@ function markEdge(group, layers, tables, k, edge, color) {
 export function drawMarks(group, layers, tables, items) {
   clearGroup(group);
   if (!layers.rb) return;
-  for (const [s, color, opacity] of items) {
+  for (const [s, color, opacity, wholeHex = false] of items) {
     if (!s) continue;
     const k = layers.slotOf(s.hex);
     if (k < 0) continue;
+    if (s.kind === 'hex' && wholeHex) for (let f = 0; f < 6; f++) markQuad(group, layers, k, f, color, opacity);
     if (s.kind === 'quad') markQuad(group, layers, k, s.face, color, opacity);
     if (s.kind === 'edge') markEdge(group, layers, tables, k, s.edge, color);
   }
