@@ -94,7 +94,7 @@ void embed(const MidSurface& s, Placement& pl, const std::vector<bool>& fixed) {
 // 100 x 14 rectangle, and a sheet wrapped round a box's corners is rounded where its cones are
 // instead of squeezed against a circle. Writes the loop's vertices (centred, inside the unit circle)
 // and returns true; false when the quads give no such polygon (a spike, a side shrunk).
-constexpr double kEvenTurn = 0.02;
+constexpr double kEvenTurn = 0.002;
 
 bool shapedLoop(const MidSurface& s, const Triangulation& t, size_t k, const DiskSolver& solver,
                 const std::vector<bool>& fixed, Placement& pl) {
