@@ -18,6 +18,18 @@ function el(name, attrs, parent) {
   return e;
 }
 
+/**
+ * A crossing's label at `s` px per unit: up-right of it, or under-left of it when it would not fit
+ * before the loop's right side (data-room: the room there, diagram units). Under, because the next
+ * column's labels sit up-right, above the same row line.
+ */
+function placeLabel(t, x, y, s) {
+  const left = Number(t.dataset.room) * s < 11 + 6.2 * t.textContent.length, under = left;
+  t.setAttribute('x', String(left ? x - 7 / s : x + 7 / s));
+  t.setAttribute('y', String(under ? -y + 14 / s : -y - 5 / s));
+  t.setAttribute('text-anchor', left ? 'end' : 'start');
+}
+
 function layout(mesh, d, selection) {
   if (d.local) {
     const hex = d.local.hex;
@@ -40,7 +52,7 @@ function createPanel(host, actions, spec, onHover) {
   const note = Object.assign(document.createElement('div'), { className: 'diagram-note' });
   box.appendChild(note);
   const root = el('g', {}, svg);
-  let diagram = null, spacing = 0.1, frame = null, fitW = 2.4, atFit = true;
+  let diagram = null, spacing = 0.1, frame = null, fitW = 2.4, atFit = true, shapedPanel = false;
   let near = []; // per crossing: the distance to its nearest other crossing (diagram units)
   let drawing = root; // the current drawing's group (a fading ghost of the previous one may sit before it)
   let vb = { x: -1.2, y: -1.2, w: 2.4, h: 2.4 };
@@ -72,8 +84,7 @@ function createPanel(host, actions, spec, onHover) {
     for (const l of drawing.querySelectorAll('.chord')) l.setAttribute('stroke-width', String((l.classList.contains('sel') ? 5 : 2) / s));
     for (const l of drawing.querySelectorAll('.loop')) l.setAttribute('stroke-width', String(1.5 / s));
     for (const t of drawing.querySelectorAll('.labels text')) {
-      t.setAttribute('x', String(Number(t.dataset.x) + 7 / s));
-      t.setAttribute('y', String(-Number(t.dataset.y) - 5 / s));
+      placeLabel(t, Number(t.dataset.x), Number(t.dataset.y), s);
     }
     box.dataset.zoom = String(fitW / vb.w);
     box.dataset.labels = shown > 0 ? 'shown' : 'hidden';
@@ -141,7 +152,22 @@ function createPanel(host, actions, spec, onHover) {
     const g = el('g', { transform: 'scale(1,-1)' }, root);
     drawing = g;
     frame = diagramFrame(d);
+    if (!shapedPanel) {
+      // The first drawing of a long disk gives its panel the drawing's shape (wide, or low on a phone).
+      shapedPanel = true;
+      const a = frame.hx / frame.hy;
+      if (a >= 1.6) {
+        if (window.matchMedia('(max-width: 700px)').matches) box.style.height = `${Math.max(170, Math.round(box.clientWidth / a + 90))}px`;
+        else {
+          const w = Math.min(Math.round(340 * Math.min(a, 2.4)), Math.max(340, (host.parentElement?.clientWidth ?? 800) - 40));
+          box.style.width = `${w}px`;
+          box.style.height = `${Math.max(220, Math.round(w / a + 110))}px`;
+        }
+      }
+    }
     near = nearest(d.crossings);
+    const lbox = d.loops[0]?.length ? d.loops[0].reduce((b, [x, y]) => ({ x0: Math.min(b.x0, x), x1: Math.max(b.x1, x), y0: Math.min(b.y0, y), y1: Math.max(b.y1, y) }),
+      { x0: Infinity, x1: -Infinity, y0: Infinity, y1: -Infinity }) : null;
     // About the distance between evenly spread crossings (0.55 of the even spacing over what they fill).
     spacing = Math.max(0.004, Math.sqrt(frame.area / Math.max(1, d.crossings.length)) * 0.55);
     if (d.local) el('circle', { cx: 0, cy: 0, r: 1, fill: 'none', stroke: '#666', 'stroke-width': 0.01, 'stroke-dasharray': '0.04 0.03' }, g);
@@ -169,6 +195,7 @@ function createPanel(host, actions, spec, onHover) {
     const labels = el('g', { class: 'labels', transform: 'scale(1,-1)' }, g);
     const texts = d.crossings.map((c) => {
       const t = el('text', { 'data-x': c.x, 'data-y': c.y, 'data-key': crossingKey(c) }, labels);
+      t.dataset.room = String(lbox ? lbox.x1 - c.x : Infinity);
       t.textContent = String(c.hex);
       return t;
     });
@@ -186,8 +213,7 @@ function createPanel(host, actions, spec, onHover) {
         const s = pxPerUnit();
         dots[k].setAttribute('cx', x);
         dots[k].setAttribute('cy', y);
-        texts[k].setAttribute('x', String(x + 7 / s));
-        texts[k].setAttribute('y', String(-y - 5 / s));
+        placeLabel(texts[k], x, y, s);
       },
     }));
     return animateDiagram({ old: old.places, ghost: old.g, items, fadeIn: chords });

@@ -128,8 +128,15 @@ std::string diagramSvg(const SheetDiagram& d) {
   // markers and strokes shrink where crossings are closer; a crossing is labelled only when its
   // label fits before its nearest neighbour (every crossing has its id as a tooltip).
   const double even = std::sqrt(area / double(std::max<size_t>(d.crossings.size(), 1)));
-  cv.S = std::clamp(24 / even, 200.0 * grow, 2400.0 * grow);
+  size_t digits = 1;  // the longest hex id: evenly spread crossings get room for it
+  for (const auto& c : d.crossings) digits = std::max(digits, std::to_string(c.hex).size());
+  cv.S = std::clamp(std::max(24.0, 12 + 6.2 * double(digits)) / even, 200.0 * grow, 2400.0 * grow);
   if (framed) cv.hx += 36 / cv.S, cv.hy += 36 / cv.S;  // a margin of 36 px: the boundary marks and labels
+  double lx1 = 1;  // the outer loop's right side (the circle's when there is none)
+  if (!d.loops.empty() && !d.loops[0].empty()) {
+    lx1 = -1e300;
+    for (Point2 p : d.loops[0]) lx1 = std::max(lx1, p.x);
+  }
   const double px = even * cv.S, marker = std::clamp(0.3 * px, 1.5, 4.5), stroke = std::clamp(0.15 * px, 0.6, 2.2);
   const std::vector<double> near = nearestCrossing(d, 24 / cv.S);
   char sw[16];
@@ -138,19 +145,40 @@ std::string diagramSvg(const SheetDiagram& d) {
   const double S = cv.S;
   char buf[256];
   std::string out;
+  // The title under the drawing, and the note under it in lines that fit the width (about 6.2 px a character).
+  std::vector<std::string> noteLines;
+  {
+    const size_t perLine = size_t(std::max(20.0, (2 * S * cv.hx - 16) / 6.2));
+    std::string line;
+    for (size_t at = 0; at < d.note.size();) {
+      size_t end = d.note.find(' ', at);
+      if (end == std::string::npos) end = d.note.size();
+      const std::string word = d.note.substr(at, end - at);
+      if (!line.empty() && line.size() + 1 + word.size() > perLine) noteLines.push_back(line), line.clear();
+      line += (line.empty() ? "" : " ") + word;
+      at = end + 1;
+    }
+    if (!line.empty()) noteLines.push_back(line);
+  }
+  const double foot = 24 + 15 * double(noteLines.size());
   std::snprintf(
       buf, sizeof buf,
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
       "font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
-      2 * S * cv.hx, 2 * S * cv.hy + 24, 2 * S * cv.hx, 2 * S * cv.hy + 24);
+      2 * S * cv.hx, 2 * S * cv.hy + foot, 2 * S * cv.hx, 2 * S * cv.hy + foot);
   out += buf;
   // "sheet 6 · annulus", or "sheet 6 · annulus · polygon" when drawn another way (as the explorer's title).
   const std::string how = d.method == d.topology ? "" : " · " + d.method;
   std::snprintf(buf, sizeof buf, "<text x=\"8\" y=\"%.0f\" font-size=\"13\">sheet %d · %s%s</text>\n",
                 2 * S * cv.hy + 16, d.sheet, d.topology.c_str(), how.c_str());
   out += buf;
-  if (!d.note.empty())
-    out += "<title>" + escapeXml(d.note) + "</title>\n";  // which face was opened, the polygon's word
+  if (!d.note.empty()) {  // which face was opened, the polygon's word, why a disk is drawn as it is
+    out += "<title>" + escapeXml(d.note) + "</title>\n";
+    for (size_t k = 0; k < noteLines.size(); ++k) {
+      std::snprintf(buf, sizeof buf, "<text x=\"8\" y=\"%.0f\" fill=\"#555\">", 2 * S * cv.hy + 33 + 15 * double(k));
+      out += buf + escapeXml(noteLines[k]) + "</text>\n";
+    }
+  }
   if (d.local) {
     std::snprintf(
         buf, sizeof buf,
@@ -179,7 +207,11 @@ std::string diagramSvg(const SheetDiagram& d) {
                   cv.X(c.p.x), cv.Y(c.p.y), marker, c.outside ? "#fc6" : "#fff", c.hex);
     out += buf;
     if (near[k] * cv.S >= std::max(22.0, 8 + 6.2 * double(std::to_string(c.hex).size()))) {  // room for its digits
-      std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\">%d</text>", cv.X(c.p.x) + 6, cv.Y(c.p.y) - 6, c.hex);
+      // Up and right of its crossing, but under-left of it where it would not fit before the loop's
+      // right side (under, as the next column's labels sit up-right, above the same row line).
+      const bool left = (lx1 - c.p.x) * cv.S < 11 + 6.2 * double(std::to_string(c.hex).size()), under = left;
+      std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\"%s>%d</text>", cv.X(c.p.x) + (left ? -6 : 6),
+                    cv.Y(c.p.y) + (under ? 15 : -6), left ? " text-anchor=\"end\"" : "", c.hex);
       out += buf;
     }
     out += "\n";

@@ -228,6 +228,20 @@ test('a long disk fills a wide panel lying down; on a phone two fingers pinch-zo
   const e = await extentOf();
   assert.ok(e.w > 4 * e.h, `the 20 x 3 layer lies down: ${JSON.stringify(e)}`);
   assert.ok(e.w > 0.7 * e.panel, `and fills the panel's width: ${JSON.stringify(e)}`);
+  // Its panel opens in the drawing's shape (wide), so its labels fit without a resize.
+  const pb = await panel.boundingBox();
+  assert.ok(pb.width > 1.6 * pb.height, `a wide panel: ${pb.width} x ${pb.height}`);
+  assert.ok(await panel.evaluate((p) => [...p.querySelectorAll('.labels text')].filter((t) => t.style.display !== 'none').length) >= 40, 'most crossings labelled');
+  const overlaps = await panel.evaluate((p) => {
+    const r = [...p.querySelectorAll('.labels text')].filter((t) => t.style.display !== 'none').map((t) => t.getBoundingClientRect());
+    let n = 0;
+    for (let i = 0; i < r.length; i++)
+      for (let j = i + 1; j < r.length; j++)
+        if (r[i].left < r[j].right - 1 && r[j].left < r[i].right - 1 && r[i].top < r[j].bottom - 1 && r[j].top < r[i].bottom - 1) n++;
+    return n;
+  });
+  assert.equal(overlaps, 0, 'no two labels overlap');
+  await page.screenshot({ path: join(screenshotDir, 'explorer-diagram-long.png') });
 
   await page.setViewportSize({ width: 390, height: 844 });
   await open('#mesh=grid:6x6x3&diag=13');
