@@ -135,10 +135,12 @@ bool shapedLoop(const MidSurface& s, const Triangulation& t, size_t k, const Dis
   }
   if (total < pi) return false;
   std::vector<Point2> dir(m);
+  std::vector<bool> corner(m);  // a marked turn (more than a sixth of a quarter): where a side starts
   double theta = 0, mxx = 0, mxy = 0, myy = 0, rx = 0, ry = 0;
   for (size_t j = 0; j < m; ++j) {
     const double tj = (1 - kEvenTurn) * turn[j] * 2 * pi / total + kEvenTurn * 2 * pi / double(m);
     if (tj > 0.8 * pi) return false;  // a spike: the circle draws it better
+    corner[j] = tj > pi / 12;
     theta += tj;
     dir[j] = {std::cos(theta), std::sin(theta)};  // the side from loop[j] to loop[j + 1]
     mxx += dir[j].x * dir[j].x, mxy += dir[j].x * dir[j].y, myy += dir[j].y * dir[j].y;
@@ -157,8 +159,23 @@ bool shapedLoop(const MidSurface& s, const Triangulation& t, size_t k, const Dis
     const double a = std::atan2(dir[j].y, dir[j].x);
     c4 += len * std::cos(4 * a), s4 += len * std::sin(4 * a);
   }
-  // Turned so that those sides are level: a rectangle's sides horizontal and vertical.
-  const double level = -std::atan2(s4, c4) / 4, cl = std::cos(level), sl = std::sin(level);
+  // Turned so that those sides are level: a rectangle's sides horizontal and vertical. A shape with
+  // no such direction (a pentagon) is turned so that its longest side, corner to corner, is level.
+  double level = -std::atan2(s4, c4) / 4, perimeter = 0;
+  for (size_t j = 0; j < m; ++j) perimeter += std::hypot(at[(j + 1) % m].x - at[j].x, at[(j + 1) % m].y - at[j].y);
+  if (std::hypot(c4, s4) < 0.5 * perimeter) {
+    const size_t first = size_t(std::find(corner.begin(), corner.end(), true) - corner.begin());
+    double best = 0;
+    for (size_t k = 0; k < m && first < m; ++k) {  // sides from each corner to the next
+      const size_t a = (first + k) % m;
+      if (!corner[a]) continue;
+      size_t b = (a + 1) % m;
+      while (!corner[b]) b = (b + 1) % m;
+      const double len = std::hypot(at[b].x - at[a].x, at[b].y - at[a].y);
+      if (len > best) best = len, level = -std::atan2(at[b].y - at[a].y, at[b].x - at[a].x);
+    }
+  }
+  const double cl = std::cos(level), sl = std::sin(level);
   for (Point2& q : at) q = {cl * q.x - sl * q.y, sl * q.x + cl * q.y};
   // And lying down: the longer side horizontal, as panels and pages are wider than tall.
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
