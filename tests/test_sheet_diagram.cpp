@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <cstdio>
 #include <map>
 #include <random>
 
@@ -77,6 +78,21 @@ TEST_CASE("a disk is drawn in the shape its quads give: a 20 x 3 layer as a long
   auto [sw, sh] = loopBox(sq);
   CHECK(sw == doctest::Approx(sh).epsilon(0.05));
   CHECK(sw == doctest::Approx(std::sqrt(2.0)).epsilon(0.05));  // the square inscribed in the unit circle
+
+  // The CLI's SVG frames the rectangle by its box and labels every crossing: crossings spread over
+  // its own area (not the circle's) are far enough apart for their ids.
+  const std::string svg = diagramSvg(dg);
+  double width = 0, height = 0;
+  REQUIRE(std::sscanf(svg.c_str(), "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%lf\" height=\"%lf\"", &width, &height) == 2);
+  CAPTURE(width);
+  CAPTURE(height);
+  CHECK(width > 3 * height);
+  size_t labels = 0;
+  for (size_t at = svg.find("<text x="); at != std::string::npos; at = svg.find("<text x=", at + 1)) ++labels;
+  CHECK(labels == 60 + 1);  // every crossing, and the title
+  // The right-most column's labels go under-left of their crossings, off the boundary marks.
+  CHECK(contains(svg, " text-anchor=\"end\">0</text>"));
+  CHECK_FALSE(contains(svg, " text-anchor=\"end\">19</text>"));  // the left-most column keeps up-right
 }
 
 TEST_CASE("an L-shaped layer is drawn convex, and its note says which corner was straightened") {
@@ -99,6 +115,11 @@ TEST_CASE("an L-shaped layer is drawn convex, and its note says which corner was
   CHECK(dg.method == "disk");
   CHECK(dg.note == "drawn convex: 1 reflex corner of its boundary (three quads meeting it) drawn straight");
   checkDiagram(dg, 3);
+  // The SVG prints the note under its title (a PNG or a printed figure keeps it), in lines that fit.
+  const std::string svg = diagramSvg(dg);
+  CHECK(contains(svg, "<text x=\"8\" y="));
+  CHECK(contains(svg, " fill=\"#555\">drawn convex: 1 reflex corner"));
+  CHECK(contains(svg, "drawn straight</text>"));
   // A grid's layer has none: no note.
   Complex g = makeGrid(3, 3, 1);
   Dual dg3 = extractDual(g);

@@ -203,8 +203,8 @@ export function createEngine(store) {
           return `ignored steps from step ${i + 1} (${steps[i]}): ${e.message}`;
         }
       }
-      hd = null;
       if (stop === 0) {
+        hd = null;
         store.set({ steps: [...steps], at: 0 });
         return '';
       }

@@ -57,7 +57,7 @@ export function createPalette(root, actions) {
   list.addEventListener('click', (e) => {
     const li = e.target.closest('li[data-step], li[data-flip]');
     if (li?.classList.contains('sheet-op') && pointerType !== 'mouse' && preview.dataset.armed !== li.dataset.step) {
-      showPreview(li, 'Tap again to apply.');
+      showPreview(li, { touch: true });
       preview.dataset.armed = li.dataset.step;
       li.classList.add('armed');
       return;
@@ -68,7 +68,8 @@ export function createPalette(root, actions) {
   let shownKey = null;
 
   /** What a sheet operation would change, from mesh.preview: shown before it is applied. */
-  function showPreview(li, then = 'Click to apply.') {
+  function showPreview(li, { touch = false } = {}) {
+    const then = touch ? 'Tap again to apply.' : 'Click to apply.';
     const s = window.hexdual.store.get();
     preview.dataset.step = li.dataset.step;
     delete preview.dataset.armed;
@@ -98,7 +99,6 @@ export function createPalette(root, actions) {
     // splits) are highlighted while the preview shows, the rest dimmed.
     const removed = p.report.removed.hexes.length ? [...p.report.removed.hexes] : operandHexes.get(p.step) ?? [];
     const what = p.report.removed.hexes.length ? `the ${removed.length} highlighted hexes would be removed` : `the highlighted sheet would be split`;
-    const touch = then !== 'Click to apply.';
     previewFocus = removed.length
       ? { key: `preview:${p.step}:${s.meshKey}`, hexes: removed, label: `preview of ${p.step}: ${what} — ${touch ? 'tap it again in the list to apply' : 'click to apply'}` }
       : null;

@@ -30,6 +30,36 @@ function placeLabel(t, x, y, s) {
   t.setAttribute('text-anchor', left ? 'end' : 'start');
 }
 
+/** Per crossing, the distance to its nearest other crossing (a grid of cells; exact). */
+function nearest(cs) {
+  const n = cs.length;
+  if (n < 2) return cs.map(() => Infinity);
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  for (const c of cs) x0 = Math.min(x0, c.x), x1 = Math.max(x1, c.x), y0 = Math.min(y0, c.y), y1 = Math.max(y1, c.y);
+  // About one crossing per cell; never thinner than a row of them (two crossings, a line of them).
+  const w = x1 - x0, h = y1 - y0;
+  const cell = Math.max(Math.sqrt((w * h) / n), Math.max(w, h) / (2 * Math.sqrt(n)), 1e-9);
+  const grid = new Map();
+  const at = (i, j) => `${i},${j}`;
+  cs.forEach((c, k) => {
+    const key = at(Math.floor((c.x - x0) / cell), Math.floor((c.y - y0) / cell));
+    if (!grid.has(key)) grid.set(key, []);
+    grid.get(key).push(k);
+  });
+  const maxRing = Math.ceil(Math.max(x1 - x0, y1 - y0) / cell) + 1;
+  return cs.map((c, k) => {
+    const ci = Math.floor((c.x - x0) / cell), cj = Math.floor((c.y - y0) / cell);
+    let best = Infinity;
+    for (let ring = 0; ring <= maxRing && best > (ring - 1) * cell; ring++)
+      for (let i = ci - ring; i <= ci + ring; i++)
+        for (let j = cj - ring; j <= cj + ring; j++) {
+          if (Math.max(Math.abs(i - ci), Math.abs(j - cj)) !== ring) continue;
+          for (const m of grid.get(at(i, j)) ?? []) if (m !== k) best = Math.min(best, Math.hypot(cs[m].x - c.x, cs[m].y - c.y));
+        }
+    return best;
+  });
+}
+
 function layout(mesh, d, selection) {
   if (d.local) {
     const hex = d.local.hex;
@@ -111,36 +141,6 @@ function createPanel(host, actions, spec, onHover) {
     atFit = false;
     applyView();
   }
-  /** Per crossing, the distance to its nearest other crossing (a grid of cells; exact). */
-  function nearest(cs) {
-    const n = cs.length;
-    if (n < 2) return cs.map(() => Infinity);
-    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-    for (const c of cs) x0 = Math.min(x0, c.x), x1 = Math.max(x1, c.x), y0 = Math.min(y0, c.y), y1 = Math.max(y1, c.y);
-    // About one crossing per cell; never thinner than a row of them (two crossings, a line of them).
-    const w = x1 - x0, h = y1 - y0;
-    const cell = Math.max(Math.sqrt((w * h) / n), Math.max(w, h) / (2 * Math.sqrt(n)), 1e-9);
-    const grid = new Map();
-    const at = (i, j) => `${i},${j}`;
-    cs.forEach((c, k) => {
-      const key = at(Math.floor((c.x - x0) / cell), Math.floor((c.y - y0) / cell));
-      if (!grid.has(key)) grid.set(key, []);
-      grid.get(key).push(k);
-    });
-    const maxRing = Math.ceil(Math.max(x1 - x0, y1 - y0) / cell) + 1;
-    return cs.map((c, k) => {
-      const ci = Math.floor((c.x - x0) / cell), cj = Math.floor((c.y - y0) / cell);
-      let best = Infinity;
-      for (let ring = 0; ring <= maxRing && best > (ring - 1) * cell; ring++)
-        for (let i = ci - ring; i <= ci + ring; i++)
-          for (let j = cj - ring; j <= cj + ring; j++) {
-            if (Math.max(Math.abs(i - ci), Math.abs(j - cj)) !== ring) continue;
-            for (const m of grid.get(at(i, j)) ?? []) if (m !== k) best = Math.min(best, Math.hypot(cs[m].x - c.x, cs[m].y - c.y));
-          }
-      return best;
-    });
-  }
-
   let motion = null;
   // Draws a layout; `animate`: from the previous drawing of this panel (the same sheet, a step later).
   function draw(d, animate = false) {
@@ -166,8 +166,6 @@ function createPanel(host, actions, spec, onHover) {
       }
     }
     near = nearest(d.crossings);
-    const lbox = d.loops[0]?.length ? d.loops[0].reduce((b, [x, y]) => ({ x0: Math.min(b.x0, x), x1: Math.max(b.x1, x), y0: Math.min(b.y0, y), y1: Math.max(b.y1, y) }),
-      { x0: Infinity, x1: -Infinity, y0: Infinity, y1: -Infinity }) : null;
     // About the distance between evenly spread crossings (0.55 of the even spacing over what they fill).
     spacing = Math.max(0.004, Math.sqrt(frame.area / Math.max(1, d.crossings.length)) * 0.55);
     if (d.local) el('circle', { cx: 0, cy: 0, r: 1, fill: 'none', stroke: '#666', 'stroke-width': 0.01, 'stroke-dasharray': '0.04 0.03' }, g);
@@ -195,7 +193,7 @@ function createPanel(host, actions, spec, onHover) {
     const labels = el('g', { class: 'labels', transform: 'scale(1,-1)' }, g);
     const texts = d.crossings.map((c) => {
       const t = el('text', { 'data-x': c.x, 'data-y': c.y, 'data-key': crossingKey(c) }, labels);
-      t.dataset.room = String(lbox ? lbox.x1 - c.x : Infinity);
+      t.dataset.room = String(frame.right - c.x);
       t.textContent = String(c.hex);
       return t;
     });

@@ -108,16 +108,20 @@ std::string diagramSvg(const SheetDiagram& d) {
   cv.hx = cv.hy = cv.M;
   // A disk drawn in the shape its quads give (a long rectangle, a square) is framed by its box and
   // drawn as large as the circle would be; local views and opened spheres keep the circle's frame.
-  double grow = 1, area = std::acos(-1.0);  // what the crossings spread over: the unit disk, or the loop
-  const bool framed = !d.local && d.openedHex < 0 && !d.loops.empty() && d.loops[0].size() >= 3;
-  if (framed) {
+  // The outer loop's box and area (the unit circle's when there is none).
+  double x0 = -1, x1 = 1, y0 = -1, y1 = 1, twice = 2 * std::acos(-1.0);
+  if (!d.loops.empty() && d.loops[0].size() >= 3) {
     const std::vector<Point2>& loop = d.loops[0];
-    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300, twice = 0;
+    x0 = y0 = 1e300, x1 = y1 = -1e300, twice = 0;
     for (size_t k = 0; k < loop.size(); ++k) {
       const Point2 p = loop[k], q = loop[(k + 1) % loop.size()];
       x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
       twice += p.x * q.y - q.x * p.y;
     }
+  }
+  double grow = 1, area = std::acos(-1.0);  // what the crossings spread over: the unit disk, or the loop
+  const bool framed = !d.local && d.openedHex < 0 && !d.loops.empty() && d.loops[0].size() >= 3;
+  if (framed) {
     grow = 2 / std::max({x1 - x0, y1 - y0, 0.2});
     area = std::max(std::abs(twice) / 2, 1e-3);
     cv.cx = (x0 + x1) / 2, cv.cy = (y0 + y1) / 2;
@@ -132,11 +136,6 @@ std::string diagramSvg(const SheetDiagram& d) {
   for (const auto& c : d.crossings) digits = std::max(digits, std::to_string(c.hex).size());
   cv.S = std::clamp(std::max(24.0, 12 + 6.2 * double(digits)) / even, 200.0 * grow, 2400.0 * grow);
   if (framed) cv.hx += 36 / cv.S, cv.hy += 36 / cv.S;  // a margin of 36 px: the boundary marks and labels
-  double lx1 = 1;  // the outer loop's right side (the circle's when there is none)
-  if (!d.loops.empty() && !d.loops[0].empty()) {
-    lx1 = -1e300;
-    for (Point2 p : d.loops[0]) lx1 = std::max(lx1, p.x);
-  }
   const double px = even * cv.S, marker = std::clamp(0.3 * px, 1.5, 4.5), stroke = std::clamp(0.15 * px, 0.6, 2.2);
   const std::vector<double> near = nearestCrossing(d, 24 / cv.S);
   char sw[16];
@@ -209,7 +208,7 @@ std::string diagramSvg(const SheetDiagram& d) {
     if (near[k] * cv.S >= std::max(22.0, 8 + 6.2 * double(std::to_string(c.hex).size()))) {  // room for its digits
       // Up and right of its crossing, but under-left of it where it would not fit before the loop's
       // right side (under, as the next column's labels sit up-right, above the same row line).
-      const bool left = (lx1 - c.p.x) * cv.S < 11 + 6.2 * double(std::to_string(c.hex).size()), under = left;
+      const bool left = (x1 - c.p.x) * cv.S < 11 + 6.2 * double(std::to_string(c.hex).size()), under = left;
       std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\"%s>%d</text>", cv.X(c.p.x) + (left ? -6 : 6),
                     cv.Y(c.p.y) + (under ? 15 : -6), left ? " text-anchor=\"end\"" : "", c.hex);
       out += buf;

@@ -52,6 +52,7 @@ constexpr int kRelaxIterations = 8;
 void start(Placement& pl, std::vector<bool>& fixed) {
   pl.pos.assign(size_t(pl.tri.vertices), {});
   fixed.assign(size_t(pl.tri.vertices), false);
+  pl.straightened = 0;  // a drawing on the circle straightens nothing
 }
 
 // The first flipped or flat triangle of the drawing, or -1 when it is an embedding.
@@ -92,82 +93,101 @@ void embed(const MidSurface& s, Placement& pl, const std::vector<bool>& fixed) {
 // loop vertex, so the polygon is strictly convex and Tutte's theorem holds as on the circle. Sides get
 // unit length, then the least change of lengths that closes the polygon. So a 100 x 14 sheet is a
 // 100 x 14 rectangle, and a sheet wrapped round a box's corners is rounded where its cones are
-// instead of squeezed against a circle. Writes the loop's vertices (centred, inside the unit circle)
-// and returns true; false when the quads give no such polygon (a spike, a side shrunk).
+// instead of squeezed against a circle.
 constexpr double kEvenTurn = 0.002;
 
-bool shapedLoop(const MidSurface& s, const Triangulation& t, size_t k, const DiskSolver& solver,
-                const std::vector<bool>& fixed, Placement& pl) {
+struct LoopTurns {
+  std::vector<double> turn;  // per loop vertex, radians (>= 0: reflex turns drawn straight)
+  int straightened = 0;      // reflex boundary corners among them
+};
+
+// Each loop vertex's turn: its own (2 - q) quarter turns plus its share of the cones' turns.
+LoopTurns loopTurns(const MidSurface& s, const Triangulation& t, size_t k, const DiskSolver& solver,
+                    const std::vector<bool>& fixed, std::vector<Point2>& scratch) {
   const std::vector<int>& loop = t.loops[k];
-  const size_t m = loop.size();
-  if (m < 3) return false;
   std::vector<int> quadsAt(size_t(s.nCorner), 0);
   for (const auto& q : s.quad)
     for (int j = 0; j < 4; ++j)
       if (std::find(q.begin(), q.begin() + j, q[size_t(j)]) == q.begin() + j) ++quadsAt[size_t(q[size_t(j)])];
   const double pi = std::numbers::pi;
-  // The cones' turns, carried to the boundary by their harmonic measure.
   std::vector<Point2> cone(size_t(t.vertices), Point2{0, 0});
   bool cones = false;
   for (int v = 0; v < s.nCorner; ++v)
     if (!fixed[size_t(v)] && quadsAt[size_t(v)] != 4) cone[size_t(v)].x = (4 - quadsAt[size_t(v)]) * pi / 2, cones = true;
   std::vector<double> exitTurn(size_t(t.vertices), 0);
-  if (cones) {
-    std::fill(pl.pos.begin(), pl.pos.end(), Point2{0, 0});
-    solver.solve(pl.pos, &cone);
+  if (cones) {  // the flow out of the disk at each boundary vertex: the cones' harmonic measure there
+    std::fill(scratch.begin(), scratch.end(), Point2{0, 0});
+    solver.solve(scratch, &cone);
     for (const auto& tri : t.tris)
       for (int e = 0; e < 3; ++e) {
         const int u = tri[size_t(e)], v = tri[size_t((e + 1) % 3)];
-        if (fixed[size_t(u)] && !fixed[size_t(v)]) exitTurn[size_t(u)] += pl.pos[size_t(v)].x;
-        if (fixed[size_t(v)] && !fixed[size_t(u)]) exitTurn[size_t(v)] += pl.pos[size_t(u)].x;
+        if (fixed[size_t(u)] && !fixed[size_t(v)]) exitTurn[size_t(u)] += scratch[size_t(v)].x;
+        if (fixed[size_t(v)] && !fixed[size_t(u)]) exitTurn[size_t(v)] += scratch[size_t(u)].x;
       }
   }
-  std::vector<double> turn(m, 0);
-  double total = 0;
-  pl.straightened = 0;
-  for (size_t j = 0; j < m; ++j) {
+  LoopTurns out;
+  out.turn.assign(loop.size(), 0);
+  for (size_t j = 0; j < loop.size(); ++j) {
     const int v = loop[j];
     double tj = exitTurn[size_t(v)];
     if (v < s.nCorner) tj += (2 - quadsAt[size_t(v)]) * pi / 2;
-    if (v < s.nCorner && quadsAt[size_t(v)] >= 3 && tj < -1e-9) ++pl.straightened;
-    turn[j] = std::max(0.0, tj);
-    total += turn[j];
+    if (v < s.nCorner && quadsAt[size_t(v)] >= 3 && tj < -1e-9) ++out.straightened;
+    out.turn[j] = std::max(0.0, tj);
   }
-  if (total < pi) return false;
+  return out;
+}
+
+// The strictly convex polygon with these turns and sides as near unit length as closes it (vertex j
+// starts side j), and per vertex whether it is a marked corner; empty when there is none (too little
+// turning, a spike, a side shrunk).
+std::vector<Point2> convexPolygon(const std::vector<double>& turn, std::vector<bool>& corner) {
+  const double pi = std::numbers::pi;
+  const size_t m = turn.size();
+  double total = 0;
+  for (double tj : turn) total += tj;
+  if (m < 3 || total < pi) return {};
   std::vector<Point2> dir(m);
-  std::vector<bool> corner(m);  // a marked turn (more than a sixth of a quarter): where a side starts
+  corner.assign(m, false);
   double theta = 0, mxx = 0, mxy = 0, myy = 0, rx = 0, ry = 0;
   for (size_t j = 0; j < m; ++j) {
     const double tj = (1 - kEvenTurn) * turn[j] * 2 * pi / total + kEvenTurn * 2 * pi / double(m);
-    if (tj > 0.8 * pi) return false;  // a spike: the circle draws it better
-    corner[j] = tj > pi / 12;
+    if (tj > 0.8 * pi) return {};  // a spike: the circle draws it better
+    corner[j] = tj > pi / 12;      // more than a sixth of a quarter turn: where a side starts
     theta += tj;
-    dir[j] = {std::cos(theta), std::sin(theta)};  // the side from loop[j] to loop[j + 1]
+    dir[j] = {std::cos(theta), std::sin(theta)};
     mxx += dir[j].x * dir[j].x, mxy += dir[j].x * dir[j].y, myy += dir[j].y * dir[j].y;
     rx += dir[j].x, ry += dir[j].y;
   }
+  // Lengths 1 - dir . lambda, the least change that closes the polygon (sum of length x dir = 0).
   const double det = mxx * myy - mxy * mxy;
-  if (det <= 1e-12) return false;
+  if (det <= 1e-12) return {};
   const double lx = (myy * rx - mxy * ry) / det, ly = (mxx * ry - mxy * rx) / det;
   std::vector<Point2> at(m);
-  Point2 p{0, 0}, centre{0, 0};
-  double c4 = 0, s4 = 0;  // the sides' dominant direction modulo a quarter turn
+  Point2 p{0, 0};
   for (size_t j = 0; j < m; ++j) {
     const double len = 1 - dir[j].x * lx - dir[j].y * ly;
-    if (len < 0.3) return false;
+    if (len < 0.3) return {};
     at[(j + 1) % m] = p = {p.x + dir[j].x * len, p.y + dir[j].y * len};
-    const double a = std::atan2(dir[j].y, dir[j].x);
-    c4 += len * std::cos(4 * a), s4 += len * std::sin(4 * a);
   }
-  // Turned so that those sides are level: a rectangle's sides horizontal and vertical. A shape with
-  // no such direction (a pentagon) is turned so that its longest side, corner to corner, is level.
-  double level = -std::atan2(s4, c4) / 4, perimeter = 0;
-  for (size_t j = 0; j < m; ++j) perimeter += std::hypot(at[(j + 1) % m].x - at[j].x, at[(j + 1) % m].y - at[j].y);
+  return at;
+}
+
+// Turns the polygon so that its sides are level (a rectangle's horizontal and vertical; a shape with
+// no quarter-turn axis, such as a pentagon, by its longest side from corner to corner), lays it down
+// (longer extent horizontal, as panels and pages are wider than tall), centres it and scales it into
+// the unit circle.
+void levelAndFit(std::vector<Point2>& at, const std::vector<bool>& corner) {
+  const size_t m = at.size();
+  double c4 = 0, s4 = 0, perimeter = 0;  // the sides' dominant direction modulo a quarter turn
+  for (size_t j = 0; j < m; ++j) {
+    const double dx = at[(j + 1) % m].x - at[j].x, dy = at[(j + 1) % m].y - at[j].y, len = std::hypot(dx, dy);
+    c4 += len * std::cos(4 * std::atan2(dy, dx)), s4 += len * std::sin(4 * std::atan2(dy, dx));
+    perimeter += len;
+  }
+  double level = -std::atan2(s4, c4) / 4;
   if (std::hypot(c4, s4) < 0.5 * perimeter) {
-    const size_t first = size_t(std::find(corner.begin(), corner.end(), true) - corner.begin());
     double best = 0;
-    for (size_t k = 0; k < m && first < m; ++k) {  // sides from each corner to the next
-      const size_t a = (first + k) % m;
+    for (size_t a = 0; a < m; ++a) {
       if (!corner[a]) continue;
       size_t b = (a + 1) % m;
       while (!corner[b]) b = (b + 1) % m;
@@ -177,15 +197,28 @@ bool shapedLoop(const MidSurface& s, const Triangulation& t, size_t k, const Dis
   }
   const double cl = std::cos(level), sl = std::sin(level);
   for (Point2& q : at) q = {cl * q.x - sl * q.y, sl * q.x + cl * q.y};
-  // And lying down: the longer side horizontal, as panels and pages are wider than tall.
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   for (const Point2& q : at) x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
   if (y1 - y0 > 1.05 * (x1 - x0))
     for (Point2& q : at) q = {-q.y, q.x};
+  Point2 centre{0, 0};
   for (const Point2& q : at) centre.x += q.x / double(m), centre.y += q.y / double(m);
   double radius = 0;
   for (const Point2& q : at) radius = std::max(radius, std::hypot(q.x - centre.x, q.y - centre.y));
-  for (size_t j = 0; j < m; ++j) pl.pos[size_t(loop[j])] = {(at[j].x - centre.x) / radius, (at[j].y - centre.y) / radius};
+  for (Point2& q : at) q = {(q.x - centre.x) / radius, (q.y - centre.y) / radius};
+}
+
+// Places loop k of a disk on the polygon its quads give; false (pl unchanged but for scratch in
+// pl.pos) when they give none.
+bool shapedLoop(const MidSurface& s, const Triangulation& t, size_t k, const DiskSolver& solver,
+                const std::vector<bool>& fixed, Placement& pl) {
+  const LoopTurns turns = loopTurns(s, t, k, solver, fixed, pl.pos);
+  std::vector<bool> corner;
+  std::vector<Point2> at = convexPolygon(turns.turn, corner);
+  if (at.empty()) return false;
+  levelAndFit(at, corner);
+  for (size_t j = 0; j < at.size(); ++j) pl.pos[size_t(t.loops[k][j])] = at[j];
+  pl.straightened = turns.straightened;
   return true;
 }
 

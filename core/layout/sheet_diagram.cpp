@@ -30,11 +30,12 @@ SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
              " of its boundary (three quads meeting it) drawn straight";
   // A disk is drawn in the shape its quads give it (a 100 x 14 sheet as a long rectangle); where
   // that crowds (cones close to the boundary make sharp corners), on the circle when it spreads better.
-  if (whole && sh.topology == "disk" && pl.method == "disk" && diagramSpread(d) < kReadableSpread) {
+  const double spread = whole ? diagramSpread(d) : 0;
+  if (whole && sh.topology == "disk" && pl.method == "disk" && spread < kReadableSpread) {
     Placement round;
     placeSurface(s, round, nullptr, DiskBoundary::circle);
     SheetDiagram onCircle = assembleDiagram(dual, sheet, s, round, false);
-    const double shaped = diagramSpread(d), circle = diagramSpread(onCircle);
+    const double shaped = spread, circle = diagramSpread(onCircle);
     if (circle > shaped) {
       d = std::move(onCircle);
       char buf[160];
@@ -43,9 +44,9 @@ SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
       d.note = buf;
     }
   }
-  if (!whole || (sh.topology != "disk" && diagramSpread(d) < kReadableSpread)) {
+  if (!whole || (sh.topology != "disk" && spread < kReadableSpread)) {
     SheetDiagram cut = layoutPolygon(dual, sheet, s);
-    if (!whole || diagramSpread(cut) > diagramSpread(d)) d = std::move(cut);
+    if (!whole || diagramSpread(cut) > spread) d = std::move(cut);
   }
   d.euler = sh.euler;
   checkDiagram(d, sh.slots.size());
