@@ -4,6 +4,7 @@
 // (issue 22: sheet operations' cost).
 // Owns its arrays; keeps: keys_ has a power-of-two size, at most half of it used, -1 marking a free slot.
 #pragma once
+#include <algorithm>
 #include <cassert>
 #include <cstdint>
 #include <utility>
@@ -51,6 +52,17 @@ class IdMap {
     return *v;
   }
   bool empty() const { return used_ == 0; }
+  // Empties the map. Its arrays are kept for the next use unless they are far larger than what it
+  // held (a map reused after one long edit does not sweep a large array on every later clear).
+  void clear() {
+    if (keys_.size() > 4096 && 8 * used_ < keys_.size()) {
+      keys_ = {};
+      vals_ = {};
+    } else {
+      std::fill(keys_.begin(), keys_.end(), -1);
+    }
+    used_ = 0;
+  }
   size_t size() const { return used_; }
 
  private:

@@ -43,6 +43,7 @@ void sortUniqueIds(std::vector<HexId>& ids) {
 
 std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
   std::vector<HexId> out;
+  out.reserve(2 * log.edits.size());  // at most two hexes per edit: one allocation
   for (const Complex::Edit& e : log.edits) {
     switch (e.kind) {
       case Complex::Edit::AddHex:

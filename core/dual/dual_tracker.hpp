@@ -29,6 +29,7 @@
 // The undo journal itself is the complex's (Complex::EditLog, cx.undo); the tracker follows an undo
 // like any edit and gives the undone step's ids back with releaseRetiredTail().
 #pragma once
+#include <span>
 #include <vector>
 
 #include "complex/complex.hpp"
@@ -135,10 +136,10 @@ class DualTracker {
   void dropPieces(const std::vector<int32_t>& ids);
   Slot chordSlotAt(int32_t id, int32_t p) const;
   void sliceChord(int32_t id, int32_t a, int32_t b, std::vector<Piece>& out) const;  // places a..b, b < length
-  int32_t newChordLabel(std::vector<Slot> run);
+  int32_t newChordLabel(std::span<const Slot> run);
   void cutLabel(int32_t label, int32_t lo, int32_t hi, int32_t chord, bool add);
   void releaseLabels();
-  void setChordPieces(int32_t id, std::vector<Piece> pieces);
+  void setChordPieces(int32_t id, const std::vector<Piece>& pieces);
   void growChordIds(size_t n);  // room for chord ids below n in the per-chord arrays
   void settleChords() const;
   bool chordSelfIntersects(int32_t id) const;

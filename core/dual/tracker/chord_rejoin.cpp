@@ -3,12 +3,14 @@
 // hexes join the stretches' ends (a collapse joins two chords crosswise, TK03 §4.4), and touched
 // slots no walk meets form chords of their own. Each new chord gets the id and slot order a
 // re-walk from its smallest touched slot gives; only the touched slots are written.
-// Owns nothing between updates; refuses, writing nothing, when the state is not one it can follow.
+// Owns nothing between updates but its scratch (per thread, like validateAround's: cleared at the
+// start of each rejoin, so a warm step allocates only the new label runs and the report); refuses,
+// writing nothing, when the state is not one it can follow.
 #include <algorithm>
 #include <numeric>
-#include <unordered_map>
-#include <unordered_set>
+#include <span>
 
+#include "complex/id_map.hpp"
 #include "dual/dual_tracker.hpp"
 #include "dual/tracker/slots.hpp"
 
@@ -19,11 +21,6 @@ using namespace tracker;
 // the steps of rejoinChords below in the order they run. A step returning false gives up (nothing
 // written yet: only commit writes).
 struct DualTracker::ChordRejoin {
-  DualTracker& tr;
-  const Complex& cx;
-  const std::vector<HexId>& touched;
-  const std::vector<int32_t>& ids;  // the changed chords, ascending
-
   // The touched slots, by slot (touched is sorted); a slot's old chord, run or own chord.
   struct Touched {
     Slot slot;
@@ -32,7 +29,6 @@ struct DualTracker::ChordRejoin {
     int32_t run = -1, entry = -1;  // the walk that met it, and the face it entered through
     int32_t comp = -1;             // the new chord it lies in
   };
-  std::vector<Touched> ts;
   // The untouched places of each old chord between touched ones.
   struct Stretch {
     int32_t chord, a, b;  // places a..b (b >= length wraps round a closed chord)
@@ -40,42 +36,94 @@ struct DualTracker::ChordRejoin {
     int face[2] = {-1, -1};      // the face each end leaves through, -1 at the chord's boundary end
     int32_t link[2] = {-1, -1};  // the walk from or to each end
   };
-  std::vector<Stretch> stretches;
-  // The touched slots of each changed chord, found once (a sheet operation changes thousands of
-  // chords): (old chord, index into ts), sorted.
-  std::vector<std::pair<int32_t, int32_t>> byOld;
-  // The first stretch end (2 * stretch + side) at a slot leaving through a face, by endKey.
-  std::unordered_map<int64_t, int32_t> endIndex;
-  static int64_t endKey(Slot s, int face) { return (int64_t(s.hex) * 3 + s.axis) * 8 + face; }
-  std::vector<int32_t> lengths, liveOld;  // per changed chord: its length, its live touched slots
-  std::vector<uint8_t> contiguous;        // per changed chord: touched in one run away from its ends
-  // Walks through the touched slots from stretch ends.
+  // Walks through the touched slots from stretch ends: slots [begin, end) of walkSlots.
   struct Walk {
-    std::vector<int32_t> slots;  // indices into ts, in walk order
-    int32_t from, to;            // stretch ends (2 * stretch + side), -1 for the boundary
+    int32_t begin, end;  // indices into walkSlots (which holds indices into ts), in walk order
+    int32_t from, to;    // stretch ends (2 * stretch + side), -1 for the boundary
   };
-  std::vector<Walk> walks;
   // The new chords: items in order, each a stretch or one touched slot.
   struct Item {
     int32_t stretch = -1, slot = -1;  // a stretch (listed a..b when forward), or one touched slot (ts index)
     bool forward = true;
   };
   struct Comp {
-    std::vector<Item> items;
+    int32_t begin = 0, end = 0;  // its items: [begin, end) of items
     bool closed = false;
     int32_t first = -1;  // its smallest touched slot (ts index)
   };
-  std::vector<Comp> comps;
-  std::vector<size_t> order;  // comps by smallest touched slot
-  std::vector<int32_t> compId;
-  std::unordered_set<int32_t> taken;  // hashed: a sheet operation re-ids thousands of chords
+  // Every list a rejoin fills, kept between rejoins (one per thread).
+  struct Scratch {
+    std::vector<Touched> ts;
+    std::vector<Stretch> stretches;
+    std::vector<std::pair<int32_t, int32_t>> byOld;
+    IdMap<int32_t> endIndex;
+    std::vector<int32_t> lengths, liveOld, at, walkSlots;
+    std::vector<uint8_t> contiguous, inChain, self, spliced, takenMark;
+    std::vector<Walk> walks;
+    std::vector<Item> items, right, left;
+    std::vector<Comp> comps;
+    std::vector<size_t> order;
+    std::vector<int32_t> compId, taken, stretchPieceAt, splicedIds;
+    std::vector<Piece> stretchPieces, pieces;
+    std::vector<Slot> run;
+  };
+  static Scratch& scratch() {
+    thread_local Scratch s;
+    return s;
+  }
+
+  DualTracker& tr;
+  const Complex& cx;
+  const std::vector<HexId>& touched;
+  const std::vector<int32_t>& ids;  // the changed chords, ascending
+  Scratch& sc = scratch();
+
+  std::vector<Touched>& ts = sc.ts;
+  std::vector<Stretch>& stretches = sc.stretches;
+  // The touched slots of each changed chord, found once (a sheet operation changes thousands of
+  // chords): (old chord, index into ts), sorted.
+  std::vector<std::pair<int32_t, int32_t>>& byOld = sc.byOld;
+  // The first stretch end (2 * stretch + side) at a slot leaving through a face, by endKey.
+  IdMap<int32_t>& endIndex = sc.endIndex;
+  // A slot's face along its axis is its low or high one: two keys per slot (int32 up to 357M hexes).
+  static int32_t endKey(Slot t, int face) { return int32_t(slotIndex(t) * 2 + size_t(face & 1)); }
+  std::vector<int32_t>&lengths = sc.lengths, &liveOld = sc.liveOld;  // per changed chord: its length, its live touched slots
+  std::vector<uint8_t>& contiguous = sc.contiguous;  // per changed chord: touched in one run away from its ends
+  std::vector<Walk>& walks = sc.walks;
+  std::vector<int32_t>& walkSlots = sc.walkSlots;
+  std::vector<Item>& items = sc.items;  // every comp's items, comp after comp
+  std::vector<Comp>& comps = sc.comps;
+  std::vector<size_t>& order = sc.order;  // comps by smallest touched slot
+  std::vector<int32_t>& compId = sc.compId;
+  // Old ids a new chord took: flags by chord id (cleared after the rejoin) and their list.
+  std::vector<uint8_t>& takenMark = sc.takenMark;
+  std::vector<int32_t>& taken = sc.taken;
   int32_t fresh = 0;
-  std::vector<uint8_t> self;     // per comp: 0/1 self-intersecting, 2 left for the reader
-  std::vector<uint8_t> spliced;  // per comp: what an in-place splice of one old chord gives
+  std::vector<uint8_t>& self = sc.self;        // per comp: 0/1 self-intersecting, 2 left for the reader
+  std::vector<uint8_t>& spliced = sc.spliced;  // per comp: what an in-place splice of one old chord gives
+
+  std::span<Item> itemsOf(const Comp& c) { return {items.data() + c.begin, size_t(c.end - c.begin)}; }
+  std::span<const Item> itemsOf(const Comp& c) const { return {items.data() + c.begin, size_t(c.end - c.begin)}; }
+  bool isTaken(int32_t id) const { return size_t(id) < takenMark.size() && takenMark[size_t(id)]; }
 
   ChordRejoin(DualTracker& tracker, const Complex& c, const std::vector<HexId>& hexes,
               const std::vector<int32_t>& changed)
-      : tr(tracker), cx(c), touched(hexes), ids(changed) {}
+      : tr(tracker), cx(c), touched(hexes), ids(changed) {
+    ts.clear();
+    stretches.clear();
+    byOld.clear();
+    endIndex.clear();
+    walks.clear();
+    walkSlots.clear();
+    items.clear();
+    comps.clear();
+    taken.clear();
+  }
+  ~ChordRejoin() {
+    for (int32_t id : taken) takenMark[size_t(id)] = 0;
+  }
+  ChordRejoin(const ChordRejoin&) = delete;
+  ChordRejoin& operator=(const ChordRejoin&) = delete;
   bool inIds(int32_t c) const { return c >= 0 && std::binary_search(ids.begin(), ids.end(), c); }
   // Small helpers of the hot walks, defined here (inline).
   int32_t indexOf(Slot s) const {
@@ -101,14 +149,13 @@ struct DualTracker::ChordRejoin {
   bool addStretch(int32_t id, int32_t a, int32_t b, int32_t len, bool closed);
   // The stretch end (2 * stretch + side) at slot s leaving through face, else -1.
   int32_t endAt(Slot s, int face) const {
-    auto it = endIndex.find(endKey(s, face));
-    return it == endIndex.end() ? -1 : it->second;
+    return endIndex.get(endKey(s, face), -1);
   }
   bool walkFromStretchEnds();
   bool walkFrom(size_t r, int side);
   void walkItems(int32_t w, bool forward, std::vector<Item>& out) const;
   bool chainStretches();
-  bool chainFrom(size_t r0, std::vector<uint8_t>& inChain);
+  bool chainFrom(size_t r0);
   bool walkLoneChords();
   bool walkLoneChord(size_t k);
   bool listAsRewalk();
@@ -117,7 +164,7 @@ struct DualTracker::ChordRejoin {
   bool splice(size_t ci) const;
   void findSplices();
   void commit(DualChange& change);
-  std::vector<Piece> piecesOf(const Comp& c, const std::vector<std::vector<Piece>>& stretchPieces);
+  void piecesOf(const Comp& c);
 };
 
 bool DualTracker::rejoinChords(const Complex& cx, const std::vector<HexId>& touched, const std::vector<int32_t>& ids,
@@ -178,7 +225,8 @@ bool DualTracker::ChordRejoin::cutStretchesOf(size_t k) {
   const int32_t id = ids[k], len = tr.chordLength(id);
   const bool closed = tr.dual_.chords[size_t(id)].closed;
   lengths[k] = len;
-  std::vector<int32_t> at;
+  std::vector<int32_t>& at = sc.at;
+  at.clear();
   for (auto it = std::lower_bound(byOld.begin(), byOld.end(), std::pair<int32_t, int32_t>{id, -1});
        it != byOld.end() && it->first == id; ++it) {
     const Touched& t = ts[size_t(it->second)];
@@ -217,7 +265,8 @@ bool DualTracker::ChordRejoin::walkFromStretchEnds() {
 // Walks from an end of stretch r through touched slots to the boundary or another stretch end.
 bool DualTracker::ChordRejoin::walkFrom(size_t r, int side) {
   const int32_t w = int32_t(walks.size());
-  walks.push_back({{}, int32_t(2 * r + size_t(side)), -1});
+  const int32_t begin = int32_t(walkSlots.size());
+  walks.push_back({begin, begin, int32_t(2 * r + size_t(side)), -1});
   stretches[r].link[side] = w;
   Slot cur = stretches[r].end[side];
   int exit = stretches[r].face[side];
@@ -234,42 +283,46 @@ bool DualTracker::ChordRejoin::walkFrom(size_t r, int side) {
       break;
     }
     Touched& t = ts[size_t(k)];
-    if (!t.live || t.run >= 0 || (t.old >= 0 && !inIds(t.old)) || walks[size_t(w)].slots.size() >= ts.size())
+    if (!t.live || t.run >= 0 || (t.old >= 0 && !inIds(t.old)) || walkSlots.size() - size_t(begin) >= ts.size())
       return false;
     t.run = w;
     t.entry = g.face;
-    walks[size_t(w)].slots.push_back(k);
+    walkSlots.push_back(k);
+    walks[size_t(w)].end = int32_t(walkSlots.size());
     cur = n;
     exit = tables::oppositeFace(g.face);
   }
-  tr.slotsTouched_ += walks[size_t(w)].slots.size();
+  tr.slotsTouched_ += size_t(walks[size_t(w)].end - begin);
   return true;
 }
 
 // ---- new chords: chains of stretches and walks, and chords of touched slots alone ----
 
 void DualTracker::ChordRejoin::walkItems(int32_t w, bool forward, std::vector<Item>& out) const {
-  const auto& sl = walks[size_t(w)].slots;
+  const Walk& wk = walks[size_t(w)];
   if (forward)
-    for (int32_t k : sl) out.push_back({-1, k, true});
+    for (int32_t i = wk.begin; i < wk.end; ++i) out.push_back({-1, walkSlots[size_t(i)], true});
   else
-    for (size_t i = sl.size(); i-- > 0;) out.push_back({-1, sl[i], false});
+    for (int32_t i = wk.end; i-- > wk.begin;) out.push_back({-1, walkSlots[size_t(i)], false});
 }
 
 bool DualTracker::ChordRejoin::chainStretches() {
-  std::vector<uint8_t> inChain(stretches.size(), 0);
+  sc.inChain.assign(stretches.size(), 0);
   for (size_t r0 = 0; r0 < stretches.size(); ++r0) {
-    if (inChain[r0]) continue;
-    if (!chainFrom(r0, inChain)) return false;
+    if (sc.inChain[r0]) continue;
+    if (!chainFrom(r0)) return false;
   }
   return true;
 }
 
 // The chain through stretch r0: rightwards from side 1, then leftwards from side 0 (listed reversed).
-bool DualTracker::ChordRejoin::chainFrom(size_t r0, std::vector<uint8_t>& inChain) {
+bool DualTracker::ChordRejoin::chainFrom(size_t r0) {
+  std::vector<uint8_t>& inChain = sc.inChain;
   inChain[r0] = 1;
   Comp c;
-  std::vector<Item> right, left;
+  std::vector<Item>&right = sc.right, &left = sc.left;
+  right.clear();
+  left.clear();
   int32_t end = int32_t(2 * r0 + 1);
   for (;;) {
     const int32_t w = stretches[size_t(end / 2)].link[end % 2];
@@ -293,9 +346,9 @@ bool DualTracker::ChordRejoin::chainFrom(size_t r0, std::vector<uint8_t>& inChai
     const int32_t w = stretches[size_t(end / 2)].link[end % 2];
     if (w < 0) break;
     const bool fwd = walks[size_t(w)].from == end;
-    std::vector<Item> part;
-    walkItems(w, fwd, part);
-    for (const Item& it : part) left.push_back({-1, it.slot, !it.forward});  // listed right to left
+    const size_t from = left.size();
+    walkItems(w, fwd, left);
+    for (size_t i = from; i < left.size(); ++i) left[i].forward = !left[i].forward;  // listed right to left
     const int32_t other = fwd ? walks[size_t(w)].to : walks[size_t(w)].from;
     if (other < 0) break;
     if (inChain[size_t(other / 2)]) return false;
@@ -303,10 +356,12 @@ bool DualTracker::ChordRejoin::chainFrom(size_t r0, std::vector<uint8_t>& inChai
     left.push_back({other / 2, -1, other % 2 == 1});
     end = other ^ 1;
   }
-  c.items.assign(left.rbegin(), left.rend());
-  c.items.push_back({int32_t(r0), -1, true});
-  c.items.insert(c.items.end(), right.begin(), right.end());
-  comps.push_back(std::move(c));
+  c.begin = int32_t(items.size());
+  items.insert(items.end(), left.rbegin(), left.rend());
+  items.push_back({int32_t(r0), -1, true});
+  items.insert(items.end(), right.begin(), right.end());
+  c.end = int32_t(items.size());
+  comps.push_back(c);
   return true;
 }
 
@@ -342,6 +397,7 @@ bool DualTracker::ChordRejoin::walkLoneChord(size_t k) {
   if (closed) cur = start;
   Comp c;
   c.closed = closed;
+  c.begin = int32_t(items.size());
   int exit = closed ? 2 * start.axis + 1 : tables::oppositeFace(back);
   const int32_t ci = int32_t(comps.size());
   bool returned = false;
@@ -350,7 +406,7 @@ bool DualTracker::ChordRejoin::walkLoneChord(size_t k) {
     Touched& t = ts[size_t(i)];
     if (!t.live || t.run >= 0 || t.comp >= 0 || (t.old >= 0 && !inIds(t.old))) return false;
     t.comp = ci;
-    c.items.push_back({-1, i, true});
+    items.push_back({-1, i, true});
     Gluing g = cx.gluing(cur.hex, exit);
     if (g.boundary()) break;
     cur = {g.hex, tables::axisOfFace(g.face)};
@@ -365,8 +421,9 @@ bool DualTracker::ChordRejoin::walkLoneChord(size_t k) {
   }
   if (returned != closed) return false;
   c.first = int32_t(k);
-  tr.slotsTouched_ += c.items.size();
-  comps.push_back(std::move(c));
+  c.end = int32_t(items.size());
+  tr.slotsTouched_ += size_t(c.end - c.begin);
+  comps.push_back(c);
   return true;
 }
 
@@ -376,23 +433,24 @@ bool DualTracker::ChordRejoin::listAsRewalk() {
   for (size_t ci = 0; ci < comps.size(); ++ci) {
     Comp& c = comps[ci];
     if (c.first >= 0) continue;  // a chord of touched slots alone: walked in order
-    size_t at = c.items.size();
-    for (size_t i = 0; i < c.items.size(); ++i)
-      if (c.items[i].slot >= 0 && (at == c.items.size() || c.items[i].slot < c.items[at].slot)) at = i;
-    if (at == c.items.size()) return false;
-    for (const Item& it : c.items)
+    const std::span<Item> cs = itemsOf(c);
+    size_t at = cs.size();
+    for (size_t i = 0; i < cs.size(); ++i)
+      if (cs[i].slot >= 0 && (at == cs.size() || cs[i].slot < cs[at].slot)) at = i;
+    if (at == cs.size()) return false;
+    for (const Item& it : cs)
       if (it.slot >= 0) ts[size_t(it.slot)].comp = int32_t(ci);
     // The slot before it in this listing is across its low face when the listing runs along the
     // walk that met it and it entered through its low face, or against it and through the high one.
-    const Touched& t = ts[size_t(c.items[at].slot)];
-    const bool lowBefore = ((t.entry & 1) == 0) == c.items[at].forward;
+    const Touched& t = ts[size_t(cs[at].slot)];
+    const bool lowBefore = ((t.entry & 1) == 0) == cs[at].forward;
     if (!lowBefore) {
-      std::reverse(c.items.begin(), c.items.end());
-      for (Item& it : c.items) it.forward = !it.forward;
-      at = c.items.size() - 1 - at;
+      std::reverse(cs.begin(), cs.end());
+      for (Item& it : cs) it.forward = !it.forward;
+      at = cs.size() - 1 - at;
     }
-    if (c.closed) std::rotate(c.items.begin(), c.items.begin() + std::ptrdiff_t(at), c.items.end());
-    c.first = c.items[c.closed ? 0 : at].slot;
+    if (c.closed) std::rotate(cs.begin(), cs.begin() + std::ptrdiff_t(at), cs.end());
+    c.first = cs[c.closed ? 0 : at].slot;
   }
   return true;
 }
@@ -410,11 +468,15 @@ void DualTracker::ChordRejoin::chooseIds() {
   fresh = int32_t(tr.dual_.chords.size());
   for (size_t ci : order) {
     int32_t best = -1;
-    for (const Item& it : comps[ci].items) {
+    for (const Item& it : itemsOf(comps[ci])) {
       const int32_t o = oldOf(it);
-      if (o >= 0 && (best < 0 || o < best) && !taken.count(o)) best = o;
+      if (o >= 0 && (best < 0 || o < best) && !isTaken(o)) best = o;
     }
-    if (best >= 0) taken.insert(best);
+    if (best >= 0) {
+      if (takenMark.size() <= size_t(best)) takenMark.resize(std::max(size_t(best) + 1, tr.dual_.chords.size()), 0);
+      takenMark[size_t(best)] = 1;
+      taken.push_back(best);
+    }
     compId[ci] = best >= 0 ? best : fresh++;
   }
 }
@@ -431,7 +493,7 @@ void DualTracker::ChordRejoin::markSelfIntersections() {
   for (size_t ci = 0; ci < comps.size(); ++ci) {
     int32_t one = -1;
     bool several = false;
-    for (const Item& it : comps[ci].items)
+    for (const Item& it : itemsOf(comps[ci]))
       if (it.stretch >= 0) {
         const int32_t o = stretches[size_t(it.stretch)].chord;
         several = several || (one >= 0 && o != one);
@@ -447,19 +509,20 @@ bool DualTracker::ChordRejoin::splice(size_t ci) const {
   const Comp& c = comps[ci];
   const int32_t id = compId[ci];
   const size_t k = size_t(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
-  if (c.closed || k == ids.size() || ids[k] != id || !contiguous[k] || c.items.size() < 3) return false;
-  const Item &head = c.items.front(), &tail = c.items.back();
+  const std::span<const Item> cs = itemsOf(c);
+  if (c.closed || k == ids.size() || ids[k] != id || !contiguous[k] || cs.size() < 3) return false;
+  const Item &head = cs.front(), &tail = cs.back();
   if (head.stretch < 0 || tail.stretch < 0 || !head.forward || !tail.forward ||
       stretches[size_t(head.stretch)].chord != id || stretches[size_t(head.stretch)].a != 0 ||
       stretches[size_t(tail.stretch)].chord != id || stretches[size_t(tail.stretch)].b != lengths[k] - 1)
     return false;
   int32_t kept = 0;
-  for (size_t i = 1; i + 1 < c.items.size(); ++i) {
-    const Item& it = c.items[i];
+  for (size_t i = 1; i + 1 < cs.size(); ++i) {
+    const Item& it = cs[i];
     if (it.slot < 0 || (ts[size_t(it.slot)].old != id && ts[size_t(it.slot)].old != -1)) return false;
     kept += ts[size_t(it.slot)].old == id;
   }
-  if (kept != liveOld[k] || c.items.size() - 2 >= 3 * touched.size()) return false;
+  if (kept != liveOld[k] || cs.size() - 2 >= 3 * touched.size()) return false;
   return tr.chordSelf_[size_t(id)] == 0 || (tr.chordSelf_[size_t(id)] == 2 && !tr.chordSelfIntersects(id));
 }
 
@@ -470,52 +533,57 @@ void DualTracker::ChordRejoin::findSplices() {
 
 // ---- commit: stretches keep their pieces, consecutive touched slots get new labels ----
 
-// A new chord's pieces: its stretches' pieces (reversed when listed backwards), and a new label for
-// every run of consecutive touched slots.
-std::vector<DualTracker::Piece> DualTracker::ChordRejoin::piecesOf(
-    const Comp& c, const std::vector<std::vector<Piece>>& stretchPieces) {
-  std::vector<Piece> pieces;
-  std::vector<Slot> run;
+// A new chord's pieces (into sc.pieces): its stretches' pieces (reversed when listed backwards),
+// and a new label for every run of consecutive touched slots.
+void DualTracker::ChordRejoin::piecesOf(const Comp& c) {
+  std::vector<Piece>& pieces = sc.pieces;
+  pieces.clear();
+  std::vector<Slot>& run = sc.run;
+  run.clear();
   auto flush = [&] {
     if (run.empty()) return;
     const int32_t len = int32_t(run.size());
     tr.slotsTouched_ += run.size();
-    pieces.push_back({tr.newChordLabel(std::move(run)), 0, len, false});
+    pieces.push_back({tr.newChordLabel(run), 0, len, false});
     run.clear();
   };
-  for (const Item& it : c.items) {
+  for (const Item& it : itemsOf(c)) {
     if (it.slot >= 0) {
       run.push_back(ts[size_t(it.slot)].slot);
       continue;
     }
     flush();
-    const std::vector<Piece>& ps = stretchPieces[size_t(it.stretch)];
+    const Piece* b = sc.stretchPieces.data() + sc.stretchPieceAt[size_t(it.stretch)];
+    const Piece* e = sc.stretchPieces.data() + sc.stretchPieceAt[size_t(it.stretch) + 1];
     if (it.forward) {
-      pieces.insert(pieces.end(), ps.begin(), ps.end());
+      pieces.insert(pieces.end(), b, e);
     } else {
-      for (size_t i = ps.size(); i-- > 0;) pieces.push_back({ps[i].label, ps[i].lo, ps[i].hi, !ps[i].reversed});
+      for (const Piece* p = e; p-- > b;) pieces.push_back({p->label, p->lo, p->hi, !p->reversed});
     }
   }
   flush();
-  return pieces;
 }
 
 void DualTracker::ChordRejoin::commit(DualChange& change) {
   Dual& d = tr.dual_;
-  std::vector<std::vector<Piece>> stretchPieces(stretches.size());
+  // Each stretch's pieces: [stretchPieceAt[r], stretchPieceAt[r + 1]) of stretchPieces.
+  sc.stretchPieces.clear();
+  sc.stretchPieceAt.assign(1, 0);
   for (size_t r = 0; r < stretches.size(); ++r) {
     const Stretch& st = stretches[r];
     const int32_t len = lengths[size_t(std::lower_bound(ids.begin(), ids.end(), st.chord) - ids.begin())];
-    tr.sliceChord(st.chord, st.a, std::min(st.b, len - 1), stretchPieces[r]);
-    if (st.b >= len) tr.sliceChord(st.chord, 0, st.b - len, stretchPieces[r]);
+    tr.sliceChord(st.chord, st.a, std::min(st.b, len - 1), sc.stretchPieces);
+    if (st.b >= len) tr.sliceChord(st.chord, 0, st.b - len, sc.stretchPieces);
+    sc.stretchPieceAt.push_back(int32_t(sc.stretchPieces.size()));
   }
   tr.dropPieces(ids);
   for (const Touched& t : ts)
     if (!t.live) d.chordLabel[size_t(t.slot.hex)][size_t(t.slot.axis)] = -1;
   tr.growChordIds(size_t(fresh));
-  std::vector<int32_t> splicedIds;
+  std::vector<int32_t>& splicedIds = sc.splicedIds;
+  splicedIds.clear();
   for (size_t ci : order) {
-    std::vector<Piece> pieces = piecesOf(comps[ci], stretchPieces);
+    piecesOf(comps[ci]);
     const int32_t id = compId[ci];
     Chord& ch = d.chords[size_t(id)];
     ch.id = id;
@@ -523,7 +591,7 @@ void DualTracker::ChordRejoin::commit(DualChange& change) {
     ch.closed = comps[ci].closed;
     tr.chordSelf_[size_t(id)] = self[ci];
     if (self[ci] != 2) ch.selfIntersecting = self[ci] != 0;
-    tr.setChordPieces(id, std::move(pieces));
+    tr.setChordPieces(id, sc.pieces);
     if (!std::binary_search(ids.begin(), ids.end(), id))
       change.chordsCreated.push_back(id);
     else if (spliced[ci])
@@ -534,7 +602,7 @@ void DualTracker::ChordRejoin::commit(DualChange& change) {
   std::sort(splicedIds.begin(), splicedIds.end());
   change.chordsChanged.insert(change.chordsChanged.begin(), splicedIds.begin(), splicedIds.end());
   for (int32_t id : ids)
-    if (!taken.count(id)) {
+    if (!isTaken(id)) {
       Chord& ch = d.chords[size_t(id)];
       ch.alive = false;
       ch.slots.clear();

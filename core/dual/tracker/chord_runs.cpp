@@ -70,8 +70,9 @@ void DualTracker::sliceChord(int32_t id, int32_t a, int32_t b, std::vector<Piece
   }
 }
 
-// A label for a run of slots, written on them with their places.
-int32_t DualTracker::newChordLabel(std::vector<Slot> run) {
+// A label for a run of slots, written on them with their places (its run is copied into the
+// room a released label left, when there is one: see releaseLabels).
+int32_t DualTracker::newChordLabel(std::span<const Slot> run) {
   int32_t l;
   if (!freeChordLabels_.empty()) {
     l = freeChordLabels_.back();
@@ -86,7 +87,7 @@ int32_t DualTracker::newChordLabel(std::vector<Slot> run) {
     dual_.chordLabel[size_t(run[i].hex)][size_t(run[i].axis)] = l;
     dual_.chordPlace[slotIndex(run[i])] = int32_t(i);
   }
-  runs_[size_t(l)] = std::move(run);
+  runs_[size_t(l)].assign(run.begin(), run.end());
   dual_.labelCuts[size_t(l)].clear();
   dual_.labelChord[size_t(l)] = -1;
   return l;
@@ -117,7 +118,12 @@ void DualTracker::releaseLabels() {
   dropped_.erase(std::unique(dropped_.begin(), dropped_.end()), dropped_.end());
   for (int32_t l : dropped_)
     if (dual_.labelCuts[size_t(l)].empty()) {
-      runs_[size_t(l)] = std::vector<Slot>();
+      // A short run keeps its room for the label's next use (no allocation per cut); a long one is freed.
+      constexpr size_t kKeptRoom = 64;
+      if (runs_[size_t(l)].capacity() > kKeptRoom)
+        runs_[size_t(l)] = std::vector<Slot>();
+      else
+        runs_[size_t(l)].clear();
       dual_.labelChord[size_t(l)] = -1;
       freeChordLabels_.push_back(l);
     }
@@ -126,8 +132,9 @@ void DualTracker::releaseLabels() {
 
 // Lists chord id as these pieces (joined where they continue one another). A chord cut and joined
 // so often that it has many pieces is given one run again (its slots re-labelled: a rare, whole pass).
-void DualTracker::setChordPieces(int32_t id, std::vector<Piece> pieces) {
-  std::vector<Piece> joined;
+void DualTracker::setChordPieces(int32_t id, const std::vector<Piece>& pieces) {
+  std::vector<Piece>& joined = pieces_[size_t(id)];  // emptied by dropPieces (its room is reused)
+  joined.clear();
   for (const Piece& p : pieces) {
     if (!joined.empty()) {
       Piece& q = joined.back();
@@ -146,10 +153,9 @@ void DualTracker::setChordPieces(int32_t id, std::vector<Piece> pieces) {
     for (const Piece& p : joined) dropped_.push_back(p.label);  // they lose these places
     slotsTouched_ += run.size();
     const int32_t n = int32_t(run.size());
-    joined.assign(1, Piece{newChordLabel(std::move(run)), 0, n, false});
+    joined.assign(1, Piece{newChordLabel(run), 0, n, false});
   }
   for (const Piece& p : joined) cutLabel(p.label, p.lo, p.hi, id, true);
-  pieces_[size_t(id)] = std::move(joined);
   if (!unsettledMark_[size_t(id)]) {
     unsettledMark_[size_t(id)] = 1;
     unsettled_.push_back(id);

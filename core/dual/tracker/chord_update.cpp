@@ -26,7 +26,9 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
 // The chords through the touched slots that the edit changed, ascending. The touched slots are
 // grouped by chord, so each chord reads only its own.
 std::vector<int32_t> DualTracker::changedChords(const Complex& cx, const std::vector<HexId>& touched) {
-  std::vector<std::pair<int32_t, Slot>> through;
+  thread_local std::vector<std::pair<int32_t, Slot>> through;  // scratch kept between updates
+  thread_local std::vector<Slot> own;
+  through.clear();
   for (HexId h : touched)
     for (int a = 0; a < 3; ++a) {
       const int32_t c = dual_.chordAt(h, a);
@@ -45,7 +47,6 @@ std::vector<int32_t> DualTracker::changedChords(const Complex& cx, const std::ve
     std::sort(through.begin(), through.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   }
   std::vector<int32_t> ids;
-  std::vector<Slot> own;
   for (size_t i = 0, j = 0; i < through.size(); i = j) {
     const int32_t id = through[i].first;
     own.clear();

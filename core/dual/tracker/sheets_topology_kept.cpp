@@ -4,8 +4,10 @@
 // explored, and shares move with the edit while each sheet's Euler characteristic stays.
 // Refuses, changing nothing, when a component touches two old sheets (a merge): update() then
 // runs the lockstep flood.
-// Owns nothing between updates; marks front_ with component numbers while it runs (cleared after).
+// Owns nothing between updates but its scratch lists (per thread, emptied at the start of each
+// update); marks front_ with component numbers while it runs (cleared after).
 #include <algorithm>
+#include <span>
 
 #include "dual/dual_tracker.hpp"
 #include "dual/tracker/slots.hpp"
@@ -19,18 +21,40 @@ struct DualTracker::TopologyKept {
   DualTracker& t;
   const Complex& cx;
   const std::vector<HexId>& touched;
-  const size_t cap;                         // hexes the dual had labels for before the edit
-  std::vector<std::vector<Slot>> comps;     // components of the new slots
-  std::vector<std::vector<int32_t>> joins;  // per component: the old sheets it touches
-  std::vector<int32_t> changed;             // old sheets that lost or gained slots
+  const size_t cap;  // hexes the dual had labels for before the edit
+  // Every list an update fills, kept between updates (one per thread).
+  struct Scratch {
+    std::vector<Slot> compSlots, run;
+    std::vector<size_t> compAt;
+    std::vector<int32_t> joins, changed;
+    std::vector<std::pair<int32_t, Slot>> dead;
+    std::vector<HexId> born;
+  };
+  static Scratch& scratch() {
+    thread_local Scratch s;
+    return s;
+  }
+  Scratch& sc = scratch();
+  // Components of the new slots: component ci is compSlots[compAt[ci], compAt[ci + 1]).
+  std::vector<Slot>& compSlots = sc.compSlots;
+  std::vector<size_t>& compAt = sc.compAt;
+  std::vector<int32_t>& joins = sc.joins;    // per component: the old sheet it touches, or -1
+  std::vector<int32_t>& changed = sc.changed;  // old sheets that lost or gained slots
 
   TopologyKept(DualTracker& tracker, const Complex& c, const std::vector<HexId>& hexes)
-      : t(tracker), cx(c), touched(hexes), cap(tracker.dual_.sheetLabel.size()) {}
+      : t(tracker), cx(c), touched(hexes), cap(tracker.dual_.sheetLabel.size()) {
+    compSlots.clear();
+    compAt.assign(1, 0);
+    joins.clear();
+    changed.clear();
+  }
+  size_t numComps() const { return joins.size(); }
+  std::span<const Slot> comp(size_t ci) const { return {compSlots.data() + compAt[ci], compAt[ci + 1] - compAt[ci]}; }
   bool findNewComponents();
   void clearMarks();
   void dropDeadSlots();
-  void formNewSheet(const std::vector<Slot>& comp, DualChange& change);
-  void joinOldSheet(const std::vector<Slot>& comp, int32_t id);
+  void formNewSheet(std::span<const Slot> comp, DualChange& change);
+  void joinOldSheet(std::span<const Slot> comp, int32_t id);
   void labelNewComponents(DualChange& change);
   void reportChanges(DualChange& change);
 };
@@ -58,40 +82,43 @@ bool DualTracker::TopologyKept::findNewComponents() {
     if (!cx.isHex(h)) continue;
     for (int a = 0; a < 3; ++a) {
       if (t.dual_.sheetLabel[size_t(h)][size_t(a)] >= 0 || front[slotIndex({h, a})]) continue;
-      size_t ci = comps.size();
-      comps.push_back({{h, a}});
-      joins.emplace_back();
+      const size_t ci = joins.size();
+      compSlots.push_back({h, a});
+      joins.push_back(-1);
       front[slotIndex({h, a})] = int32_t(ci + 1);
-      for (size_t i = 0; i < comps[ci].size(); ++i) {
-        Slot cur = comps[ci][i];
+      bool merges = false;
+      for (size_t i = compAt[ci]; i < compSlots.size(); ++i) {
+        const Slot cur = compSlots[i];
         for (int f : kParallelFaces[size_t(cur.axis)]) {
           Slot n;
           int flip;
           if (!sheetNeighbour(cx, cur, f, n, flip)) continue;
           int32_t id = size_t(n.hex) < cap ? t.dual_.sheetAt(n.hex, n.axis) : -1;
           if (id >= 0) {
-            if (std::find(joins[ci].begin(), joins[ci].end(), id) == joins[ci].end()) joins[ci].push_back(id);
+            merges = merges || (joins[ci] >= 0 && joins[ci] != id);
+            if (joins[ci] < 0) joins[ci] = id;
           } else if (!front[slotIndex(n)]) {
             front[slotIndex(n)] = int32_t(ci + 1);
-            comps[ci].push_back(n);
+            compSlots.push_back(n);
           }
         }
       }
-      if (joins[ci].size() > 1) return false;
+      compAt.push_back(compSlots.size());
+      if (merges) return false;
     }
   }
   return true;
 }
 
 void DualTracker::TopologyKept::clearMarks() {
-  for (const auto& comp : comps)
-    for (Slot s : comp) t.front_[slotIndex(s)] = 0;
+  for (Slot s : compSlots) t.front_[slotIndex(s)] = 0;
 }
 
 // The slots of dead hexes lose their labels and orientations, and leave their sheets' lists
 // (when next read); their pairs are uncounted.
 void DualTracker::TopologyKept::dropDeadSlots() {
-  std::vector<std::pair<int32_t, Slot>> dead;
+  std::vector<std::pair<int32_t, Slot>>& dead = sc.dead;
+  dead.clear();
   for (HexId h : touched) {
     if (cx.isHex(h) || size_t(h) >= cap) continue;
     t.countSelfHex(h, -1);
@@ -116,7 +143,7 @@ void DualTracker::TopologyKept::dropDeadSlots() {
 }
 
 // A component that touches no old sheet is a new sheet, flooded (labelled, oriented, measured) whole.
-void DualTracker::TopologyKept::formNewSheet(const std::vector<Slot>& comp, DualChange& change) {
+void DualTracker::TopologyKept::formNewSheet(std::span<const Slot> comp, DualChange& change) {
   Dual& d = t.dual_;
   const int32_t id = int32_t(d.sheets.size());
   const int32_t label = t.newLabel(id);
@@ -136,13 +163,14 @@ void DualTracker::TopologyKept::formNewSheet(const std::vector<Slot>& comp, Dual
 }
 
 // A component that touches one old sheet joins it with its first label, oriented from its neighbours.
-void DualTracker::TopologyKept::joinOldSheet(const std::vector<Slot>& comp, int32_t id) {
+void DualTracker::TopologyKept::joinOldSheet(std::span<const Slot> comp, int32_t id) {
   const int32_t label = t.labels_[size_t(id)].front();
   for (Slot s : comp) t.setLabel(s, label);
-  std::vector<Slot> run = comp;
+  std::vector<Slot> run(comp.begin(), comp.end());
   std::sort(run.begin(), run.end());
   t.dual_.sheets[size_t(id)].slots.add(std::move(run));
-  t.propagateSigns(cx, comp);
+  sc.run.assign(comp.begin(), comp.end());
+  t.propagateSigns(cx, sc.run);
   t.sheetSlotsTouched_ += comp.size();
   changed.push_back(id);
 }
@@ -150,13 +178,14 @@ void DualTracker::TopologyKept::joinOldSheet(const std::vector<Slot>& comp, int3
 // Labels the new components (join the one sheet they touch, or form a new sheet), then counts the
 // pairs of the new hexes (all three of their slots are new).
 void DualTracker::TopologyKept::labelNewComponents(DualChange& change) {
-  std::vector<HexId> born;
-  for (size_t ci = 0; ci < comps.size(); ++ci) {
-    for (Slot s : comps[ci]) born.push_back(s.hex);
-    if (joins[ci].empty())
-      formNewSheet(comps[ci], change);
+  std::vector<HexId>& born = sc.born;
+  born.clear();
+  for (size_t ci = 0; ci < numComps(); ++ci) {
+    for (Slot s : comp(ci)) born.push_back(s.hex);
+    if (joins[ci] < 0)
+      formNewSheet(comp(ci), change);
     else
-      joinOldSheet(comps[ci], joins[ci][0]);
+      joinOldSheet(comp(ci), joins[ci]);
   }
   std::sort(born.begin(), born.end());
   born.erase(std::unique(born.begin(), born.end()), born.end());
