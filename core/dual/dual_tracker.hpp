@@ -157,7 +157,7 @@ class DualTracker {
   void checkShares(const Complex& cx) const;
 
   // ---- sheet labels, orientations and pair counts (tracker/sheet_labels.cpp) ----
-  void propagateSigns(const Complex& cx, const std::vector<Slot>& unsigned_);
+  void propagateSigns(const Complex& cx, std::span<const Slot> unsigned_);
   void countSelfHexes(const std::vector<HexId>& hexes, int sign);
   void countSelfHex(HexId h, int sign);
   void countPair(int32_t la, int32_t lb, int32_t n);

@@ -163,7 +163,7 @@ void DualTracker::mergeSheet(int32_t x, int32_t keep, bool flip) {
 
 // Orients slots without an orientation from oriented neighbours on the same sheet (new slots
 // joining an orientable sheet).
-void DualTracker::propagateSigns(const Complex& cx, const std::vector<Slot>& slots) {
+void DualTracker::propagateSigns(const Complex& cx, std::span<const Slot> slots) {
   std::vector<int8_t>& sign = flooder_.signs();
   for (Slot s : slots) sign[slotIndex(s)] = 0;
   for (bool progress = true; progress;) {

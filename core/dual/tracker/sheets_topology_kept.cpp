@@ -24,7 +24,7 @@ struct DualTracker::TopologyKept {
   const size_t cap;  // hexes the dual had labels for before the edit
   // Every list an update fills, kept between updates (one per thread).
   struct Scratch {
-    std::vector<Slot> compSlots, run;
+    std::vector<Slot> compSlots;
     std::vector<size_t> compAt;
     std::vector<int32_t> joins, changed;
     std::vector<std::pair<int32_t, Slot>> dead;
@@ -169,8 +169,7 @@ void DualTracker::TopologyKept::joinOldSheet(std::span<const Slot> comp, int32_t
   std::vector<Slot> run(comp.begin(), comp.end());
   std::sort(run.begin(), run.end());
   t.dual_.sheets[size_t(id)].slots.add(std::move(run));
-  sc.run.assign(comp.begin(), comp.end());
-  t.propagateSigns(cx, sc.run);
+  t.propagateSigns(cx, comp);
   t.sheetSlotsTouched_ += comp.size();
   changed.push_back(id);
 }
