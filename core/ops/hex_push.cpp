@@ -85,7 +85,15 @@ OpResult hexPush(Complex& cx, QuadSide q) {
   r.createdHexes = created;
   r.createdVertices.assign(N.begin(), N.end());
   r.inverse = makeStep(OpKind::HexPull, QuadSide{created[0], fA});
-  tx.commit(r, withNeighbours(cx, created));
+  // Valid by construction (so no link walks): the precheck leaves A and B sharing one quad and
+  // only its 4 vertices, so the region R = A + B has 12 distinct vertices, no two of its faces
+  // glued to each other but q, and no two of its edges the same edge: R is an embedded ball.
+  // replaceHexes swaps it for the 2-6 flip's 6 hexes, a ball with the same boundary quads, each
+  // glued to the same outside face (or left on the boundary) with the same vertices. A vertex v on
+  // R's boundary had a valid link made of the part outside R and a disk inside R; the new inside
+  // part is again a disk with the same boundary circle, so v's link keeps its topology. The 4 new
+  // vertices lie inside the 6 hexes, each with a sphere link (4 corners, a tetrahedron's boundary).
+  tx.commitValidByConstruction(r, withNeighbours(cx, created));
   return r;
 }
 

@@ -47,7 +47,14 @@ OpResult pillow(Complex& cx, QuadSide q) {
   r.createdHexes = {X, Y};
   r.createdVertices.assign(N.begin(), N.end());
   r.inverse = makeStep(OpKind::Unpillow, X);
-  tx.commit(r, {A, B, X, Y});
+  // Valid by construction (so no link walks): A != B (a quad glued to another face of its own hex
+  // would carry the same 4 of its 8 distinct vertices) and q's 4 vertices are distinct. Each new
+  // vertex N_p has the star {X, Y}: two corners glued along all three faces, a sphere link. Each
+  // Q_p keeps its star and gains X's and Y's corners, glued to each other along their two side
+  // faces and to A and B along the third: in Q_p's link the edge that was q is cut and a bigon of
+  // two triangles is sewn in, which leaves a sphere a sphere and a disk a disk. Every gluing is
+  // made by glueByVertices, so glued faces carry the same vertices.
+  tx.commitValidByConstruction(r, {A, B, X, Y});
   return r;
 }
 

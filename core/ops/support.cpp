@@ -194,6 +194,20 @@ void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) {
     cx_.validateAround(touched);
 #endif
   }
+  finish(r);
+}
+
+void Transaction::commitValidByConstruction(OpResult& r, const std::vector<HexId>& touched) {
+  if (!DeferValidation::active()) {
+    requireManifoldVertices(cx_, touched, r.op ? opName(*r.op) : "operation");
+#ifdef HEXDUAL_CHECK_INVARIANTS
+    cx_.validate();
+#endif
+  }
+  finish(r);
+}
+
+void Transaction::finish(OpResult& r) {
   r.dV = cx_.numVertices() - v0_;
   r.dF = cx_.numQuads() - f0_;
   r.dH = cx_.numHexes() - h0_;

@@ -116,8 +116,15 @@ class Transaction {
   // The same for edits whose validity is only known afterwards: a broken invariant rolls back
   // and rejects as "<op>: <why> (<the invariant>)".
   void commitIfValid(OpResult& r, const std::vector<HexId>& touched, const std::string& op, const std::string& why);
+  // The same for an edit that is valid whenever the complex was valid before it and the
+  // operation's precheck passed: a proof that sits with the operation (pillow.cpp, hex_push.cpp),
+  // not a test run on every step. It still refuses non-manifold vertices; debug builds
+  // (HEXDUAL_CHECK_INVARIANTS) still validate everything, and tests/test_valid_by_construction.cpp
+  // checks the claim on random steps.
+  void commitValidByConstruction(OpResult& r, const std::vector<HexId>& touched);
 
  private:
+  void finish(OpResult& r);
   Complex& cx_;
   bool open_ = true;
   int64_t v0_, f0_, h0_;
