@@ -141,7 +141,10 @@ void SheetFlooder::markEdge(const Complex& cx, HexId h, int e, bool closed) {
 }
 
 int8_t slotShare(const Complex& cx, HexId h, int a, uint16_t marks) {
-  int s = 2 + 2 * __builtin_popcount((marks >> (4 * a)) & 0xFu);
+  // The set bits of a nibble by table: baseline x86-64 has no popcnt instruction, and
+  // __builtin_popcount there is a call into libgcc (0.8% of a random sequence's instructions).
+  constexpr std::array<uint8_t, 16> kNibbleBits{0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+  int s = 2 + 2 * kNibbleBits[(marks >> (4 * a)) & 0xFu];
   for (int f : kParallelFaces[size_t(a)]) s -= cx.isBoundary({h, f}) ? 2 : 1;
   return int8_t(s);
 }

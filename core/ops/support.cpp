@@ -280,9 +280,15 @@ namespace hexdual::ops {
 std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::vector<HexId>& removed,
                                 const std::vector<std::array<VertexId, 8>>& added) {
   using Key = std::array<VertexId, 4>;
+  // Scratch kept between calls (every hex push runs this): no allocation once warm but the result.
+  thread_local std::vector<std::pair<Key, QuadSide>> outside, open;
+  thread_local std::vector<Key> formerBoundary;
+  thread_local std::vector<int32_t> firstOf, nextOf, lastOf;
+  thread_local std::vector<uint8_t> taken;
+  thread_local std::vector<QuadSide> hits;
   auto isRemoved = [&](HexId h) { return std::find(removed.begin(), removed.end(), h) != removed.end(); };
-  std::vector<std::pair<Key, QuadSide>> outside;
-  std::vector<Key> formerBoundary;
+  outside.clear();
+  formerBoundary.clear();
   for (HexId h : removed)
     for (int f = 0; f < 6; ++f) {
       Gluing g = cx.gluing(h, f);
@@ -293,21 +299,47 @@ std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::v
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);
   for (HexId h : removed) cx.removeHex(h);
   std::vector<HexId> created;
+  created.reserve(added.size());
   for (const auto& v : added) created.push_back(cx.addHex(v));
-  std::vector<std::pair<Key, QuadSide>> open;
-  open.reserve(6 * created.size());
+  open.clear();
   for (HexId h : created)
     for (int f = 0; f < 6; ++f) open.push_back({faceVertexSet(cx, h, f), {h, f}});
-  // Faces are taken in list order and marked, not erased: the same hits in the same order.
-  std::vector<uint8_t> taken(open.size(), 0);
-  std::vector<QuadSide> hits;
-  auto sameKey = [](const Key& a, const Key& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2] && a[3] == b[3]; };
+  // The new faces by key: an open-addressing table of each key's first face, and each face's next
+  // with the same key, in list order. Faces are taken in list order and marked, not erased: the
+  // same hits in the same order as a scan of the list.
+  auto hashOf = [](const Key& k) {
+    uint64_t x = uint64_t(uint32_t(k[0])) << 32 | uint32_t(k[1]);
+    uint64_t y = uint64_t(uint32_t(k[2])) << 32 | uint32_t(k[3]);
+    return (x * 0x9E3779B97F4A7C15ull) ^ (y * 0xC2B2AE3D27D4EB4Full);
+  };
+  size_t cap = 16;
+  while (cap < 2 * open.size()) cap *= 2;
+  const size_t mask = cap - 1;
+  firstOf.assign(cap, -1);
+  nextOf.assign(open.size(), -1);
+  lastOf.assign(open.size(), -1);
+  auto slotOfKey = [&](const Key& k) {  // the table entry of k, or the empty one where it belongs
+    size_t i = size_t(hashOf(k) >> 40) & mask;
+    while (firstOf[i] >= 0 && open[size_t(firstOf[i])].first != k) i = (i + 1) & mask;
+    return i;
+  };
+  for (size_t j = 0; j < open.size(); ++j) {
+    const size_t i = slotOfKey(open[j].first);
+    if (firstOf[i] < 0) {
+      firstOf[i] = int32_t(j);
+    } else {
+      const size_t head = size_t(firstOf[i]);
+      nextOf[size_t(lastOf[head] < 0 ? head : size_t(lastOf[head]))] = int32_t(j);
+      lastOf[head] = int32_t(j);
+    }
+  }
+  taken.assign(open.size(), 0);
   auto take = [&](const Key& k) {
     hits.clear();
-    for (size_t i = 0; i < open.size(); ++i)
-      if (!taken[i] && sameKey(open[i].first, k)) {
-        taken[i] = 1;
-        hits.push_back(open[i].second);
+    for (int32_t j = firstOf[slotOfKey(k)]; j >= 0; j = nextOf[size_t(j)])
+      if (!taken[size_t(j)]) {
+        taken[size_t(j)] = 1;
+        hits.push_back(open[size_t(j)].second);
       }
   };
   for (const auto& [key, side] : outside) {
