@@ -47,7 +47,8 @@ OpStep parseOpStep(std::string_view text, size_t offset) {
   OpStep step;
   step.position = offset;
   size_t i = 0;
-  std::vector<std::pair<std::string_view, size_t>> tokens;
+  thread_local std::vector<std::pair<std::string_view, size_t>> tokens;  // scratch: no allocation once warm
+  tokens.clear();
   while (i < text.size()) {
     if (text[i] == ' ') {
       if (i == 0 || i + 1 == text.size() || text[i + 1] == ' ') fail(offset + i, "stray space", text);
@@ -68,6 +69,7 @@ OpStep parseOpStep(std::string_view text, size_t offset) {
     fail(tokens[0].second, std::string(spec->name) + " takes " + (list ? "one or more" : std::to_string(want)) +
                                " argument(s), not " + std::to_string(tokens.size() - 1),
          text);
+  step.args.reserve(tokens.size() - 1);
   for (size_t k = 1; k < tokens.size(); ++k) {
     auto [tok, pos] = tokens[k];
     OpArg::Kind kind = list ? spec->args[0] : spec->args[k - 1];
