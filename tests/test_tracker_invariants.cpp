@@ -210,6 +210,12 @@ TEST_CASE("dual tracker: edge marks and shares hold when only the edited edges a
       if (std::optional<OpResult> r = tryApplyStep(cx, text)) {
         tracker.update(cx, r->edits, keepsSheetTopology(*r));
         REQUIRE_NOTHROW(tracker.checkInvariants(cx));
+        // update() reads a short log's hexes and edges in one sort: the same lists as the two passes.
+        std::vector<HexId> touched;
+        std::vector<uint16_t> edges;
+        touchedHexesWithEdges(r->edits, touched, edges);
+        REQUIRE(touched == touchedHexes(cx, r->edits));
+        REQUIRE(edges == edgesChangedBy(r->edits, touched));
         ++applied;
         done.push_back(std::move(*r));
       }

@@ -181,9 +181,57 @@ void DualTracker::dropRetiredAbove(size_t sheets, size_t chords) {
                    unsettled_.end());
 }
 
+// Each edit's hexes with the edges it marks, packed as hex << 12 | edges, sorted, and the runs of
+// one hex merged: no search per edit.
+void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touched, std::vector<uint16_t>& edges) {
+  thread_local std::vector<uint64_t> keyed;  // scratch: no allocation once warm
+  keyed.clear();
+  auto add = [&](HexId h, unsigned mask) { keyed.push_back(uint64_t(uint32_t(h)) << 12 | mask); };
+  auto faceEdges = [](int f) {
+    unsigned m = 0;
+    for (int e : tables::kFaceEdges[size_t(f)]) m |= 1u << e;
+    return m;
+  };
+  for (const Complex::Edit& e : log.edits) {
+    switch (e.kind) {
+      case Complex::Edit::AddHex:
+      case Complex::Edit::RemoveHex:
+        add(e.hex, 0xFFFu);
+        break;
+      case Complex::Edit::SetCorner:
+        add(e.hex, 0);
+        break;
+      case Complex::Edit::Glue:
+      case Complex::Edit::Unglue:
+        add(e.hex, faceEdges(e.face));
+        add(HexId(e.value >> 6), faceEdges(int((e.value >> 3) & 7)));
+        break;
+      default:
+        break;
+    }
+  }
+  std::sort(keyed.begin(), keyed.end());
+  touched.clear();
+  edges.clear();
+  for (uint64_t k : keyed) {
+    const HexId h = HexId(uint32_t(k >> 12));
+    if (!touched.empty() && touched.back() == h) {
+      edges.back() = uint16_t(edges.back() | (k & 0xFFFu));
+    } else {
+      touched.push_back(h);
+      edges.push_back(uint16_t(k & 0xFFFu));
+    }
+  }
+}
+
 DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology) {
-  const std::vector<HexId> touched = touchedHexes(cx, edits);
-  edgesToWalk_ = edgesChangedBy(edits, touched);
+  std::vector<HexId> touched;
+  if (edits.edits.size() < 2048) {
+    touchedHexesWithEdges(edits, touched, edgesToWalk_);
+  } else {  // a sheet operation's long log: linear passes (a bitmap, a table) instead of a sort
+    touched = touchedHexes(cx, edits);
+    edgesToWalk_ = edgesChangedBy(edits, touched);
+  }
   DualChange change = updateSorted(cx, touched, sheetsKeepTopology);
   edgesToWalk_.clear();
   return change;

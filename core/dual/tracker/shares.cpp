@@ -36,9 +36,12 @@ uint16_t nearBits(const Complex& cx, HexId m, uint16_t marks, uint16_t walked) {
   return bits ? uint16_t(bits | kNearBoundary) : 0;
 }
 
-// The incidences of the edge at e, round its cycle or along its fan; false for a fan.
-bool edgeIncidences(const Complex& cx, EdgeRef e, std::vector<EdgeRef>& out) {
-  out.assign(1, e);
+// The incidences of the edge at e, round its cycle or along its fan, and the smallest of them;
+// false for a fan.
+bool edgeIncidences(const Complex& cx, EdgeRef e, std::vector<EdgeRef>& out, EdgeRef& least) {
+  out.clear();
+  out.push_back(e);
+  least = e;
   auto fs = tables::facesOfEdge(e.edge);
   for (int dir = 0; dir < 2; ++dir) {
     EdgeRef cur = e;
@@ -46,6 +49,7 @@ bool edgeIncidences(const Complex& cx, EdgeRef e, std::vector<EdgeRef>& out) {
     while (cx.stepAroundEdge(cur, exit)) {
       if (cur == e) return true;
       out.push_back(cur);
+      if (cur < least) least = cur;
     }
   }
   return false;
@@ -97,11 +101,13 @@ void DualTracker::refreshShares(const Complex& cx, const std::vector<HexId>& tou
     const HexId h = touched[i];
     if (!cx.isHex(h)) continue;
     const unsigned changed = known ? edgesToWalk_[i] : 0xFFFu;
-    for (int e = 0; e < 12; ++e) {
-      if (!((changed >> e) & 1u) || ((walked_[size_t(h)] >> e) & 1u)) continue;
-      const bool closed = edgeIncidences(cx, {h, e}, inc);
+    // The changed edges not walked yet (a walk can pass h again, at another of its edges).
+    for (unsigned left = changed & ~unsigned(walked_[size_t(h)]) & 0xFFFu; left; left &= ~unsigned(walked_[size_t(h)])) {
+      const int e = __builtin_ctz(left);
+      left &= left - 1;
+      EdgeRef least;
+      const bool closed = edgeIncidences(cx, {h, e}, inc, least);
       fan = fan || !closed;
-      const EdgeRef least = *std::min_element(inc.begin(), inc.end());
       for (EdgeRef r : inc) {
         if (!walked_[size_t(r.hex)]) met.push_back(r.hex);
         walked_[size_t(r.hex)] |= uint16_t((1u << r.edge) | (closed ? 0u : walkedFan(r.edge)));
