@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <string>
+#include <span>
 #include <vector>
 
 #include "complex/complex.hpp"
@@ -46,9 +47,9 @@ class SlotList {
     ++size_;
   }
   void clear();
-  // Edits that wait for the next read: `sorted` slots not listed join; `other`'s slots (disjoint
-  // from these) join; listed slots leave.
-  void add(std::vector<Slot> sorted);
+  // Edits that wait for the next read: slots not listed join (in any order); `other`'s slots
+  // (disjoint from these) join; listed slots leave.
+  void add(std::span<const Slot> slots);
   void absorb(SlotList&& other);
   void remove(std::vector<Slot> listed);
   friend bool operator==(const SlotList& a, const SlotList& b) { return a.get() == b.get(); }
@@ -57,7 +58,7 @@ class SlotList {
   void settle() const;
   mutable std::vector<Slot> list_;
   mutable std::vector<std::vector<Slot>> runs_;  // sorted runs (merged lists) waiting to join
-  mutable std::vector<Slot> adds_;               // sorted slots waiting to join (a few per edit)
+  mutable std::vector<Slot> adds_;               // slots waiting to join (a few per edit), in no order
   mutable std::vector<Slot> gone_;               // listed slots waiting to leave
   size_t size_ = 0;
 };

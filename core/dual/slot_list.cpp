@@ -37,14 +37,10 @@ void mergeInto(std::vector<Slot>& base, const std::vector<Slot>& run) {
 }
 }  // namespace
 
-void SlotList::add(std::vector<Slot> sorted) {
-  if (sorted.empty()) return;
-  size_ += sorted.size();
-  if (list_.empty() && runs_.empty() && adds_.empty() && gone_.empty()) {
-    list_ = std::move(sorted);
-    return;
-  }
-  mergeInto(adds_, sorted);
+void SlotList::add(std::span<const Slot> slots) {
+  if (slots.empty()) return;
+  size_ += slots.size();
+  adds_.insert(adds_.end(), slots.begin(), slots.end());  // sorted once, when merged
   if (tooMany(adds_.size(), size_)) settle();
 }
 
@@ -72,7 +68,7 @@ void SlotList::remove(std::vector<Slot> listed) {
 }
 
 // Merges the pending runs into the longest list (the smaller ones first, then once into it from
-// the back, in place), then the pending additions, and drops the pending removals in one pass
+// the back, in place), then the pending additions (sorted first), and drops the pending removals in one pass
 // (one listed copy per removal). The pending buffers keep their capacity.
 void SlotList::settle() const {
   if (!runs_.empty()) {
@@ -93,6 +89,7 @@ void SlotList::settle() const {
     runs_.clear();
   }
   if (!adds_.empty()) {
+    if (!std::is_sorted(adds_.begin(), adds_.end())) std::sort(adds_.begin(), adds_.end());
     mergeInto(list_, adds_);
     adds_.clear();
   }

@@ -573,7 +573,7 @@ void DualTracker::Lockstep::joinNewSlots(DualChange& change) {
     int64_t loops = 0;
     for (size_t k = 0; k < old.size(); ++k)
       if (owner[k] == int32_t(g)) loops += t.dual_.sheets[size_t(old[k])].boundaryLoops - loopsTaken[k];
-    t.dual_.sheets[size_t(keep)].slots.add(std::move(joining[g]));
+    t.dual_.sheets[size_t(keep)].slots.add(joining[g]);
     t.dual_.sheets[size_t(keep)].boundaryLoops = int(loops);
     change.sheetsChanged.push_back(keep);
   }

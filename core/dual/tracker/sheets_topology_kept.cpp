@@ -166,9 +166,7 @@ void DualTracker::TopologyKept::formNewSheet(std::span<const Slot> comp, DualCha
 void DualTracker::TopologyKept::joinOldSheet(std::span<const Slot> comp, int32_t id) {
   const int32_t label = t.labels_[size_t(id)].front();
   for (Slot s : comp) t.setLabel(s, label);
-  std::vector<Slot> run(comp.begin(), comp.end());
-  std::sort(run.begin(), run.end());
-  t.dual_.sheets[size_t(id)].slots.add(std::move(run));
+  t.dual_.sheets[size_t(id)].slots.add(comp);
   t.propagateSigns(cx, comp);
   t.sheetSlotsTouched_ += comp.size();
   changed.push_back(id);
