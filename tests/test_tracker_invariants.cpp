@@ -212,10 +212,11 @@ TEST_CASE("dual tracker: edge marks and shares hold when only the edited edges a
         REQUIRE_NOTHROW(tracker.checkInvariants(cx));
         // update() reads a short log's hexes and edges in one sort: the same lists as the two passes.
         std::vector<HexId> touched;
-        std::vector<uint16_t> edges;
-        touchedHexesWithEdges(r->edits, touched, edges);
+        std::vector<uint16_t> edges, scratch;
+        touchedHexesWithEdges(r->edits, touched, edges, scratch);
         REQUIRE(touched == touchedHexes(cx, r->edits));
         REQUIRE(edges == edgesChangedBy(r->edits, touched));
+        REQUIRE(std::count(scratch.begin(), scratch.end(), 0) == std::ptrdiff_t(scratch.size()));
         ++applied;
         done.push_back(std::move(*r));
       }

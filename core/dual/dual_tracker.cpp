@@ -181,12 +181,18 @@ void DualTracker::dropRetiredAbove(size_t sheets, size_t chords) {
                    unsettled_.end());
 }
 
-// Each edit's hexes with the edges it marks, packed as hex << 12 | edges, sorted, and the runs of
-// one hex merged: no search per edit.
-void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touched, std::vector<uint16_t>& edges) {
-  thread_local std::vector<uint64_t> keyed;  // scratch: no allocation once warm
-  keyed.clear();
-  auto add = [&](HexId h, unsigned mask) { keyed.push_back(uint64_t(uint32_t(h)) << 12 | mask); };
+// Each edit's hexes with the edges it marks, gathered per hex in `scratch` (bit 15: listed), then
+// the few distinct hexes sorted: no search per edit and no sort of the edits.
+void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touched, std::vector<uint16_t>& edges,
+                           std::vector<uint16_t>& scratch) {
+  constexpr uint16_t kListed = 0x8000;
+  touched.clear();
+  auto add = [&](HexId h, unsigned mask) {
+    if (size_t(h) >= scratch.size()) scratch.resize(size_t(h) + 1, 0);
+    uint16_t& m = scratch[size_t(h)];
+    if (!m) touched.push_back(h);
+    m = uint16_t(m | kListed | mask);
+  };
   auto faceEdges = [](int f) {
     unsigned m = 0;
     for (int e : tables::kFaceEdges[size_t(f)]) m |= 1u << e;
@@ -210,24 +216,19 @@ void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touc
         break;
     }
   }
-  std::sort(keyed.begin(), keyed.end());
-  touched.clear();
-  edges.clear();
-  for (uint64_t k : keyed) {
-    const HexId h = HexId(uint32_t(k >> 12));
-    if (!touched.empty() && touched.back() == h) {
-      edges.back() = uint16_t(edges.back() | (k & 0xFFFu));
-    } else {
-      touched.push_back(h);
-      edges.push_back(uint16_t(k & 0xFFFu));
-    }
+  std::sort(touched.begin(), touched.end());
+  edges.resize(touched.size());
+  for (size_t i = 0; i < touched.size(); ++i) {
+    uint16_t& m = scratch[size_t(touched[i])];
+    edges[i] = uint16_t(m & 0xFFFu);
+    m = 0;
   }
 }
 
 DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology) {
   std::vector<HexId> touched;
   if (edits.edits.size() < 2048) {
-    touchedHexesWithEdges(edits, touched, edgesToWalk_);
+    touchedHexesWithEdges(edits, touched, edgesToWalk_, walked_);  // walked_ is 0 outside refreshShares
   } else {  // a sheet operation's long log: linear passes (a bitmap, a table) instead of a sort
     touched = touchedHexes(cx, edits);
     edgesToWalk_ = edgesChangedBy(edits, touched);
