@@ -51,7 +51,7 @@ class SlotList {
   // (disjoint from these) join; listed slots leave.
   void add(std::span<const Slot> slots);
   void absorb(SlotList&& other);
-  void remove(std::vector<Slot> listed);
+  void remove(std::span<const Slot> listed);
   friend bool operator==(const SlotList& a, const SlotList& b) { return a.get() == b.get(); }
 
  private:

@@ -228,6 +228,7 @@ void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touc
 DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology) {
   std::vector<HexId> touched;
   if (edits.edits.size() < 2048) {
+    touched.reserve(2 * edits.edits.size());  // at most two hexes per edit: one allocation
     touchedHexesWithEdges(edits, touched, edgesToWalk_, walked_);  // walked_ is 0 outside refreshShares
   } else {  // a sheet operation's long log: linear passes (a bitmap, a table) instead of a sort
     touched = touchedHexes(cx, edits);

@@ -60,7 +60,7 @@ void SlotList::absorb(SlotList&& other) {
   if (runs_.size() > kMaxRuns || tooMany(gone_.size(), size_)) settle();
 }
 
-void SlotList::remove(std::vector<Slot> listed) {
+void SlotList::remove(std::span<const Slot> listed) {
   if (listed.empty()) return;
   size_ -= listed.size();
   gone_.insert(gone_.end(), listed.begin(), listed.end());

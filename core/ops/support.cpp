@@ -170,7 +170,9 @@ ArcSplit arcSplit(const Complex& cx, EdgeRef e, QuadSide f, QuadSide g, const st
 }
 
 std::vector<HexId> withNeighbours(const Complex& cx, const std::vector<HexId>& hexes) {
-  std::vector<HexId> out = hexes;
+  std::vector<HexId> out;
+  out.reserve(7 * hexes.size());  // one allocation
+  out.assign(hexes.begin(), hexes.end());
   for (HexId h : hexes)
     for (int f = 0; f < 6; ++f)
       if (!cx.gluing(h, f).boundary()) out.push_back(cx.gluing(h, f).hex);

@@ -541,7 +541,7 @@ void DualTracker::Lockstep::shrinkRemainders() {
   for (size_t k = 0; k < old.size(); ++k)
     if (owner[k] >= 0) {
       std::sort(leaving[k].begin(), leaving[k].end());
-      t.dual_.sheets[size_t(old[k])].slots.remove(std::move(leaving[k]));
+      t.dual_.sheets[size_t(old[k])].slots.remove(leaving[k]);
     }
 }
 

@@ -133,11 +133,12 @@ void DualTracker::TopologyKept::dropDeadSlots() {
   }
   std::sort(dead.begin(), dead.end(),
             [](const auto& x, const auto& y) { return x.first != y.first ? x.first < y.first : x.second < y.second; });
+  thread_local std::vector<Slot> gone;  // scratch: no allocation once warm
   for (size_t i = 0; i < dead.size();) {
-    std::vector<Slot> gone;
+    gone.clear();
     size_t j = i;
     for (; j < dead.size() && dead[j].first == dead[i].first; ++j) gone.push_back(dead[j].second);
-    t.dual_.sheets[size_t(dead[i].first)].slots.remove(std::move(gone));
+    t.dual_.sheets[size_t(dead[i].first)].slots.remove(gone);
     i = j;
   }
 }
