@@ -226,3 +226,24 @@ TEST_CASE("dual tracker: edge marks and shares hold when only the edited edges a
   CHECK(applied == 767);
   CHECK(undone == 469);
 }
+
+// A sheet operation's long log (thousands of edits): the one-pass gathering gives the same lists as
+// touchedHexes and edgesChangedBy there too (its sort switches to a bitmap for long lists), for
+// the extraction and for its undo.
+TEST_CASE("dual tracker: a sheet extraction's long log gives the same touched hexes and changed edges both ways") {
+  Complex cx = makeGrid(40, 40, 40);
+  std::optional<OpResult> r = tryApplyStep(cx, "sheet-extract h4210e0");
+  REQUIRE(r.has_value());
+  REQUIRE(r->edits.edits.size() > 4096);
+  for (int pass = 0; pass < 2; ++pass) {
+    CAPTURE(pass);
+    std::vector<HexId> touched;
+    std::vector<uint16_t> edges, scratch;
+    touchedHexesWithEdges(r->edits, touched, edges, scratch);
+    CHECK(touched.size() > 4096);
+    CHECK(touched == touchedHexes(cx, r->edits));
+    CHECK(edges == edgesChangedBy(r->edits, touched));
+    CHECK(std::count(scratch.begin(), scratch.end(), 0) == std::ptrdiff_t(scratch.size()));
+    if (pass == 0) cx.undo(r->edits);
+  }
+}

@@ -182,7 +182,7 @@ void DualTracker::dropRetiredAbove(size_t sheets, size_t chords) {
 }
 
 // Each edit's hexes with the edges it marks, gathered per hex in `scratch` (bit 15: listed), then
-// the few distinct hexes sorted: no search per edit and no sort of the edits.
+// the distinct hexes sorted: no search per edit and no sort of the edits.
 void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touched, std::vector<uint16_t>& edges,
                            std::vector<uint16_t>& scratch) {
   constexpr uint16_t kListed = 0x8000;
@@ -216,7 +216,7 @@ void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touc
         break;
     }
   }
-  std::sort(touched.begin(), touched.end());
+  sortUniqueIds(touched);  // distinct already; a long list (a sheet operation's) by bitmap, in linear time
   edges.resize(touched.size());
   for (size_t i = 0; i < touched.size(); ++i) {
     uint16_t& m = scratch[size_t(touched[i])];
@@ -227,13 +227,8 @@ void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touc
 
 DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology) {
   std::vector<HexId> touched;
-  if (edits.edits.size() < 2048) {
-    touched.reserve(2 * edits.edits.size());  // at most two hexes per edit: one allocation
-    touchedHexesWithEdges(edits, touched, edgesToWalk_, walked_);  // walked_ is 0 outside refreshShares
-  } else {  // a sheet operation's long log: linear passes (a bitmap, a table) instead of a sort
-    touched = touchedHexes(cx, edits);
-    edgesToWalk_ = edgesChangedBy(edits, touched);
-  }
+  touched.reserve(2 * edits.edits.size());  // at most two hexes per edit: one allocation
+  touchedHexesWithEdges(edits, touched, edgesToWalk_, walked_);  // walked_ is 0 outside refreshShares
   DualChange change = updateSorted(cx, touched, sheetsKeepTopology);
   edgesToWalk_.clear();
   return change;

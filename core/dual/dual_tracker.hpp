@@ -237,7 +237,7 @@ std::vector<HexId> touchedHexes(const Complex& cx, const Complex::EditLog& edits
 // have changed, i.e. the hex was added or removed or a face through e was glued or unglued (an
 // edge cycle is the gluings of the faces through it); the same for the log and its undo.
 std::vector<uint16_t> edgesChangedBy(const Complex::EditLog& edits, const std::vector<HexId>& touched);
-// Both at once (what update() uses for a step's short log): touched = touchedHexes, edges =
+// Both at once (what update() uses): touched = touchedHexes, edges =
 // edgesChangedBy(edits, touched). `scratch` holds a word per hex id, 0 before and after the call
 // (grown to the log's largest id).
 void touchedHexesWithEdges(const Complex::EditLog& edits, std::vector<HexId>& touched, std::vector<uint16_t>& edges,

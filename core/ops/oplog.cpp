@@ -47,8 +47,8 @@ OpStep parseOpStep(std::string_view text, size_t offset) {
   OpStep step;
   step.position = offset;
   size_t i = 0;
-  thread_local std::vector<std::pair<std::string_view, size_t>> tokens;  // scratch: no allocation once warm
-  tokens.clear();
+  std::vector<std::pair<std::string_view, size_t>> tokens;
+  tokens.reserve(8);  // an operation and its arguments: one allocation
   while (i < text.size()) {
     if (text[i] == ' ') {
       if (i == 0 || i + 1 == text.size() || text[i + 1] == ' ') fail(offset + i, "stray space", text);

@@ -186,30 +186,22 @@ DeferValidation::DeferValidation() { ++deferredValidation; }
 DeferValidation::~DeferValidation() { --deferredValidation; }
 bool DeferValidation::active() { return deferredValidation > 0; }
 
-void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) {
-  if (!DeferValidation::active()) {
-    requireManifoldVertices(cx_, touched, r.op ? opName(*r.op) : "operation");
-#ifdef HEXDUAL_CHECK_INVARIANTS
-    (void)touched;
-    cx_.validate();
-#else
-    cx_.validateAround(touched);
-#endif
-  }
-  finish(r);
-}
+void Transaction::commit(OpResult& r, const std::vector<HexId>& touched) { commitChecked(r, touched, true); }
 
 void Transaction::commitValidByConstruction(OpResult& r, const std::vector<HexId>& touched) {
+  commitChecked(r, touched, false);
+}
+
+void Transaction::commitChecked(OpResult& r, const std::vector<HexId>& touched, bool walkLinks) {
   if (!DeferValidation::active()) {
     requireManifoldVertices(cx_, touched, r.op ? opName(*r.op) : "operation");
 #ifdef HEXDUAL_CHECK_INVARIANTS
+    (void)walkLinks;
     cx_.validate();
+#else
+    if (walkLinks) cx_.validateAround(touched);
 #endif
   }
-  finish(r);
-}
-
-void Transaction::finish(OpResult& r) {
   r.dV = cx_.numVertices() - v0_;
   r.dF = cx_.numQuads() - f0_;
   r.dH = cx_.numHexes() - h0_;
@@ -283,11 +275,19 @@ std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::v
                                 const std::vector<std::array<VertexId, 8>>& added) {
   using Key = std::array<VertexId, 4>;
   // Scratch kept between calls (every hex push runs this): no allocation once warm but the result.
-  thread_local std::vector<std::pair<Key, QuadSide>> outside, open;
-  thread_local std::vector<Key> formerBoundary;
-  thread_local std::vector<int32_t> firstOf, nextOf, lastOf;
-  thread_local std::vector<uint8_t> taken;
-  thread_local std::vector<QuadSide> hits;
+  struct Scratch {
+    std::vector<std::pair<Key, QuadSide>> outside, open;
+    std::vector<Key> formerBoundary;
+    std::vector<int32_t> firstOf, nextOf, lastOf;
+    std::vector<uint8_t> taken;
+    std::vector<QuadSide> hits;
+  };
+  thread_local Scratch sc;
+  auto &outside = sc.outside, &open = sc.open;
+  auto& formerBoundary = sc.formerBoundary;
+  auto &firstOf = sc.firstOf, &nextOf = sc.nextOf, &lastOf = sc.lastOf;
+  auto& taken = sc.taken;
+  auto& hits = sc.hits;
   auto isRemoved = [&](HexId h) { return std::find(removed.begin(), removed.end(), h) != removed.end(); };
   outside.clear();
   formerBoundary.clear();

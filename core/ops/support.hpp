@@ -124,7 +124,7 @@ class Transaction {
   void commitValidByConstruction(OpResult& r, const std::vector<HexId>& touched);
 
  private:
-  void finish(OpResult& r);
+  void commitChecked(OpResult& r, const std::vector<HexId>& touched, bool walkLinks);
   Complex& cx_;
   bool open_ = true;
   int64_t v0_, f0_, h0_;

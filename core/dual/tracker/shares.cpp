@@ -8,7 +8,8 @@
 // incidence, kNearBoundary exactly when one of h's 12 edges reaches the boundary and
 // kEdgeAxisNearBoundary(a) exactly when one of its 4 edges along axis a does; every live
 // slot's share_ is slotShare() of its hex's marks, a dead slot's is 0; a sheet's Euler
-// characteristic is half the sum of its slots' shares; walked_ is 0 outside refreshShares.
+// characteristic is half the sum of its slots' shares; walked_ is 0 outside refreshShares (and
+// outside update's touchedHexesWithEdges, which borrows it).
 #include <algorithm>
 
 #include "dual/dual_tracker.hpp"

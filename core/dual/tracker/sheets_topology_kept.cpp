@@ -28,6 +28,7 @@ struct DualTracker::TopologyKept {
     std::vector<size_t> compAt;
     std::vector<int32_t> joins, changed;
     std::vector<std::pair<int32_t, Slot>> dead;
+    std::vector<Slot> gone;
     std::vector<HexId> born;
   };
   static Scratch& scratch() {
@@ -133,7 +134,7 @@ void DualTracker::TopologyKept::dropDeadSlots() {
   }
   std::sort(dead.begin(), dead.end(),
             [](const auto& x, const auto& y) { return x.first != y.first ? x.first < y.first : x.second < y.second; });
-  thread_local std::vector<Slot> gone;  // scratch: no allocation once warm
+  std::vector<Slot>& gone = sc.gone;
   for (size_t i = 0; i < dead.size();) {
     gone.clear();
     size_t j = i;
