@@ -273,4 +273,14 @@ TEST_CASE("SlotList: pending runs and removals read as one sorted list") {
   CHECK(std::is_sorted(many.begin(), many.end()));
   CHECK(many.front() == Slot{0, 0});
   CHECK(many.back() == Slot{39, 0});
+  // Additions come in any order (sorted once, when merged), more of them than are kept pending.
+  SlotList mixed(slots({{5, 0}}));
+  mixed.add(slots({{9, 2}, {3, 1}, {7, 0}}));
+  for (int h = 100; h < 140; ++h) mixed.add(slots({{h + 100, 0}, {h, 1}}));
+  mixed.remove(slots({{5, 0}}));
+  CHECK(mixed.size() == 83);
+  CHECK(mixed.get().size() == 83);
+  CHECK(std::is_sorted(mixed.begin(), mixed.end()));
+  CHECK(mixed.front() == Slot{3, 1});
+  CHECK(mixed.back() == Slot{239, 0});
 }
