@@ -96,10 +96,11 @@ std::vector<uint16_t> edgesChangedBy(const Complex::EditLog& log, const std::vec
   };
   for (const Complex::Edit& e : log.edits) {
     if (e.kind == Complex::Edit::AddHex || e.kind == Complex::Edit::RemoveHex) {
-      mark(e.hex, 0xFFF);
+      mark(e.hex, uint16_t(0xFFF | kChordAxesChanged));
     } else if (e.kind == Complex::Edit::Glue || e.kind == Complex::Edit::Unglue) {
-      mark(e.hex, faceEdges(e.face));
-      mark(HexId(e.value >> 6), faceEdges(int((e.value >> 3) & 7)));
+      const int f = int((e.value >> 3) & 7);
+      mark(e.hex, uint16_t(faceEdges(e.face) | chordAxisChanged(tables::axisOfFace(e.face))));
+      mark(HexId(e.value >> 6), uint16_t(faceEdges(f) | chordAxisChanged(tables::axisOfFace(f))));
     }
   }
   return out;
@@ -202,16 +203,18 @@ void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touc
     switch (e.kind) {
       case Complex::Edit::AddHex:
       case Complex::Edit::RemoveHex:
-        add(e.hex, 0xFFFu);
+        add(e.hex, 0xFFFu | kChordAxesChanged);
         break;
       case Complex::Edit::SetCorner:
         add(e.hex, 0);
         break;
       case Complex::Edit::Glue:
-      case Complex::Edit::Unglue:
-        add(e.hex, faceEdges(e.face));
-        add(HexId(e.value >> 6), faceEdges(int((e.value >> 3) & 7)));
+      case Complex::Edit::Unglue: {
+        const int f = int((e.value >> 3) & 7);
+        add(e.hex, faceEdges(e.face) | chordAxisChanged(tables::axisOfFace(e.face)));
+        add(HexId(e.value >> 6), faceEdges(f) | chordAxisChanged(tables::axisOfFace(f)));
         break;
+      }
       default:
         break;
     }
@@ -220,7 +223,7 @@ void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touc
   edges.resize(touched.size());
   for (size_t i = 0; i < touched.size(); ++i) {
     uint16_t& m = scratch[size_t(touched[i])];
-    edges[i] = uint16_t(m & 0xFFFu);
+    edges[i] = uint16_t(m & ~kListed);
     m = 0;
   }
 }

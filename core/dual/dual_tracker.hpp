@@ -132,6 +132,9 @@ class DualTracker {
   };
   int32_t chordLength(int32_t id) const;
   int32_t placeInChord(int32_t id, Slot s) const;  // -1 when s is not listed in chord id
+  // placeInChord, and the slots before and after s along chord id (of length len) where there are
+  // (a closed chord wraps round; Slot{} where the chord ends).
+  int32_t chordNeighbours(int32_t id, Slot s, int32_t len, bool closed, Slot* prev, Slot* next) const;
   void appendSlots(const std::vector<Piece>& pieces, std::vector<Slot>& out) const;
   void dropPieces(const std::vector<int32_t>& ids);
   Slot chordSlotAt(int32_t id, int32_t p) const;
@@ -235,7 +238,11 @@ class DualTracker {
 std::vector<HexId> touchedHexes(const Complex& cx, const Complex::EditLog& edits);
 // Per hex of `touched` (touchedHexes of the same log): bit e set when the cycle of its edge e can
 // have changed, i.e. the hex was added or removed or a face through e was glued or unglued (an
-// edge cycle is the gluings of the faces through it); the same for the log and its undo.
+// edge cycle is the gluings of the faces through it); bit 12 + a (chordAxisChanged(a)) set when
+// the hex was added or removed or one of its two faces across axis a was glued or unglued, i.e.
+// when its slot along a can have other neighbours along its chord. The same for the log and its undo.
+constexpr uint16_t chordAxisChanged(int axis) { return uint16_t(1u << (12 + axis)); }
+constexpr uint16_t kChordAxesChanged = uint16_t(7u << 12);
 std::vector<uint16_t> edgesChangedBy(const Complex::EditLog& edits, const std::vector<HexId>& touched);
 // Both at once (what update() uses): touched = touchedHexes, edges =
 // edgesChangedBy(edits, touched). `scratch` holds a word per hex id, 0 before and after the call

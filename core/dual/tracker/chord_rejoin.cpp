@@ -593,11 +593,11 @@ void DualTracker::ChordRejoin::commit(DualChange& change) {
     if (self[ci] != 2) ch.selfIntersecting = self[ci] != 0;
     tr.setChordPieces(id, sc.pieces);
     if (!std::binary_search(ids.begin(), ids.end(), id))
-      change.chordsCreated.push_back(id);
+      report(change.chordsCreated, id);
     else if (spliced[ci])
       splicedIds.push_back(id);
     else
-      change.chordsChanged.push_back(id);
+      report(change.chordsChanged, id);
   }
   std::sort(splicedIds.begin(), splicedIds.end());
   change.chordsChanged.insert(change.chordsChanged.begin(), splicedIds.begin(), splicedIds.end());
@@ -607,7 +607,7 @@ void DualTracker::ChordRejoin::commit(DualChange& change) {
       ch.alive = false;
       ch.slots.clear();
       tr.chordSelf_[size_t(id)] = 0;
-      change.chordsRemoved.push_back(id);
+      report(change.chordsRemoved, id);
     }
   tr.releaseLabels();
 }

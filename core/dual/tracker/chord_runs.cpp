@@ -34,6 +34,38 @@ int32_t DualTracker::placeInChord(int32_t id, Slot s) const {
   return -1;
 }
 
+// Read within s's piece where they lie in it; only at a piece's end does chordSlotAt walk the pieces.
+int32_t DualTracker::chordNeighbours(int32_t id, Slot s, int32_t len, bool closed, Slot* prev, Slot* next) const {
+  const int32_t l = dual_.chordLabel[size_t(s.hex)][size_t(s.axis)];
+  if (l < 0) return -1;
+  const int32_t i = dual_.chordPlace[slotIndex(s)];
+  int32_t before = 0;
+  for (const Piece& p : pieces_[size_t(id)]) {
+    const int32_t n = p.hi - p.lo;
+    if (p.label == l && i >= p.lo && i < p.hi) {
+      const int32_t k = p.reversed ? p.hi - 1 - i : i - p.lo;  // s's offset in the piece
+      const int32_t q = before + k;                             // its place in the chord
+      const std::vector<Slot>& run = runs_[size_t(l)];
+      const int32_t step = p.reversed ? -1 : 1;
+      if (k > 0)
+        *prev = run[size_t(i - step)];
+      else if (q > 0 || closed)
+        *prev = chordSlotAt(id, q > 0 ? q - 1 : len - 1);
+      else
+        *prev = Slot{};
+      if (k + 1 < n)
+        *next = run[size_t(i + step)];
+      else if (q + 1 < len || closed)
+        *next = chordSlotAt(id, q + 1 < len ? q + 1 : 0);
+      else
+        *next = Slot{};
+      return q;
+    }
+    before += n;
+  }
+  return -1;
+}
+
 // The chords lose their pieces (their labels' places are cut from them).
 void DualTracker::dropPieces(const std::vector<int32_t>& ids) {
   for (int32_t id : ids) {

@@ -24,16 +24,24 @@ void DualTracker::updateChords(const Complex& cx, const std::vector<HexId>& touc
 }
 
 // The chords through the touched slots that the edit changed, ascending. The touched slots are
-// grouped by chord, so each chord reads only its own.
+// grouped by chord, so each chord reads only its own. When the update knows its edits, a slot of
+// a live hex none of whose two faces across its axis was glued or unglued is left out: its
+// neighbours along the chord are the hexes across those faces, as before the edit (the tracker
+// held them), so it cannot have changed its chord.
 std::vector<int32_t> DualTracker::changedChords(const Complex& cx, const std::vector<HexId>& touched) {
   thread_local std::vector<std::pair<int32_t, Slot>> through;  // scratch kept between updates
   thread_local std::vector<Slot> own;
   through.clear();
-  for (HexId h : touched)
+  const bool known = edgesToWalk_.size() == touched.size();
+  for (size_t i = 0; i < touched.size(); ++i) {
+    const HexId h = touched[i];
+    const unsigned axes = known ? edgesToWalk_[i] : kChordAxesChanged;
     for (int a = 0; a < 3; ++a) {
+      if (!(axes & chordAxisChanged(a))) continue;
       const int32_t c = dual_.chordAt(h, a);
       if (c >= 0) through.push_back({c, Slot{h, a}});
     }
+  }
   // Grouped by chord id (the order within a chord does not matter): counted into place when the
   // list is long against the id range (a sheet operation), else sorted.
   if (through.size() >= 4096 && dual_.chords.size() <= 4 * through.size()) {
@@ -47,6 +55,7 @@ std::vector<int32_t> DualTracker::changedChords(const Complex& cx, const std::ve
     std::sort(through.begin(), through.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   }
   std::vector<int32_t> ids;
+  ids.reserve(16);  // a step changes a few chords: one allocation, not one per doubling
   for (size_t i = 0, j = 0; i < through.size(); i = j) {
     const int32_t id = through[i].first;
     own.clear();
@@ -62,19 +71,19 @@ bool DualTracker::chordUnchanged(const Complex& cx, int32_t id, const std::vecto
   const int32_t len = chordLength(id);
   const bool closed = dual_.chords[size_t(id)].closed;
   for (Slot s : own) {
-    const int32_t p = placeInChord(id, s);
-    if (!cx.isHex(s.hex) || p < 0) return false;
+    if (!cx.isHex(s.hex)) return false;
+    Slot prev, next;
+    const int32_t p = chordNeighbours(id, s, len, closed, &prev, &next);
+    if (p < 0) return false;
     auto along = [&](int face, Slot& n) {
       Gluing g = cx.gluing(s.hex, face);
       if (g.boundary()) return false;
       n = {g.hex, tables::axisOfFace(g.face)};
       return true;
     };
-    Slot lo, hi, prev, next;
+    Slot lo, hi;
     const bool hasLo = along(2 * s.axis, lo), hasHi = along(2 * s.axis + 1, hi);
     const bool hasPrev = p > 0 || closed, hasNext = p + 1 < len || closed;
-    if (hasPrev) prev = chordSlotAt(id, p > 0 ? p - 1 : len - 1);
-    if (hasNext) next = chordSlotAt(id, p + 1 < len ? p + 1 : 0);
     auto same = [](bool x, Slot a, bool y, Slot b) { return x == y && (!x || a == b); };
     if (!(same(hasLo, lo, hasPrev, prev) && same(hasHi, hi, hasNext, next)) &&
         !(same(hasLo, lo, hasNext, next) && same(hasHi, hi, hasPrev, prev)))

@@ -161,7 +161,7 @@ void DualTracker::TopologyKept::formNewSheet(std::span<const Slot> comp, DualCha
   sh.slots = std::move(slots);
   d.sheets.push_back(std::move(sh));
   t.selfPairs_.push_back(0);
-  change.sheetsCreated.push_back(id);
+  report(change.sheetsCreated, id);
 }
 
 // A component that touches one old sheet joins it with its first label, oriented from its neighbours.
@@ -202,9 +202,9 @@ void DualTracker::TopologyKept::reportChanges(DualChange& change) {
     if (std::find(change.sheetsCreated.begin(), change.sheetsCreated.end(), id) != change.sheetsCreated.end()) continue;
     if (sh.slots.empty()) {
       sh.alive = false;
-      change.sheetsRemoved.push_back(id);
+      report(change.sheetsRemoved, id);
     } else {
-      change.sheetsChanged.push_back(id);
+      report(change.sheetsChanged, id);
     }
   }
   for (int32_t id : change.sheetsCreated) t.dual_.sheets[size_t(id)].selfIntersecting = t.selfPairs_[size_t(id)] > 0;

@@ -22,6 +22,13 @@ inline std::vector<int32_t> sheetIdsThrough(const Dual& d, const std::vector<Hex
   return ids;
 }
 
+// Appends an id to a DualChange list, starting it with room for 8: an update reports a few ids per
+// list, and a fresh DualChange's lists would otherwise reallocate at 1, 2 and 4.
+inline void report(std::vector<int32_t>& list, int32_t id) {
+  if (list.capacity() == 0) list.reserve(8);
+  list.push_back(id);
+}
+
 inline size_t slotIndex(Slot s) { return 3 * size_t(s.hex) + size_t(s.axis); }
 
 // The slot across face f of slot s's hex (f parallel to s's axis), and the orientation flip.
