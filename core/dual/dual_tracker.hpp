@@ -202,9 +202,13 @@ class DualTracker {
     int32_t count(int32_t a, int32_t b) const;            // the count (checkInvariants)
     std::vector<std::array<int32_t, 3>> entries() const;  // (a, b, count) of the non-zero counts
    private:
+    // A key and its count side by side: a probe reads one cache line, not one in each of two arrays.
+    struct Entry {
+      uint64_t key;
+      int32_t count;
+    };
     size_t find(uint64_t key) const;
-    std::vector<uint64_t> keys_;
-    std::vector<int32_t> counts_;
+    std::vector<Entry> table_;
     size_t used_ = 0;
     int shift_ = 58;
   } pairs_;

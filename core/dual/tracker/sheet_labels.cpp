@@ -29,59 +29,52 @@ constexpr uint64_t kNoKey = ~uint64_t(0);
 // Open addressing with linear probing; counts that drop to zero keep their entry (the same pairs
 // come back after an undo).
 size_t DualTracker::PairCounts::find(uint64_t key) const {
-  const size_t mask = keys_.size() - 1;
+  const size_t mask = table_.size() - 1;
   size_t i = size_t((key * 0x9E3779B97F4A7C15ull) >> shift_);  // the product's top bits (Fibonacci hashing)
-  while (keys_[i] != key && keys_[i] != kNoKey) i = (i + 1) & mask;
+  while (table_[i].key != key && table_[i].key != kNoKey) i = (i + 1) & mask;
   return i;
 }
 
 void DualTracker::PairCounts::add(int32_t a, int32_t b, int32_t n) {
-  if (2 * (used_ + 1) > keys_.size()) {  // rehashed without the zero counts (pairs of labels gone)
-    std::vector<uint64_t> keys = std::move(keys_);
-    std::vector<int32_t> counts = std::move(counts_);
+  if (2 * (used_ + 1) > table_.size()) {  // rehashed without the zero counts (pairs of labels gone)
+    std::vector<Entry> old = std::move(table_);
     size_t live = 0;
-    for (size_t i = 0; i < keys.size(); ++i) live += keys[i] != kNoKey && counts[i] != 0;
+    for (const Entry& e : old) live += e.key != kNoKey && e.count != 0;
     size_t size = 64;
     while (size < 4 * (live + 1)) size *= 2;
-    keys_.assign(size, kNoKey);
-    shift_ = 64 - std::countr_zero(keys_.size());
-    counts_.assign(keys_.size(), 0);
+    table_.assign(size, Entry{kNoKey, 0});
+    shift_ = 64 - std::countr_zero(table_.size());
     used_ = live;
-    for (size_t i = 0; i < keys.size(); ++i)
-      if (keys[i] != kNoKey && counts[i] != 0) {
-        const size_t j = find(keys[i]);
-        keys_[j] = keys[i];
-        counts_[j] = counts[i];
-      }
+    for (const Entry& e : old)
+      if (e.key != kNoKey && e.count != 0) table_[find(e.key)] = e;
   }
   const uint64_t key = pairKey(a, b);
-  const size_t i = find(key);
-  if (keys_[i] == kNoKey) {
-    keys_[i] = key;
+  Entry& e = table_[find(key)];
+  if (e.key == kNoKey) {
+    e.key = key;
     ++used_;
   }
-  counts_[i] += n;
+  e.count += n;
 }
 
 int32_t DualTracker::PairCounts::count(int32_t a, int32_t b) const {
-  if (keys_.empty()) return 0;
-  const size_t i = find(pairKey(a, b));
-  return keys_[i] == kNoKey ? 0 : counts_[i];
+  if (table_.empty()) return 0;
+  const Entry& e = table_[find(pairKey(a, b))];
+  return e.key == kNoKey ? 0 : e.count;
 }
 
 std::vector<std::array<int32_t, 3>> DualTracker::PairCounts::entries() const {
   std::vector<std::array<int32_t, 3>> out;
-  for (size_t i = 0; i < keys_.size(); ++i)
-    if (keys_[i] != kNoKey && counts_[i] != 0)
-      out.push_back({int32_t(uint32_t(keys_[i] >> 32)), int32_t(uint32_t(keys_[i])), counts_[i]});
+  for (const Entry& e : table_)
+    if (e.key != kNoKey && e.count != 0) out.push_back({int32_t(uint32_t(e.key >> 32)), int32_t(uint32_t(e.key)), e.count});
   return out;
 }
 
 int32_t DualTracker::PairCounts::take(int32_t a, int32_t b) {
-  if (keys_.empty()) return 0;
-  const size_t i = find(pairKey(a, b));
-  const int32_t n = keys_[i] == kNoKey ? 0 : counts_[i];
-  if (keys_[i] != kNoKey) counts_[i] = 0;
+  if (table_.empty()) return 0;
+  Entry& e = table_[find(pairKey(a, b))];
+  const int32_t n = e.key == kNoKey ? 0 : e.count;
+  if (e.key != kNoKey) e.count = 0;
   return n;
 }
 
