@@ -132,9 +132,9 @@ class DualTracker {
   };
   int32_t chordLength(int32_t id) const;
   int32_t placeInChord(int32_t id, Slot s) const;  // -1 when s is not listed in chord id
-  // placeInChord, and the slots before and after s along chord id (of length len) where there are
-  // (a closed chord wraps round; Slot{} where the chord ends).
-  int32_t chordNeighbours(int32_t id, Slot s, int32_t len, bool closed, Slot* prev, Slot* next) const;
+  // placeInChord, and the slots before and after s along chord id where there are (a closed chord
+  // wraps round): *hasPrev / *hasNext false where the chord ends.
+  int32_t chordNeighbours(int32_t id, Slot s, Slot* prev, bool* hasPrev, Slot* next, bool* hasNext) const;
   void appendSlots(const std::vector<Piece>& pieces, std::vector<Slot>& out) const;
   void dropPieces(const std::vector<int32_t>& ids);
   Slot chordSlotAt(int32_t id, int32_t p) const;

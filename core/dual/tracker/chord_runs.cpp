@@ -34,31 +34,42 @@ int32_t DualTracker::placeInChord(int32_t id, Slot s) const {
   return -1;
 }
 
-// Read within s's piece where they lie in it; only at a piece's end does chordSlotAt walk the pieces.
-int32_t DualTracker::chordNeighbours(int32_t id, Slot s, int32_t len, bool closed, Slot* prev, Slot* next) const {
+// Read within s's piece where they lie in it; only at a piece's end does it read the chord's
+// length and closedness and walk the pieces again (chordSlotAt).
+int32_t DualTracker::chordNeighbours(int32_t id, Slot s, Slot* prev, bool* hasPrev, Slot* next, bool* hasNext) const {
   const int32_t l = dual_.chordLabel[size_t(s.hex)][size_t(s.axis)];
   if (l < 0) return -1;
   const int32_t i = dual_.chordPlace[slotIndex(s)];
   int32_t before = 0;
-  for (const Piece& p : pieces_[size_t(id)]) {
+  const std::vector<Piece>& pieces = pieces_[size_t(id)];
+  for (const Piece& p : pieces) {
     const int32_t n = p.hi - p.lo;
     if (p.label == l && i >= p.lo && i < p.hi) {
       const int32_t k = p.reversed ? p.hi - 1 - i : i - p.lo;  // s's offset in the piece
       const int32_t q = before + k;                             // its place in the chord
       const std::vector<Slot>& run = runs_[size_t(l)];
       const int32_t step = p.reversed ? -1 : 1;
-      if (k > 0)
+      int32_t len = -1;
+      bool closed = false;
+      auto ends = [&] {  // the chord's length and closedness, read once and only at a piece's end
+        if (len < 0) len = chordLength(id), closed = dual_.chords[size_t(id)].closed;
+      };
+      if (k > 0) {
         *prev = run[size_t(i - step)];
-      else if (q > 0 || closed)
-        *prev = chordSlotAt(id, q > 0 ? q - 1 : len - 1);
-      else
-        *prev = Slot{};
-      if (k + 1 < n)
+        *hasPrev = true;
+      } else {
+        ends();
+        *hasPrev = q > 0 || closed;
+        if (*hasPrev) *prev = chordSlotAt(id, q > 0 ? q - 1 : len - 1);
+      }
+      if (k + 1 < n) {
         *next = run[size_t(i + step)];
-      else if (q + 1 < len || closed)
-        *next = chordSlotAt(id, q + 1 < len ? q + 1 : 0);
-      else
-        *next = Slot{};
+        *hasNext = true;
+      } else {
+        ends();
+        *hasNext = q + 1 < len || closed;
+        if (*hasNext) *next = chordSlotAt(id, q + 1 < len ? q + 1 : 0);
+      }
       return q;
     }
     before += n;

@@ -68,13 +68,11 @@ std::vector<int32_t> DualTracker::changedChords(const Complex& cx, const std::ve
 
 // A chord whose touched slots (`own`) still have the same neighbours along it is unchanged.
 bool DualTracker::chordUnchanged(const Complex& cx, int32_t id, const std::vector<Slot>& own) const {
-  const int32_t len = chordLength(id);
-  const bool closed = dual_.chords[size_t(id)].closed;
   for (Slot s : own) {
     if (!cx.isHex(s.hex)) return false;
     Slot prev, next;
-    const int32_t p = chordNeighbours(id, s, len, closed, &prev, &next);
-    if (p < 0) return false;
+    bool hasPrev = false, hasNext = false;
+    if (chordNeighbours(id, s, &prev, &hasPrev, &next, &hasNext) < 0) return false;
     auto along = [&](int face, Slot& n) {
       Gluing g = cx.gluing(s.hex, face);
       if (g.boundary()) return false;
@@ -83,7 +81,6 @@ bool DualTracker::chordUnchanged(const Complex& cx, int32_t id, const std::vecto
     };
     Slot lo, hi;
     const bool hasLo = along(2 * s.axis, lo), hasHi = along(2 * s.axis + 1, hi);
-    const bool hasPrev = p > 0 || closed, hasNext = p + 1 < len || closed;
     auto same = [](bool x, Slot a, bool y, Slot b) { return x == y && (!x || a == b); };
     if (!(same(hasLo, lo, hasPrev, prev) && same(hasHi, hi, hasNext, next)) &&
         !(same(hasLo, lo, hasNext, next) && same(hasHi, hi, hasPrev, prev)))
