@@ -177,11 +177,19 @@ TEST_CASE("dual tracker: checkInvariants names the invariant a broken state brea
         "dual tracker invariant: delta_ (Euler changes) left after an update");
 }
 
+// A random pillow, hex push or chord push at live hex h, as op-log text (the draws in this order).
+static std::string randomStepAt(std::mt19937& rng, HexId h) {
+  const char* ops[] = {"pillow", "hexpush", "chordpush"};
+  const std::string op = ops[rng() % 3], hs = "h" + std::to_string(h);
+  return op == "chordpush" ? "chordpush " + hs + "e" + std::to_string(rng() % 12) + " " + hs + "f" +
+                                 std::to_string(rng() % 6) + " " + hs + "f" + std::to_string(rng() % 6)
+                           : op + " " + hs + "f" + std::to_string(rng() % 6);
+}
+
 // refreshShares walks only the edges an edit log can have changed (edgesChangedBy); the same log
 // read after its undo must re-walk a hex the undo brings back. Random pillows, hex pushes and chord
 // pushes with undos interleaved (one in four), every edge mark and share recomputed after each.
 TEST_CASE("dual tracker: edge marks and shares hold when only the edited edges are walked, undos interleaved") {
-  const char* ops[] = {"pillow", "hexpush", "chordpush"};
   int applied = 0, undone = 0;
   for (uint32_t seed = 1; seed <= 10; ++seed) {
     std::printf("tracker edge marks: seed %u\n", seed);
@@ -203,10 +211,7 @@ TEST_CASE("dual tracker: edge marks and shares hold when only the edited edges a
       }
       const HexId h = HexId(rng() % uint32_t(cx.hexCapacity()));
       if (!cx.isHex(h)) continue;
-      const std::string op = ops[rng() % 3], hs = "h" + std::to_string(h);
-      const std::string text = op == "chordpush" ? "chordpush " + hs + "e" + std::to_string(rng() % 12) + " " + hs + "f" +
-                                                       std::to_string(rng() % 6) + " " + hs + "f" + std::to_string(rng() % 6)
-                                                 : op + " " + hs + "f" + std::to_string(rng() % 6);
+      const std::string text = randomStepAt(rng, h);
       if (std::optional<OpResult> r = tryApplyStep(cx, text)) {
         tracker.update(cx, r->edits, keepsSheetTopology(*r));
         REQUIRE_NOTHROW(tracker.checkInvariants(cx));
@@ -232,7 +237,6 @@ TEST_CASE("dual tracker: edge marks and shares hold when only the edited edges a
 // axis a are glued exactly as before, and a hex not touched kept all its gluings. Checked against
 // a copy of the complex taken before each random step and before each undo.
 TEST_CASE("dual tracker: a slot whose chord-axis bit is clear kept its neighbours across both faces") {
-  const char* ops[] = {"pillow", "hexpush", "chordpush"};
   int applied = 0, undone = 0, skipped = 0;
   auto sameGluing = [](Gluing x, Gluing y) { return x.hex == y.hex && (x.boundary() || (x.face == y.face && x.orient == y.orient)); };
   auto check = [&](const Complex& before, const Complex& after, const Complex::EditLog& log) {
@@ -273,10 +277,7 @@ TEST_CASE("dual tracker: a slot whose chord-axis bit is clear kept its neighbour
       }
       const HexId h = HexId(rng() % uint32_t(cx.hexCapacity()));
       if (!cx.isHex(h)) continue;
-      const std::string op = ops[rng() % 3], hs = "h" + std::to_string(h);
-      const std::string text = op == "chordpush" ? "chordpush " + hs + "e" + std::to_string(rng() % 12) + " " + hs + "f" +
-                                                       std::to_string(rng() % 6) + " " + hs + "f" + std::to_string(rng() % 6)
-                                                 : op + " " + hs + "f" + std::to_string(rng() % 6);
+      const std::string text = randomStepAt(rng, h);
       if (std::optional<OpResult> r = tryApplyStep(cx, text)) {
         check(before, cx, r->edits);
         ++applied;
