@@ -39,30 +39,39 @@ void sortUniqueIds(std::vector<HexId>& ids) {
     for (uint64_t b = bits[w]; b; b &= b - 1) ids.push_back(HexId(64 * w + size_t(__builtin_ctzll(b))));
 }
 
+// The hexes an edit touches, each with what it marks (see edgesChangedBy): mark(hex, bits) once
+// per hex, the same rule for touchedHexes, edgesChangedBy and touchedHexesWithEdges.
+template <class Mark>
+void marksOf(const Complex::Edit& e, Mark mark) {
+  auto faceBits = [](int f) {
+    unsigned m = chordAxisChanged(tables::axisOfFace(f));
+    for (int edge : tables::kFaceEdges[size_t(f)]) m |= 1u << edge;
+    return uint16_t(m);
+  };
+  switch (e.kind) {
+    case Complex::Edit::AddHex:
+    case Complex::Edit::RemoveHex:
+      mark(e.hex, uint16_t(0xFFFu | kChordAxesChanged));
+      break;
+    case Complex::Edit::SetCorner:
+      mark(e.hex, uint16_t(0));
+      break;
+    case Complex::Edit::Glue:  // value: the partner, as glued
+    case Complex::Edit::Unglue:
+      mark(e.hex, faceBits(e.face));
+      mark(HexId(e.value >> 6), faceBits(int((e.value >> 3) & 7)));
+      break;
+    default:
+      break;
+  }
+}
+
 }  // namespace
 
 std::vector<HexId> touchedHexes(const Complex&, const Complex::EditLog& log) {
   std::vector<HexId> out;
   out.reserve(2 * log.edits.size());  // at most two hexes per edit: one allocation
-  for (const Complex::Edit& e : log.edits) {
-    switch (e.kind) {
-      case Complex::Edit::AddHex:
-      case Complex::Edit::RemoveHex:
-      case Complex::Edit::SetCorner:
-        out.push_back(e.hex);
-        break;
-      case Complex::Edit::Glue:  // value: the partner, as glued
-        out.push_back(e.hex);
-        out.push_back(HexId(e.value >> 6));
-        break;
-      case Complex::Edit::Unglue:
-        out.push_back(e.hex);
-        out.push_back(HexId(e.value >> 6));
-        break;
-      default:
-        break;
-    }
-  }
+  for (const Complex::Edit& e : log.edits) marksOf(e, [&](HexId h, uint16_t) { out.push_back(h); });
   sortUniqueIds(out);
   return out;
 }
@@ -89,20 +98,7 @@ std::vector<uint16_t> edgesChangedBy(const Complex::EditLog& log, const std::vec
     const auto at = std::lower_bound(touched.begin(), touched.end(), h);
     if (at != touched.end() && *at == h) out[size_t(at - touched.begin())] |= edges;
   };
-  auto faceEdges = [](int f) {
-    uint16_t m = 0;
-    for (int e : tables::kFaceEdges[size_t(f)]) m = uint16_t(m | (1u << e));
-    return m;
-  };
-  for (const Complex::Edit& e : log.edits) {
-    if (e.kind == Complex::Edit::AddHex || e.kind == Complex::Edit::RemoveHex) {
-      mark(e.hex, uint16_t(0xFFF | kChordAxesChanged));
-    } else if (e.kind == Complex::Edit::Glue || e.kind == Complex::Edit::Unglue) {
-      const int f = int((e.value >> 3) & 7);
-      mark(e.hex, uint16_t(faceEdges(e.face) | chordAxisChanged(tables::axisOfFace(e.face))));
-      mark(HexId(e.value >> 6), uint16_t(faceEdges(f) | chordAxisChanged(tables::axisOfFace(f))));
-    }
-  }
+  for (const Complex::Edit& e : log.edits) marksOf(e, mark);
   return out;
 }
 
@@ -194,31 +190,7 @@ void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touc
     if (!m) touched.push_back(h);
     m = uint16_t(m | kListed | mask);
   };
-  auto faceEdges = [](int f) {
-    unsigned m = 0;
-    for (int e : tables::kFaceEdges[size_t(f)]) m |= 1u << e;
-    return m;
-  };
-  for (const Complex::Edit& e : log.edits) {
-    switch (e.kind) {
-      case Complex::Edit::AddHex:
-      case Complex::Edit::RemoveHex:
-        add(e.hex, 0xFFFu | kChordAxesChanged);
-        break;
-      case Complex::Edit::SetCorner:
-        add(e.hex, 0);
-        break;
-      case Complex::Edit::Glue:
-      case Complex::Edit::Unglue: {
-        const int f = int((e.value >> 3) & 7);
-        add(e.hex, faceEdges(e.face) | chordAxisChanged(tables::axisOfFace(e.face)));
-        add(HexId(e.value >> 6), faceEdges(f) | chordAxisChanged(tables::axisOfFace(f)));
-        break;
-      }
-      default:
-        break;
-    }
-  }
+  for (const Complex::Edit& e : log.edits) marksOf(e, add);
   sortUniqueIds(touched);  // distinct already; a long list (a sheet operation's) by bitmap, in linear time
   edges.resize(touched.size());
   for (size_t i = 0; i < touched.size(); ++i) {

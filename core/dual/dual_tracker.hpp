@@ -131,6 +131,7 @@ class DualTracker {
     bool reversed;
   };
   int32_t chordLength(int32_t id) const;
+  const Piece* pieceOf(int32_t id, Slot s, int32_t* k, int32_t* q) const;
   int32_t placeInChord(int32_t id, Slot s) const;  // -1 when s is not listed in chord id
   // placeInChord, and the slots before and after s along chord id where there are (a closed chord
   // wraps round): *hasPrev / *hasNext false where the chord ends.
@@ -222,7 +223,8 @@ class DualTracker {
   std::vector<int32_t> front_;    // per slot: lockstep front + 1 that reached it (0 outside an update)
   std::vector<uint16_t> walked_;  // per hex: edges walked by the current refreshShares (0 outside it)
   // Parallel to the current update's touched hexes: the edges whose cycles its edits can have
-  // changed (edgesChangedBy); empty when not known (every edge of a live touched hex is walked).
+  // changed and the chord-axis bits (edgesChangedBy); empty when not known (every edge of a live
+  // touched hex is walked, every slot of it checked against its chord).
   std::vector<uint16_t> edgesToWalk_;
   // Chords: per label its run of slots (by place); per chord id its pieces; labels no slot carries.
   std::vector<std::vector<Slot>> runs_;

@@ -22,59 +22,60 @@ int32_t DualTracker::chordLength(int32_t id) const {
   return n;
 }
 
-int32_t DualTracker::placeInChord(int32_t id, Slot s) const {
+// The piece of chord id listing slot s, s's offset k in it and its place q in the chord; null
+// when s is not listed in the chord.
+const DualTracker::Piece* DualTracker::pieceOf(int32_t id, Slot s, int32_t* k, int32_t* q) const {
   const int32_t l = dual_.chordLabel[size_t(s.hex)][size_t(s.axis)];
-  if (l < 0) return -1;
+  if (l < 0) return nullptr;
   const int32_t i = dual_.chordPlace[slotIndex(s)];
   int32_t before = 0;
   for (const Piece& p : pieces_[size_t(id)]) {
-    if (p.label == l && i >= p.lo && i < p.hi) return before + (p.reversed ? p.hi - 1 - i : i - p.lo);
+    if (p.label == l && i >= p.lo && i < p.hi) {
+      *k = p.reversed ? p.hi - 1 - i : i - p.lo;
+      *q = before + *k;
+      return &p;
+    }
     before += p.hi - p.lo;
   }
-  return -1;
+  return nullptr;
+}
+
+int32_t DualTracker::placeInChord(int32_t id, Slot s) const {
+  int32_t k = 0, q = -1;
+  return pieceOf(id, s, &k, &q) ? q : -1;
 }
 
 // Read within s's piece where they lie in it; only at a piece's end does it read the chord's
 // length and closedness and walk the pieces again (chordSlotAt).
 int32_t DualTracker::chordNeighbours(int32_t id, Slot s, Slot* prev, bool* hasPrev, Slot* next, bool* hasNext) const {
-  const int32_t l = dual_.chordLabel[size_t(s.hex)][size_t(s.axis)];
-  if (l < 0) return -1;
-  const int32_t i = dual_.chordPlace[slotIndex(s)];
-  int32_t before = 0;
-  const std::vector<Piece>& pieces = pieces_[size_t(id)];
-  for (const Piece& p : pieces) {
-    const int32_t n = p.hi - p.lo;
-    if (p.label == l && i >= p.lo && i < p.hi) {
-      const int32_t k = p.reversed ? p.hi - 1 - i : i - p.lo;  // s's offset in the piece
-      const int32_t q = before + k;                             // its place in the chord
-      const std::vector<Slot>& run = runs_[size_t(l)];
-      const int32_t step = p.reversed ? -1 : 1;
-      int32_t len = -1;
-      bool closed = false;
-      auto ends = [&] {  // the chord's length and closedness, read once and only at a piece's end
-        if (len < 0) len = chordLength(id), closed = dual_.chords[size_t(id)].closed;
-      };
-      if (k > 0) {
-        *prev = run[size_t(i - step)];
-        *hasPrev = true;
-      } else {
-        ends();
-        *hasPrev = q > 0 || closed;
-        if (*hasPrev) *prev = chordSlotAt(id, q > 0 ? q - 1 : len - 1);
-      }
-      if (k + 1 < n) {
-        *next = run[size_t(i + step)];
-        *hasNext = true;
-      } else {
-        ends();
-        *hasNext = q + 1 < len || closed;
-        if (*hasNext) *next = chordSlotAt(id, q + 1 < len ? q + 1 : 0);
-      }
-      return q;
-    }
-    before += n;
+  int32_t k = 0, q = -1;
+  const Piece* p = pieceOf(id, s, &k, &q);
+  if (!p) return -1;
+  // s's neighbours inside the piece: its run's places beside s's, in the piece's direction.
+  const int32_t i = dual_.chordPlace[slotIndex(s)], step = p->reversed ? -1 : 1;
+  const std::vector<Slot>& run = runs_[size_t(p->label)];
+  int32_t len = -1;
+  bool closed = false;
+  auto ends = [&] {  // the chord's length and closedness, read once and only at a piece's end
+    if (len < 0) len = chordLength(id), closed = dual_.chords[size_t(id)].closed;
+  };
+  if (k > 0) {
+    *prev = run[size_t(i - step)];
+    *hasPrev = true;
+  } else {
+    ends();
+    *hasPrev = q > 0 || closed;
+    if (*hasPrev) *prev = chordSlotAt(id, q > 0 ? q - 1 : len - 1);
   }
-  return -1;
+  if (k + 1 < p->hi - p->lo) {
+    *next = run[size_t(i + step)];
+    *hasNext = true;
+  } else {
+    ends();
+    *hasNext = q + 1 < len || closed;
+    if (*hasNext) *next = chordSlotAt(id, q + 1 < len ? q + 1 : 0);
+  }
+  return q;
 }
 
 // The chords lose their pieces (their labels' places are cut from them).
