@@ -27,7 +27,7 @@ namespace {
 // Pending runs, additions and removals kept before a list is merged without being read: few runs,
 // and additions or removals up to an eighth of the list, so that merging them stays linear in it.
 constexpr size_t kMaxRuns = 16;
-bool tooMany(size_t pending, size_t size) { return pending > 64 + size / 8; }
+bool tooMany(size_t pending, size_t size) { return pending > 256 + size / 2; }
 
 // Merges sorted `run` into sorted `base` in place, from the back (no second buffer).
 void mergeInto(std::vector<Slot>& base, const std::vector<Slot>& run) {

@@ -27,12 +27,12 @@ uint16_t walkedFan(int edge) { return uint16_t(1u << (12 + tables::axisOfEdge(ed
 
 // The near-boundary bits of hex m after an edit that walked the edges marked in `walked`: an axis
 // is near when one of its edges walked is a fan now, or (when it was near before) one of its
-// other edges is.
+// other edges is (an edge walked and not a fan is closed: it is not walked again).
 uint16_t nearBits(const Complex& cx, HexId m, uint16_t marks, uint16_t walked) {
   uint16_t bits = 0;
   for (int a = 0; a < 3; ++a)
     if ((walked & kEdgeAxisNearBoundary(a)) ||
-        ((marks & kEdgeAxisNearBoundary(a)) && edgesNear(cx, m, uint16_t(0xFu << (4 * a)))))
+        ((marks & kEdgeAxisNearBoundary(a)) && edgesNear(cx, m, (0xFu << (4 * a)) & ~unsigned(walked))))
       bits |= kEdgeAxisNearBoundary(a);
   return bits ? uint16_t(bits | kNearBoundary) : 0;
 }
