@@ -25,7 +25,8 @@ void SlotList::clear() {
 
 namespace {
 // Pending runs, additions and removals kept before a list is merged without being read: few runs,
-// and additions or removals up to an eighth of the list, so that merging them stays linear in it.
+// and additions or removals up to 256 and half the list, so that merging them stays linear in it
+// (with fewer merges of a small sheet's list than at an eighth: bench/README, 2026-12-06).
 constexpr size_t kMaxRuns = 16;
 bool tooMany(size_t pending, size_t size) { return pending > 256 + size / 2; }
 
