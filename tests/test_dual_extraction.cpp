@@ -110,7 +110,7 @@ std::vector<int32_t> referenceChords(const Complex& cx, Dual& d) {
       Chord ch;
       ch.id = int32_t(d.chords.size());
       walks.push_back(walkChordForward(cx, {h, axisOfFace(f)}, oppositeFace(f), ch, chordOf));
-      if (!walks.back().smallestEnteredLow) std::reverse(ch.slots.begin(), ch.slots.end());
+      if (!walks.back().smallestEnteredLow) std::reverse(ch.slots.own().begin(), ch.slots.own().end());
       d.chords.push_back(std::move(ch));
     }
   for (HexId h : cx.hexes())

@@ -132,7 +132,7 @@ TEST_CASE("a Moebius-band sheet (the quarter-twisted ring): one twisted seam bet
 TEST_CASE("an annulus cut open: one seam drawn twice in opposite directions") {
   Complex r = makeRing(8, 2, 2);
   Dual d = extractDual(r);
-  SheetDiagram dg = layoutPolygon(d, 0, buildMidSurface(r, d.sheets[0].slots));
+  SheetDiagram dg = layoutPolygon(d, 0, buildMidSurface(r, {d.sheets[0].slots.begin(), d.sheets[0].slots.end()}));
   checkDiagram(dg, d.sheets[0].slots.size());
   PolygonCounts c = countSides(dg);
   CHECK(dg.arcs.size() == 4);

@@ -208,7 +208,7 @@ TEST_CASE("property: local chord updates equal a re-walk of the changed chords")
         REQUIRE(da.chords[c].closed == db.chords[c].closed);
         REQUIRE(da.chords[c].selfIntersecting == db.chords[c].selfIntersecting);
         if (da.chords[c].slots != db.chords[c].slots) {
-          auto list = [](const std::vector<Slot>& v) {
+          auto list = [](const PooledSlots& v) {
             std::string t;
             for (Slot x : v) t += " " + std::to_string(x.hex) + ":" + std::to_string(x.axis);
             return t;

@@ -54,7 +54,7 @@ val WasmMesh::slotsToArray(int id, bool sheet) {
     g_lastErrorCode = "PRECONDITION";
     return val::null();
   }
-  const std::vector<Slot>& slots = sheet ? d.sheets[size_t(id)].slots.get() : d.chords[size_t(id)].slots;
+  const std::span<const Slot> slots = sheet ? d.sheets[size_t(id)].slots.view() : d.chords[size_t(id)].slots.view();
   scratch_.clear();
   for (const Slot& s : slots) scratch_.push_back(s.hex);
   return copyOut("Int32Array", scratch_);

@@ -563,16 +563,21 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
     d.sheets[s].id = int32_t(s);
     stats[s].classify(d.sheets[s]);
   }
-  // Slot lists, exactly sized: one pass over the labels.
-  std::vector<std::vector<Slot>> lists(stats.size());
-  for (size_t s = 0; s < stats.size(); ++s) lists[s].reserve(size_t(stats[s].slots));
+  // Slot lists, one range each of one pool (PooledSlots), sorted: one pass over the labels.
+  std::vector<size_t> at(stats.size() + 1, 0);
+  for (size_t s = 0; s < stats.size(); ++s) at[s + 1] = at[s] + size_t(stats[s].slots);
+  std::vector<Slot> pool;
+  reserveHuge(pool, at.back());
+  pool.resize(at.back());
+  std::vector<size_t> next(at.begin(), at.end() - 1);
   for (HexId h : cx.hexes()) {
     const auto& l = d.sheetLabel[size_t(h)];
     if (l[0] == l[1] || l[0] == l[2]) d.sheets[size_t(l[0])].selfIntersecting = true;
     if (l[1] == l[2]) d.sheets[size_t(l[1])].selfIntersecting = true;
-    for (int a = 0; a < 3; ++a) lists[size_t(l[size_t(a)])].push_back({h, a});
+    for (int a = 0; a < 3; ++a) pool[next[size_t(l[size_t(a)])]++] = {h, a};
   }
-  for (size_t s = 0; s < stats.size(); ++s) d.sheets[s].slots = std::move(lists[s]);
+  const auto shared = std::make_shared<const std::vector<Slot>>(std::move(pool));
+  for (size_t s = 0; s < stats.size(); ++s) d.sheets[s].slots = SlotList(PooledSlots(shared, at[s], at[s + 1] - at[s]));
 }
 
 // Chord slot lists. Ids and labels are known (the chord union-find); each open chord is walked
@@ -587,14 +592,19 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
     d.chords[c].id = int32_t(c);
     d.chords[c].selfIntersecting = plan.selfIntersecting[c] != 0;
   }
+  // Each chord's slots, one range of one pool (PooledSlots), in the order the walks end.
+  std::vector<Slot> pool;
+  reserveHuge(pool, 3 * size_t(cx.numHexes()));
+  std::vector<std::pair<size_t, size_t>> range(d.chords.size());
   auto keep = [&](int32_t id, const std::vector<Slot>& walked, bool reversed) {
-    Chord& ch = d.chords[size_t(id)];
+    const size_t begin = pool.size();
     if (reversed)
-      ch.slots.assign(walked.rbegin(), walked.rend());
+      pool.insert(pool.end(), walked.rbegin(), walked.rend());
     else
-      ch.slots.assign(walked.begin(), walked.end());
+      pool.insert(pool.end(), walked.begin(), walked.end());
+    range[size_t(id)] = {begin, walked.size()};
     if (places)
-      for (size_t i = 0; i < ch.slots.size(); ++i) places[slotIndex(ch.slots[i].hex, ch.slots[i].axis)] = int32_t(i);
+      for (size_t i = 0; i < walked.size(); ++i) places[slotIndex(pool[begin + i].hex, pool[begin + i].axis)] = int32_t(i);
   };
   struct Lane {
     int32_t chord = -1;
@@ -642,6 +652,8 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
       d.chords[c].closed = walkClosedChord(cx, first, walked);
       keep(int32_t(c), walked, false);
     }
+  const auto shared = std::make_shared<const std::vector<Slot>>(std::move(pool));
+  for (size_t c = 0; c < d.chords.size(); ++c) d.chords[c].slots = PooledSlots(shared, range[c].first, range[c].second);
 }
 
 // Every chord one label, equal to its id (DualTracker cuts and joins them later).

@@ -3,7 +3,9 @@
 // sheet slot (h, a) is the layer crossed by h's edges along axis a; chord slot (h, a) is the
 // column through h's two faces normal to a. TK03 §1.1.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <memory>
 #include <string>
 #include <span>
 #include <vector>
@@ -19,6 +21,64 @@ struct Slot {
   friend bool operator<(Slot a, Slot b) { return a.hex != b.hex ? a.hex < b.hex : a.axis < b.axis; }
 };
 
+// A list of slots that either views a range of a pool or owns a vector. Extraction lists every
+// sheet's slots in one pool and every chord's in another (each one allocation, in huge pages where
+// the OS gives them: a 1M-hex mesh's 30,300 lists cost a few dozen page faults, not 11,600); a list
+// that is written (an update's new slots) copies its range out first. Copies share the pool, which
+// lives while any list views it. Read like a const std::vector<Slot>.
+class PooledSlots {
+ public:
+  using Pool = std::shared_ptr<const std::vector<Slot>>;
+  PooledSlots() = default;
+  PooledSlots(std::vector<Slot> own);
+  PooledSlots(Pool pool, size_t begin, size_t size);
+  // Out of line, like the writers below: every copy, move and destruction of a Sheet, Chord or
+  // Dual would otherwise inline the pool's reference counting (and crowd out hotter inlining).
+  PooledSlots(const PooledSlots&);
+  PooledSlots(PooledSlots&&) noexcept;
+  PooledSlots& operator=(const PooledSlots&);
+  PooledSlots& operator=(PooledSlots&&) noexcept;
+  ~PooledSlots();
+  PooledSlots& operator=(std::vector<Slot> own);
+  std::span<const Slot> view() const {
+    return pool_ ? std::span<const Slot>(pool_->data() + begin_, size_) : std::span<const Slot>(own_);
+  }
+  const Slot* begin() const { return view().data(); }
+  const Slot* end() const {
+    const std::span<const Slot> v = view();
+    return v.data() + v.size();
+  }
+  size_t size() const { return pool_ ? size_ : own_.size(); }
+  bool empty() const { return size() == 0; }
+  const Slot& operator[](size_t i) const { return view()[i]; }
+  const Slot& front() const { return view().front(); }
+  const Slot& back() const { return view().back(); }
+  bool pooled() const { return pool_ != nullptr; }
+  size_t capacity() const { return own_.capacity(); }  // of its own vector (0 while pooled)
+  // Writing: a pooled list's slots are copied into its own vector first.
+  std::vector<Slot>& own() {
+    if (pool_) copyOut();
+    return own_;
+  }
+  void clear();
+  void reserve(size_t n) { own().reserve(n); }
+  void push_back(Slot s) { own().push_back(s); }
+  template <class It>
+  void assign(It first, It last) {
+    clear();
+    own_.assign(first, last);
+  }
+  friend bool operator==(const PooledSlots& a, const PooledSlots& b) { return equal(a.view(), b.view()); }
+  friend bool operator==(const PooledSlots& a, const std::vector<Slot>& b) { return equal(a.view(), b); }
+
+ private:
+  void copyOut();
+  static bool equal(std::span<const Slot> a, std::span<const Slot> b);
+  Pool pool_;
+  size_t begin_ = 0, size_ = 0;
+  std::vector<Slot> own_;
+};
+
 // A sheet's slots, sorted, read like a const std::vector<Slot>. DualTracker merges two sheets by
 // handing one list to the other as a pending run and drops slots as pending removals; the first
 // read merges them (linear in the list), so an update that merges two large sheets stays local.
@@ -27,16 +87,17 @@ class SlotList {
  public:
   SlotList() = default;
   SlotList(std::vector<Slot> sorted) : list_(std::move(sorted)), size_(list_.size()) {}
+  SlotList(PooledSlots sorted) : list_(std::move(sorted)), size_(list_.size()) {}
   SlotList& operator=(std::vector<Slot> sorted);
-  const std::vector<Slot>& get() const {
+  const PooledSlots& get() const {
     if (!runs_.empty() || !adds_.empty() || !gone_.empty()) settle();
     return list_;
   }
-  operator const std::vector<Slot>&() const { return get(); }
+  std::span<const Slot> view() const { return get().view(); }
   size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
-  std::vector<Slot>::const_iterator begin() const { return get().begin(); }
-  std::vector<Slot>::const_iterator end() const { return get().end(); }
+  const Slot* begin() const { return get().begin(); }
+  const Slot* end() const { return get().end(); }
   const Slot& operator[](size_t i) const { return get()[i]; }
   const Slot& front() const { return get().front(); }
   const Slot& back() const { return get().back(); }
@@ -56,7 +117,7 @@ class SlotList {
 
  private:
   void settle() const;
-  mutable std::vector<Slot> list_;
+  mutable PooledSlots list_;
   mutable std::vector<std::vector<Slot>> runs_;  // sorted runs (merged lists) waiting to join
   mutable std::vector<Slot> adds_;               // slots waiting to join (a few per edit), in no order
   mutable std::vector<Slot> gone_;               // listed slots waiting to leave
@@ -77,7 +138,7 @@ struct Sheet {
 struct Chord {
   int id = -1;
   bool alive = true;
-  std::vector<Slot> slots;  // in order along the chord (from a boundary end when open)
+  PooledSlots slots;        // in order along the chord (from a boundary end when open)
   bool closed = false;      // a ring that never reaches the boundary
   bool selfIntersecting = false;
 };

@@ -227,7 +227,7 @@ class DualTracker {
   // touched hex is walked, every slot of it checked against its chord).
   std::vector<uint16_t> edgesToWalk_;
   // Chords: per label its run of slots (by place); per chord id its pieces; labels no slot carries.
-  std::vector<std::vector<Slot>> runs_;
+  std::vector<PooledSlots> runs_;
   std::vector<std::vector<Piece>> pieces_;
   std::vector<int32_t> freeChordLabels_;
   std::vector<int32_t> dropped_;            // labels that lost places in this update (released after it)

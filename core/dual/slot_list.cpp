@@ -6,6 +6,34 @@
 
 namespace hexdual {
 
+PooledSlots::PooledSlots(std::vector<Slot> own) : own_(std::move(own)) {}
+PooledSlots::PooledSlots(Pool pool, size_t begin, size_t size) : pool_(std::move(pool)), begin_(begin), size_(size) {}
+PooledSlots::PooledSlots(const PooledSlots&) = default;
+PooledSlots::PooledSlots(PooledSlots&&) noexcept = default;
+PooledSlots& PooledSlots::operator=(const PooledSlots&) = default;
+PooledSlots& PooledSlots::operator=(PooledSlots&&) noexcept = default;
+PooledSlots::~PooledSlots() = default;
+
+PooledSlots& PooledSlots::operator=(std::vector<Slot> own) {
+  pool_.reset();
+  own_ = std::move(own);
+  return *this;
+}
+
+void PooledSlots::clear() {
+  pool_.reset();
+  own_.clear();
+}
+
+void PooledSlots::copyOut() {
+  own_.assign(pool_->begin() + std::ptrdiff_t(begin_), pool_->begin() + std::ptrdiff_t(begin_ + size_));
+  pool_.reset();
+}
+
+bool PooledSlots::equal(std::span<const Slot> a, std::span<const Slot> b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end());
+}
+
 SlotList& SlotList::operator=(std::vector<Slot> sorted) {
   list_ = std::move(sorted);
   runs_.clear();
@@ -53,7 +81,7 @@ void SlotList::absorb(SlotList&& other) {
     return;
   }
   size_ += other.size_;
-  if (!other.list_.empty()) runs_.push_back(std::move(other.list_));
+  if (!other.list_.empty()) runs_.push_back(std::move(other.list_.own()));
   for (auto& r : other.runs_) runs_.push_back(std::move(r));
   if (!other.adds_.empty()) runs_.push_back(std::move(other.adds_));
   gone_.insert(gone_.end(), other.gone_.begin(), other.gone_.end());
@@ -73,7 +101,7 @@ void SlotList::remove(std::span<const Slot> listed) {
 // (one listed copy per removal). The pending buffers keep their capacity.
 void SlotList::settle() const {
   if (!runs_.empty()) {
-    runs_.push_back(std::move(list_));
+    runs_.push_back(std::move(list_.own()));
     std::sort(runs_.begin(), runs_.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
     std::vector<Slot> base = std::move(runs_[0]), rest;
     for (size_t r = runs_.size(); r-- > 1;) {
@@ -91,21 +119,22 @@ void SlotList::settle() const {
   }
   if (!adds_.empty()) {
     if (!std::is_sorted(adds_.begin(), adds_.end())) std::sort(adds_.begin(), adds_.end());
-    mergeInto(list_, adds_);
+    mergeInto(list_.own(), adds_);
     adds_.clear();
   }
   if (!gone_.empty()) {
     std::sort(gone_.begin(), gone_.end());
+    std::vector<Slot>& list = list_.own();
     size_t w = 0, g = 0;
-    for (size_t r = 0; r < list_.size(); ++r) {
-      while (g < gone_.size() && gone_[g] < list_[r]) ++g;
-      if (g < gone_.size() && gone_[g] == list_[r]) {
+    for (size_t r = 0; r < list.size(); ++r) {
+      while (g < gone_.size() && gone_[g] < list[r]) ++g;
+      if (g < gone_.size() && gone_[g] == list[r]) {
         ++g;
         continue;
       }
-      list_[w++] = list_[r];
+      list[w++] = list[r];
     }
-    list_.resize(w);
+    list.resize(w);
     gone_.clear();
   }
 }

@@ -14,7 +14,7 @@ SheetDiagram layoutSheet(const Complex& cx, const Dual& dual, int sheet) {
   if (sheet < 0 || size_t(sheet) >= dual.sheets.size() || !dual.sheets[size_t(sheet)].alive)
     throw Error("sheet diagram: sheet " + std::to_string(sheet) + " does not exist");
   const Sheet& sh = dual.sheets[size_t(sheet)];
-  MidSurface s = buildMidSurface(cx, sh.slots);
+  MidSurface s = buildMidSurface(cx, {sh.slots.begin(), sh.slots.end()});
   // Genus 0 (disk, annulus, disk with holes, sphere) is drawn as it is; anything else is cut open
   // into a fundamental polygon, and so is a genus-0 sheet whose drawing crowds (a large sphere
   // behind its opened face, a long tube as an annulus) when the polygon spreads better. Both are

@@ -53,7 +53,7 @@ int32_t DualTracker::chordNeighbours(int32_t id, Slot s, Slot* prev, bool* hasPr
   if (!p) return -1;
   // s's neighbours inside the piece: its run's places beside s's, in the piece's direction.
   const int32_t i = dual_.chordPlace[slotIndex(s)], step = p->reversed ? -1 : 1;
-  const std::vector<Slot>& run = runs_[size_t(p->label)];
+  const std::span<const Slot> run = runs_[size_t(p->label)].view();
   int32_t len = -1;
   bool closed = false;
   auto ends = [&] {  // the chord's length and closedness, read once and only at a piece's end
@@ -230,7 +230,7 @@ void DualTracker::settleChords() const {
     ch.slots.clear();
     if (!ch.alive) continue;
     ch.slots.reserve(size_t(chordLength(id)));
-    appendSlots(pieces_[size_t(id)], ch.slots);
+    appendSlots(pieces_[size_t(id)], ch.slots.own());
     if (chordSelf_[size_t(id)] == 2) chordSelf_[size_t(id)] = chordSelfIntersects(id);
     ch.selfIntersecting = chordSelf_[size_t(id)] != 0;
   }

@@ -120,7 +120,7 @@ void DualTracker::rewalkChords(const Complex& cx, const std::vector<HexId>& touc
   unsettledMark_.resize(n, 0);
   for (auto [id, l] : made) {
     const Chord& ch = dual_.chords[size_t(id)];
-    runs_[size_t(l)] = ch.slots;
+    runs_[size_t(l)].assign(ch.slots.begin(), ch.slots.end());
     for (size_t i = 0; i < ch.slots.size(); ++i) dual_.chordPlace[slotIndex(ch.slots[i])] = int32_t(i);
     const int32_t len = int32_t(ch.slots.size());
     dual_.labelCuts[size_t(l)].assign(1, Dual::ChordCut{0, len, id});
