@@ -286,3 +286,47 @@ TEST_CASE("SlotList: pending runs and removals read as one sorted list") {
   CHECK(mixed.front() == Slot{3, 1});
   CHECK(mixed.back() == Slot{239, 0});
 }
+
+// Extraction lists every sheet's slots in one pool and every chord's in another; a list copies
+// its range out when written, and the pool and the other lists viewing it are left as they were.
+TEST_CASE("PooledSlots: extraction's lists view two pools; a written list copies its range out") {
+  const Complex cx = makeGrid(3, 3, 3);
+  Dual d = extractDual(cx);
+  REQUIRE(d.sheets.size() == 9);
+  REQUIRE(d.chords.size() == 27);
+  size_t sheetSlots = 0, chordSlots = 0;
+  for (const Sheet& sh : d.sheets) {
+    CHECK(sh.slots.get().pooled());
+    CHECK(sh.slots.size() == 9);
+    CHECK(std::is_sorted(sh.slots.begin(), sh.slots.end()));
+    sheetSlots += sh.slots.size();
+  }
+  for (const Chord& ch : d.chords) {
+    CHECK(ch.slots.pooled());
+    CHECK(ch.slots.size() == 3);
+    chordSlots += ch.slots.size();
+  }
+  CHECK(sheetSlots == 81);
+  CHECK(chordSlots == 81);
+  // Consecutive lists of one pool: the first chord's last slot sits just before the next chord's first.
+  CHECK(d.chords[0].slots.end() == d.chords[1].slots.begin());
+  // A copy shares the pool; writing one copy leaves the other (and the next list) reading the pool.
+  const std::vector<Slot> before(d.chords[0].slots.begin(), d.chords[0].slots.end());
+  PooledSlots copy = d.chords[0].slots;
+  CHECK(copy.begin() == d.chords[0].slots.begin());
+  copy.push_back({26, 0});
+  CHECK(!copy.pooled());
+  CHECK(copy.size() == 4);
+  CHECK(copy.back() == Slot{26, 0});
+  CHECK(d.chords[0].slots.pooled());
+  CHECK(d.chords[0].slots == before);
+  CHECK(d.chords[0].slots.end() == d.chords[1].slots.begin());
+  // Assigning a list its own pooled range keeps the slots (the pool is let go after the copy).
+  PooledSlots alone = d.chords[2].slots;
+  const std::vector<Slot> third(alone.begin(), alone.end());
+  d = Dual();  // every other view of the pools is gone
+  alone.assign(alone.begin(), alone.end());
+  CHECK(!alone.pooled());
+  CHECK(alone == third);
+  CHECK(copy.size() == 4);
+}

@@ -63,10 +63,11 @@ class PooledSlots {
   void clear();
   void reserve(size_t n) { own().reserve(n); }
   void push_back(Slot s) { own().push_back(s); }
+  // (The pool is let go after the copy: [first, last) may lie in it.)
   template <class It>
   void assign(It first, It last) {
-    clear();
     own_.assign(first, last);
+    pool_.reset();
   }
   friend bool operator==(const PooledSlots& a, const PooledSlots& b) { return equal(a.view(), b.view()); }
   friend bool operator==(const PooledSlots& a, const std::vector<Slot>& b) { return equal(a.view(), b); }
