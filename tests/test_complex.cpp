@@ -137,6 +137,31 @@ TEST_CASE("edges(), vertices() and boundaryQuads() list each entity once") {
   CHECK(onQ == 2);
 }
 
+namespace {
+// The VmFlags line of the mapping holding p ("" where /proc cannot tell or there are no THPs).
+std::string vmFlagsAt(const void* p) {
+#if defined(__linux__)
+  if (!std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled")) return "";
+  const auto at = reinterpret_cast<uintptr_t>(p);
+  std::ifstream smaps("/proc/self/smaps");
+  std::string line, flags;
+  bool inside = false;
+  while (std::getline(smaps, line)) {
+    const std::string first = line.substr(0, line.find(' '));
+    unsigned long lo = 0, hi = 0;
+    if (first.find(':') == std::string::npos && std::sscanf(first.c_str(), "%lx-%lx", &lo, &hi) == 2)
+      inside = lo <= at && at < hi;  // a mapping's header line
+    else if (inside && line.rfind("VmFlags:", 0) == 0)
+      flags = line;
+  }
+  return flags;
+#else
+  (void)p;
+  return "";
+#endif
+}
+}  // namespace
+
 TEST_CASE("reserveHuge keeps the contents and, on Linux, advises huge pages for large storage") {
   std::vector<int32_t> v = {7, 8, 9};
   reserveHuge(v, size_t(4) << 20);  // 16 MiB
@@ -146,28 +171,48 @@ TEST_CASE("reserveHuge keeps the contents and, on Linux, advises huge pages for 
   assignHuge(w, 5, int32_t(-1));
   CHECK(w == std::vector<int32_t>(5, -1));
   CHECK(w.capacity() >= withHeadroom(5));  // new storage keeps an eighth more (and 64) for growth
-#if defined(__linux__)
   // The mapping holding the middle of the storage carries the kernel's huge-page advice flag.
-  const auto middle = reinterpret_cast<uintptr_t>(v.data() + (size_t(2) << 20));
-  std::ifstream smaps("/proc/self/smaps");
-  std::string line, flags;
-  bool inside = false;
-  while (std::getline(smaps, line)) {
-    const std::string first = line.substr(0, line.find(' '));
-    unsigned long lo = 0, hi = 0;
-    if (first.find(':') == std::string::npos && std::sscanf(first.c_str(), "%lx-%lx", &lo, &hi) == 2)
-      inside = lo <= middle && middle < hi;  // a mapping's header line
-    else if (inside && line.rfind("VmFlags:", 0) == 0)
-      flags = line;
-  }
   // Kernels without transparent huge pages (or /proc without VmFlags) cannot show the advice.
-  if (flags.empty() || !std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled")) {
+  const std::string flags = vmFlagsAt(v.data() + (size_t(2) << 20));
+  if (flags.empty()) {
     MESSAGE("no transparent huge pages or no VmFlags here: the advice is not checked");
     return;
   }
   INFO("VmFlags of the storage's mapping: " << flags);
   CHECK(flags.find(" hg") != std::string::npos);
+}
+
+TEST_CASE("HugePageAllocator: 1 MiB and up in whole advised 2 MiB pages; growHuge moves; reserveRoom leaves room") {
+  // Small storage is operator new's; from 1 MiB up (on Linux) it starts on a 2 MiB boundary, so no
+  // part of it is left to 4 KiB pages, and carries the huge-page advice.
+  std::vector<int64_t, HugePageAllocator<int64_t>> small(100, 5), big(size_t(3) << 17, 6);  // 800 B, 3 MiB
+  CHECK(small == std::vector<int64_t, HugePageAllocator<int64_t>>(100, 5));
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  CHECK(reinterpret_cast<uintptr_t>(big.data()) % (size_t(2) << 20) == 0);
+  const std::string flags = vmFlagsAt(big.data());
+  if (flags.empty())
+    MESSAGE("no transparent huge pages or no VmFlags here: the advice is not checked");
+  else
+    CHECK(flags.find(" hg") != std::string::npos);
 #endif
+  big.push_back(7);  // regrown: contents kept, storage freed by the same allocator (ASan checks)
+  CHECK(big.size() == (size_t(3) << 17) + 1);
+  CHECK(big.front() == 6);
+  CHECK(big.back() == 7);
+  // growHuge moves what it regrows (a copied string would keep its own buffer) and fills the rest.
+  std::vector<std::string> names = {std::string(100, 'a'), "b"};
+  names.shrink_to_fit();
+  const char* buffer = names[0].data();
+  growHuge(names, 5, std::string("new"));
+  CHECK(names.size() == 5);
+  CHECK(names[0].data() == buffer);
+  CHECK(names[1] == "b");
+  CHECK(names[4] == "new");
+  // reserveRoom: room for as many again (and 64) before anything is listed.
+  std::vector<int32_t> perChord;
+  reserveRoom(perChord, 1000);
+  CHECK(perChord.capacity() >= 2064);
+  CHECK(perChord.empty());
 }
 
 namespace {

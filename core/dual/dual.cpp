@@ -587,6 +587,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
 [[gnu::noinline]] void extractChords(const Complex& cx, Dual& d, DualExtras* extras, const ChordPlan& plan) {
   const int32_t* chordOf = flat(d.chordLabel);
   int32_t* places = extras ? extras->chordPlaces.data() : nullptr;
+  reserveRoom(d.chords, plan.root.size());  // edits add chords (huge_pages.hpp)
   d.chords.resize(plan.root.size());
   for (size_t c = 0; c < d.chords.size(); ++c) {
     d.chords[c].id = int32_t(c);
@@ -658,6 +659,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
 
 // Every chord one label, equal to its id (DualTracker cuts and joins them later).
 void labelChordsById(Dual& d) {
+  reserveRoom(d.labelChord, d.chords.size());
   d.labelChord.resize(d.chords.size());
   std::iota(d.labelChord.begin(), d.labelChord.end(), 0);
 }

@@ -3,7 +3,6 @@
 // sheet slot (h, a) is the layer crossed by h's edges along axis a; chord slot (h, a) is the
 // column through h's two faces normal to a. TK03 §1.1.
 #pragma once
-#include <algorithm>
 #include <array>
 #include <memory>
 #include <string>

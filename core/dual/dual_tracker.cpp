@@ -127,6 +127,11 @@ DualTracker::DualTracker(const Complex& cx) {
   // Every chord is one piece: its label's run (extraction numbers labels as chords).
   dual_.chordPlace = std::move(extras.chordPlaces);
   const size_t chords = dual_.chords.size();
+  reserveRoom(runs_, chords);  // room for new chords and labels without re-copying (huge_pages.hpp)
+  reserveRoom(pieces_, chords);
+  reserveRoom(chordSelf_, chords);
+  reserveRoom(unsettledMark_, chords);
+  reserveRoom(dual_.labelCuts, chords);
   runs_.resize(chords);
   pieces_.resize(chords);
   chordSelf_.resize(chords);

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "complex/huge_pages.hpp"
 #include "dual/dual.hpp"
 
 namespace hexdual {
@@ -209,7 +210,7 @@ class DualTracker {
       int32_t count;
     };
     size_t find(uint64_t key) const;
-    std::vector<Entry> table_;
+    std::vector<Entry, HugePageAllocator<Entry>> table_;  // rehashed into fresh storage: MBs at 1M hexes
     size_t used_ = 0;
     int shift_ = 58;
   } pairs_;
@@ -227,8 +228,8 @@ class DualTracker {
   // touched hex is walked, every slot of it checked against its chord).
   std::vector<uint16_t> edgesToWalk_;
   // Chords: per label its run of slots (by place); per chord id its pieces; labels no slot carries.
-  std::vector<PooledSlots> runs_;
-  std::vector<std::vector<Piece>> pieces_;
+  std::vector<PooledSlots, HugePageAllocator<PooledSlots>> runs_;  // MBs at 1M hexes, grown by edits
+  std::vector<std::vector<Piece>, HugePageAllocator<std::vector<Piece>>> pieces_;
   std::vector<int32_t> freeChordLabels_;
   std::vector<int32_t> dropped_;            // labels that lost places in this update (released after it)
   mutable std::vector<uint8_t> chordSelf_;  // per chord id: 0/1 self-intersecting, 2 not known until read

@@ -10,6 +10,7 @@
 // list is not settled is listed in unsettled_ once.
 #include <algorithm>
 
+#include "complex/huge_pages.hpp"
 #include "dual/dual_tracker.hpp"
 #include "dual/tracker/slots.hpp"
 
@@ -123,9 +124,9 @@ int32_t DualTracker::newChordLabel(std::span<const Slot> run) {
     freeChordLabels_.pop_back();
   } else {
     l = int32_t(runs_.size());
-    runs_.emplace_back();
-    dual_.labelCuts.emplace_back();
-    dual_.labelChord.push_back(-1);
+    growHuge(runs_, size_t(l) + 1);  // with room to spare, advised huge pages (huge_pages.hpp)
+    growHuge(dual_.labelCuts, size_t(l) + 1);
+    growHuge(dual_.labelChord, size_t(l) + 1, -1);
   }
   for (size_t i = 0; i < run.size(); ++i) {
     dual_.chordLabel[size_t(run[i].hex)][size_t(run[i].axis)] = l;
@@ -207,10 +208,10 @@ void DualTracker::setChordPieces(int32_t id, const std::vector<Piece>& pieces) {
 }
 
 void DualTracker::growChordIds(size_t n) {
-  if (dual_.chords.size() < n) dual_.chords.resize(n);
-  pieces_.resize(std::max(pieces_.size(), n));
-  chordSelf_.resize(std::max(chordSelf_.size(), n), 0);
-  unsettledMark_.resize(std::max(unsettledMark_.size(), n), 0);
+  growHuge(dual_.chords, n);  // each with room to spare (huge_pages.hpp)
+  growHuge(pieces_, n);
+  growHuge(chordSelf_, n, uint8_t(0));
+  growHuge(unsettledMark_, n, uint8_t(0));
 }
 
 bool DualTracker::chordSelfIntersects(int32_t id) const {

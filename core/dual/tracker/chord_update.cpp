@@ -115,9 +115,7 @@ void DualTracker::rewalkChords(const Complex& cx, const std::vector<HexId>& touc
       cx, touched, dual_.chordLabel, dual_.chords, ids, walk, change.chordsCreated, change.chordsChanged,
       change.chordsRemoved, [](int) { return false; }, labelOf);
   const size_t n = dual_.chords.size();
-  pieces_.resize(n);
-  chordSelf_.resize(n, 0);
-  unsettledMark_.resize(n, 0);
+  growChordIds(n);
   for (auto [id, l] : made) {
     const Chord& ch = dual_.chords[size_t(id)];
     runs_[size_t(l)].assign(ch.slots.begin(), ch.slots.end());

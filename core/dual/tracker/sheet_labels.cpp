@@ -12,6 +12,7 @@
 #include <bit>
 #include <map>
 
+#include "complex/huge_pages.hpp"
 #include "dual/dual_tracker.hpp"
 #include "dual/tracker/slots.hpp"
 
@@ -37,7 +38,7 @@ size_t DualTracker::PairCounts::find(uint64_t key) const {
 
 void DualTracker::PairCounts::add(int32_t a, int32_t b, int32_t n) {
   if (2 * (used_ + 1) > table_.size()) {  // rehashed without the zero counts (pairs of labels gone)
-    std::vector<Entry> old = std::move(table_);
+    std::vector<Entry, HugePageAllocator<Entry>> old = std::move(table_);
     size_t live = 0;
     for (const Entry& e : old) live += e.key != kNoKey && e.count != 0;
     size_t size = 64;
