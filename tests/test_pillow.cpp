@@ -91,7 +91,7 @@ TEST_CASE("canonical form: isomorphic under renumbering, different after a chang
     auto v = a.hexVertices(h);
     hexes.push_back({v[1], v[2], v[3], v[0], v[5], v[6], v[7], v[4]});
   }
-  Complex b = fromConnectivity(a.positions(), hexes);
+  Complex b = fromConnectivity(std::vector<Vec3>(a.positions().begin(), a.positions().end()), hexes);
   CHECK(b.vertex(0, 0) != a.vertex(0, 0));
   CHECK(isomorphic(a, b));
   Complex c = a;

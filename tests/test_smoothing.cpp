@@ -41,7 +41,7 @@ bool samePosition(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.
 // boundary vertex moved, undo gives back the exact state. Leaves the step applied.
 OpResult applyAndCheckLocal(Complex& cx, const OpStep& step) {
   const std::string before = stateDump(cx);
-  const std::vector<Vec3> old = cx.positions();
+  const std::vector<Vec3> old(cx.positions().begin(), cx.positions().end());
   const std::set<VertexId> boundary = boundaryVertices(cx);
   OpResult r = applyStep(cx, step, kSmoothStep);
   const std::set<VertexId> moved(r.quality.moved.begin(), r.quality.moved.end());

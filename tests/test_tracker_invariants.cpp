@@ -18,14 +18,14 @@
 namespace hexdual {
 // Reaches into the tracker's private state to break one invariant at a time.
 struct DualTrackerTestAccess {
-  static std::vector<int8_t>& shares(DualTracker& t) { return t.share_; }
-  static std::vector<uint16_t>& edgeMarks(DualTracker& t) { return t.edgeMarks_; }
+  static HugeVector<int8_t>& shares(DualTracker& t) { return t.share_; }
+  static HugeVector<uint16_t>& edgeMarks(DualTracker& t) { return t.edgeMarks_; }
   static std::vector<int32_t>& labelSlots(DualTracker& t) { return t.labelSlots_; }
   static std::vector<int32_t>& freeLabels(DualTracker& t) { return t.freeLabels_; }
-  static std::vector<int8_t>& signs(DualTracker& t) { return t.flooder_.signs(); }
+  static HugeVector<int8_t>& signs(DualTracker& t) { return t.flooder_.signs(); }
   static std::vector<int32_t>& selfPairs(DualTracker& t) { return t.selfPairs_; }
   static void addPair(DualTracker& t, int32_t a, int32_t b) { t.pairs_.add(a, b, 1); }
-  static std::vector<int32_t>& front(DualTracker& t) { return t.front_; }
+  static HugeVector<int32_t>& front(DualTracker& t) { return t.front_; }
   static std::vector<int64_t>& delta(DualTracker& t) { return t.delta_; }
   static int32_t& pieceHi(DualTracker& t, int32_t chord) { return t.pieces_[size_t(chord)][0].hi; }
   static std::vector<int32_t>& labelChord(DualTracker& t) { return t.dual_.labelChord; }
@@ -217,7 +217,8 @@ TEST_CASE("dual tracker: edge marks and shares hold when only the edited edges a
         REQUIRE_NOTHROW(tracker.checkInvariants(cx));
         // update() reads a short log's hexes and edges in one sort: the same lists as the two passes.
         std::vector<HexId> touched;
-        std::vector<uint16_t> edges, scratch;
+        std::vector<uint16_t> edges;
+        HugeVector<uint16_t> scratch;
         touchedHexesWithEdges(r->edits, touched, edges, scratch);
         REQUIRE(touched == touchedHexes(cx, r->edits));
         REQUIRE(edges == edgesChangedBy(r->edits, touched));
@@ -241,7 +242,8 @@ TEST_CASE("dual tracker: a slot whose chord-axis bit is clear kept its neighbour
   auto sameGluing = [](Gluing x, Gluing y) { return x.hex == y.hex && (x.boundary() || (x.face == y.face && x.orient == y.orient)); };
   auto check = [&](const Complex& before, const Complex& after, const Complex::EditLog& log) {
     std::vector<HexId> touched;
-    std::vector<uint16_t> edges, scratch;
+    std::vector<uint16_t> edges;
+    HugeVector<uint16_t> scratch;
     touchedHexesWithEdges(log, touched, edges, scratch);
     for (HexId h = 0; h < after.hexCapacity(); ++h) {
       if (!after.isHex(h)) continue;
@@ -303,7 +305,8 @@ TEST_CASE("dual tracker: a sheet extraction's long log gives the same touched he
   for (int pass = 0; pass < 2; ++pass) {
     CAPTURE(pass);
     std::vector<HexId> touched;
-    std::vector<uint16_t> edges, scratch;
+    std::vector<uint16_t> edges;
+    HugeVector<uint16_t> scratch;
     touchedHexesWithEdges(r->edits, touched, edges, scratch);
     CHECK(touched.size() > 4096);
     CHECK(touched == touchedHexes(cx, r->edits));

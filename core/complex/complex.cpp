@@ -189,8 +189,8 @@ void Complex::compact() {
   VertexId nv = 0;
   for (VertexId v = 0; v < (VertexId)pos_.size(); ++v)
     if (refs_[v] > 0) newVert[v] = nv++;
-  std::vector<std::array<VertexId, 8>> verts(nh);
-  std::vector<std::array<uint32_t, 6>> glue(nh);
+  HugeVector<std::array<VertexId, 8>> verts(nh);
+  HugeVector<std::array<uint32_t, 6>> glue(nh);
   for (HexId h = 0; h < (HexId)alive_.size(); ++h) {
     if (!alive_[h]) continue;
     for (int c = 0; c < 8; ++c) verts[newHex[h]][c] = newVert[verts_[h][c]];
@@ -199,8 +199,8 @@ void Complex::compact() {
       glue[newHex[h]][f] = g == kBoundary ? kBoundary : pack(newHex[g >> 6], (g >> 3) & 7, g & 7);
     }
   }
-  std::vector<Vec3> pos(nv);
-  std::vector<int32_t> refs(nv);
+  HugeVector<Vec3> pos(nv);
+  HugeVector<int32_t> refs(nv);
   for (VertexId v = 0; v < (VertexId)pos_.size(); ++v)
     if (newVert[v] >= 0) {
       pos[newVert[v]] = pos_[v];

@@ -6,11 +6,13 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "complex/hex_tables.hpp"
+#include "complex/huge_pages.hpp"
 
 namespace hexdual {
 
@@ -66,7 +68,7 @@ class HexRange {
  public:
   class iterator {
    public:
-    iterator(const std::vector<uint8_t>* alive, HexId h) : alive_(alive), h_(h) { skip(); }
+    iterator(const HugeVector<uint8_t>* alive, HexId h) : alive_(alive), h_(h) { skip(); }
     HexId operator*() const { return h_; }
     iterator& operator++() {
       ++h_;
@@ -79,15 +81,15 @@ class HexRange {
     void skip() {
       while (h_ < (HexId)alive_->size() && !(*alive_)[h_]) ++h_;
     }
-    const std::vector<uint8_t>* alive_;
+    const HugeVector<uint8_t>* alive_;
     HexId h_;
   };
-  explicit HexRange(const std::vector<uint8_t>* alive) : alive_(alive) {}
+  explicit HexRange(const HugeVector<uint8_t>* alive) : alive_(alive) {}
   iterator begin() const { return iterator(alive_, 0); }
   iterator end() const { return iterator(alive_, (HexId)alive_->size()); }
 
  private:
-  const std::vector<uint8_t>* alive_;
+  const HugeVector<uint8_t>* alive_;
 };
 
 class Complex {
@@ -179,7 +181,7 @@ class Complex {
     record({JournalEntry::SetPosition, v, 0, 0, pos_[v]});
     pos_[v] = p;
   }
-  const std::vector<Vec3>& positions() const { return pos_; }
+  std::span<const Vec3> positions() const { return pos_; }
   Vec3 hexCentroid(HexId h) const;
 
   // Checks every invariant; throws Error naming the first violation.
@@ -241,11 +243,11 @@ class Complex {
   static void rehashStar(VertexStar& st, size_t n);
   std::vector<VertexId> verticesWithEditedStars() const;
 
-  std::vector<std::array<VertexId, 8>> verts_;
-  std::vector<std::array<uint32_t, 6>> glue_;
-  std::vector<uint8_t> alive_;
-  std::vector<Vec3> pos_;
-  std::vector<int32_t> refs_;  // number of (hex, corner) incidences per vertex
+  HugeVector<std::array<VertexId, 8>> verts_;
+  HugeVector<std::array<uint32_t, 6>> glue_;
+  HugeVector<uint8_t> alive_;
+  HugeVector<Vec3> pos_;
+  HugeVector<int32_t> refs_;  // number of (hex, corner) incidences per vertex
   std::vector<VertexId> nonManifold_;
   using JournalEntry = Edit;
   void revert(const std::vector<Edit>& edits);

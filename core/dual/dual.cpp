@@ -31,7 +31,7 @@ constexpr auto kEdgeFaceMask = [] {
 
 size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
 // A per-hex array of 3 values read as one flat per-slot array (slotIndex).
-int32_t* flat(std::vector<std::array<int32_t, 3>>& v) { return v.empty() ? nullptr : v[0].data(); }
+int32_t* flat(HugeVector<std::array<int32_t, 3>>& v) { return v.empty() ? nullptr : v[0].data(); }
 
 }  // namespace
 
@@ -566,7 +566,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
   // Slot lists, one range each of one pool (PooledSlots), sorted: one pass over the labels.
   std::vector<size_t> at(stats.size() + 1, 0);
   for (size_t s = 0; s < stats.size(); ++s) at[s + 1] = at[s] + size_t(stats[s].slots);
-  std::vector<Slot> pool;
+  HugeVector<Slot> pool;
   reserveHuge(pool, at.back());
   pool.resize(at.back());
   std::vector<size_t> next(at.begin(), at.end() - 1);
@@ -576,7 +576,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
     if (l[1] == l[2]) d.sheets[size_t(l[1])].selfIntersecting = true;
     for (int a = 0; a < 3; ++a) pool[next[size_t(l[size_t(a)])]++] = {h, a};
   }
-  const auto shared = std::make_shared<const std::vector<Slot>>(std::move(pool));
+  const auto shared = std::make_shared<const HugeVector<Slot>>(std::move(pool));
   for (size_t s = 0; s < stats.size(); ++s) d.sheets[s].slots = SlotList(PooledSlots(shared, at[s], at[s + 1] - at[s]));
 }
 
@@ -594,7 +594,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
     d.chords[c].selfIntersecting = plan.selfIntersecting[c] != 0;
   }
   // Each chord's slots, one range of one pool (PooledSlots), in the order the walks end.
-  std::vector<Slot> pool;
+  HugeVector<Slot> pool;
   reserveHuge(pool, 3 * size_t(cx.numHexes()));
   std::vector<std::pair<size_t, size_t>> range(d.chords.size());
   auto keep = [&](int32_t id, const std::vector<Slot>& walked, bool reversed) {
@@ -653,7 +653,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
       d.chords[c].closed = walkClosedChord(cx, first, walked);
       keep(int32_t(c), walked, false);
     }
-  const auto shared = std::make_shared<const std::vector<Slot>>(std::move(pool));
+  const auto shared = std::make_shared<const HugeVector<Slot>>(std::move(pool));
   for (size_t c = 0; c < d.chords.size(); ++c) d.chords[c].slots = PooledSlots(shared, range[c].first, range[c].second);
 }
 

@@ -27,7 +27,7 @@ struct Slot {
 // lives while any list views it. Read like a const std::vector<Slot>.
 class PooledSlots {
  public:
-  using Pool = std::shared_ptr<const std::vector<Slot>>;
+  using Pool = std::shared_ptr<const HugeVector<Slot>>;
   PooledSlots() = default;
   PooledSlots(std::vector<Slot> own);
   PooledSlots(Pool pool, size_t begin, size_t size);
@@ -149,7 +149,7 @@ struct Dual {
   // Per hex id (capacity), per axis: a sheet label, -1 for tombstones; labelSheet names each label's
   // sheet. Extraction gives every sheet one label equal to its id; DualTracker merges two sheets by
   // re-pointing the labels of one instead of re-writing its slots. Read sheet ids with sheetAt().
-  std::vector<std::array<int32_t, 3>> sheetLabel;
+  HugeVector<std::array<int32_t, 3>> sheetLabel;
   std::vector<int32_t> labelSheet;
   // Per hex id (capacity), per axis: a chord LABEL, -1 for tombstones.
   // Extraction gives every chord one label equal to its id. DualTracker lists a chord as pieces of
@@ -157,13 +157,13 @@ struct Dual {
   // chords writes no slot outside the edit; a label's slots can then lie in several chords:
   // labelChord names the chord of a label lying in one, else (-1) labelCuts lists its ranges of
   // places per chord. Read chord ids with chordAt().
-  std::vector<std::array<int32_t, 3>> chordLabel;
+  HugeVector<std::array<int32_t, 3>> chordLabel;
   std::vector<int32_t> labelChord;
   struct ChordCut {
     int32_t lo, hi, chord;  // places [lo, hi) of a label's run lie in this chord
   };
   std::vector<std::vector<ChordCut>> labelCuts;  // per label (DualTracker only)
-  std::vector<int32_t> chordPlace;               // per slot: its place in its label's run (DualTracker only)
+  HugeVector<int32_t> chordPlace;               // per slot: its place in its label's run (DualTracker only)
 
   // The sheet id of slot (h, a), -1 for a tombstone.
   int32_t sheetAt(HexId h, int a) const {
@@ -193,10 +193,10 @@ int mapAxisAcross(const Complex& cx, HexId h, int face, int axis);
 // is its primal edge's smallest incidence, bit kEdgeNearBoundary when one of its edges reaches the boundary,
 // and bit kEdgeAxisNearBoundary(a) when one of its 4 edges along axis a does.
 struct DualExtras {
-  std::vector<int8_t> slotSigns;
-  std::vector<uint16_t> edgeMarks;
-  std::vector<int8_t> slotShares;    // per slot: slotShare() below
-  std::vector<int32_t> chordPlaces;  // per slot: its place in its chord's slot list
+  HugeVector<int8_t> slotSigns;
+  HugeVector<uint16_t> edgeMarks;
+  HugeVector<int8_t> slotShares;    // per slot: slotShare() below
+  HugeVector<int32_t> chordPlaces;  // per slot: its place in its chord's slot list
 };
 constexpr uint16_t kEdgeNearBoundary = uint16_t(1u << 15);
 constexpr uint16_t kEdgeAxisNearBoundary(int a) { return uint16_t(1u << (12 + a)); }
@@ -244,21 +244,21 @@ class SheetFlooder {
   // Walks the boundary loops of a sheet that slot (h, a)'s boundary sides are first to meet; returns how many.
   int walkNewLoops(const Complex& cx, HexId h, int a);
   // Orientation of each slot's mid-quad (+1/-1, 0 unknown), 3 per hex: written by every flood.
-  std::vector<int8_t>& signs() { return sign_; }
-  const std::vector<int8_t>& signs() const { return sign_; }
+  HugeVector<int8_t>& signs() { return sign_; }
+  const HugeVector<int8_t>& signs() const { return sign_; }
 
  private:
   bool walkEdge(const Complex& cx, HexId h, int e);  // false for a fan (a boundary edge)
   void markEdge(const Complex& cx, HexId h, int e, bool closed);
 
  public:
-  std::vector<uint16_t>* edgeMarks = nullptr;  // when set, measure() records DualExtras::edgeMarks
+  HugeVector<uint16_t>* edgeMarks = nullptr;  // when set, measure() records DualExtras::edgeMarks
 
  private:
   void walkLoop(const Complex& cx, HexId h, int f, int a);
-  std::vector<int8_t> sign_;        // per slot: orientation of its mid-quad
-  std::vector<uint16_t> edgeSeen_;  // per hex: bit e set once edge incidence (h, e) is counted
-  std::vector<uint16_t> loopSeen_;  // per hex: bit per boundary mid-edge (face, slot axis) walked
+  HugeVector<int8_t> sign_;        // per slot: orientation of its mid-quad
+  HugeVector<uint16_t> edgeSeen_;  // per hex: bit e set once edge incidence (h, e) is counted
+  HugeVector<uint16_t> loopSeen_;  // per hex: bit per boundary mid-edge (face, slot axis) walked
   std::vector<Slot> stack_;
 };
 

@@ -186,7 +186,7 @@ void DualTracker::dropRetiredAbove(size_t sheets, size_t chords) {
 // Each edit's hexes with the edges it marks, gathered per hex in `scratch` (bit 15: listed), then
 // the distinct hexes sorted: no search per edit and no sort of the edits.
 void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touched, std::vector<uint16_t>& edges,
-                           std::vector<uint16_t>& scratch) {
+                           HugeVector<uint16_t>& scratch) {
   constexpr uint16_t kListed = 0x8000;
   touched.clear();
   auto add = [&](HexId h, unsigned mask) {

@@ -210,26 +210,26 @@ class DualTracker {
       int32_t count;
     };
     size_t find(uint64_t key) const;
-    std::vector<Entry, HugePageAllocator<Entry>> table_;  // rehashed into fresh storage: MBs at 1M hexes
+    HugeVector<Entry> table_;  // rehashed into fresh storage: MBs at 1M hexes
     size_t used_ = 0;
     int shift_ = 58;
   } pairs_;
   SheetFlooder flooder_;  // its signs() persist: one orientation per orientable sheet
   // Per hex: bit e set when (h, e) is its edge's smallest incidence; kNearBoundary when any of its
   // 12 edges reaches the boundary.
-  std::vector<uint16_t> edgeMarks_;
+  HugeVector<uint16_t> edgeMarks_;
   // Per slot: twice its share of its sheet's Euler characteristic (2 - sides - boundary sides +
   // 2 x primal edges it holds the smallest incidence of); a sheet's Euler characteristic is half the sum.
-  std::vector<int8_t> share_;
-  std::vector<int32_t> front_;    // per slot: lockstep front + 1 that reached it (0 outside an update)
-  std::vector<uint16_t> walked_;  // per hex: edges walked by the current refreshShares (0 outside it)
+  HugeVector<int8_t> share_;
+  HugeVector<int32_t> front_;    // per slot: lockstep front + 1 that reached it (0 outside an update)
+  HugeVector<uint16_t> walked_;  // per hex: edges walked by the current refreshShares (0 outside it)
   // Parallel to the current update's touched hexes: the edges whose cycles its edits can have
   // changed and the chord-axis bits (edgesChangedBy); empty when not known (every edge of a live
   // touched hex is walked, every slot of it checked against its chord).
   std::vector<uint16_t> edgesToWalk_;
   // Chords: per label its run of slots (by place); per chord id its pieces; labels no slot carries.
-  std::vector<PooledSlots, HugePageAllocator<PooledSlots>> runs_;  // MBs at 1M hexes, grown by edits
-  std::vector<std::vector<Piece>, HugePageAllocator<std::vector<Piece>>> pieces_;
+  HugeVector<PooledSlots> runs_;  // MBs at 1M hexes, grown by edits
+  HugeVector<std::vector<Piece>> pieces_;
   std::vector<int32_t> freeChordLabels_;
   std::vector<int32_t> dropped_;            // labels that lost places in this update (released after it)
   mutable std::vector<uint8_t> chordSelf_;  // per chord id: 0/1 self-intersecting, 2 not known until read
@@ -255,6 +255,6 @@ std::vector<uint16_t> edgesChangedBy(const Complex::EditLog& edits, const std::v
 // edgesChangedBy(edits, touched). `scratch` holds a word per hex id, 0 before and after the call
 // (grown to the log's largest id).
 void touchedHexesWithEdges(const Complex::EditLog& edits, std::vector<HexId>& touched, std::vector<uint16_t>& edges,
-                           std::vector<uint16_t>& scratch);
+                           HugeVector<uint16_t>& scratch);
 
 }  // namespace hexdual

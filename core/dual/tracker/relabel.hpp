@@ -35,7 +35,7 @@ inline int chooseId(const std::vector<int32_t>& previous, std::vector<int>& take
 // labelling kTemp), and each component found keeps the smallest old id it holds; `labelOf(id)`
 // gives the label its slots get. Sheets and chords alike.
 template <class Entity, class Walk, class Unchanged, class LabelOf>
-size_t relabel(const Complex& cx, const std::vector<HexId>& touched, std::vector<std::array<int32_t, 3>>& of,
+size_t relabel(const Complex& cx, const std::vector<HexId>& touched, HugeVector<std::array<int32_t, 3>>& of,
                std::vector<Entity>& list, std::vector<int32_t> old, Walk walk, std::vector<int>& created,
                std::vector<int>& changed, std::vector<int>& removed, Unchanged unchanged, LabelOf labelOf) {
   size_t visited = 0;

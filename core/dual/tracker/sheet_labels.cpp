@@ -38,7 +38,7 @@ size_t DualTracker::PairCounts::find(uint64_t key) const {
 
 void DualTracker::PairCounts::add(int32_t a, int32_t b, int32_t n) {
   if (2 * (used_ + 1) > table_.size()) {  // rehashed without the zero counts (pairs of labels gone)
-    std::vector<Entry, HugePageAllocator<Entry>> old = std::move(table_);
+    HugeVector<Entry> old = std::move(table_);
     size_t live = 0;
     for (const Entry& e : old) live += e.key != kNoKey && e.count != 0;
     size_t size = 64;
@@ -158,7 +158,7 @@ void DualTracker::mergeSheet(int32_t x, int32_t keep, bool flip) {
 // Orients slots without an orientation from oriented neighbours on the same sheet (new slots
 // joining an orientable sheet).
 void DualTracker::propagateSigns(const Complex& cx, std::span<const Slot> slots) {
-  std::vector<int8_t>& sign = flooder_.signs();
+  HugeVector<int8_t>& sign = flooder_.signs();
   for (Slot s : slots) sign[slotIndex(s)] = 0;
   for (bool progress = true; progress;) {
     progress = false;
@@ -241,7 +241,7 @@ void DualTracker::checkLabelsOf(const Complex& cx) const {
 // On an orientable sheet, slots glued across a parallel face agree in orientation up to the
 // crossing's flip; a dead slot has none.
 void DualTracker::checkOrientations(const Complex& cx) const {
-  const std::vector<int8_t>& signs = flooder_.signs();
+  const HugeVector<int8_t>& signs = flooder_.signs();
   for (HexId h = 0; h < HexId(dual_.sheetLabel.size()); ++h)
     for (int a = 0; a < 3; ++a) {
       const Slot s{h, a};

@@ -464,7 +464,7 @@ void DualTracker::Lockstep::move(Slot s, int32_t toLabel) {
 // Slots leaving the old sheets' lists (dead, or in a piece), by old sheet: dropped when next read.
 // Dead slots lose their label and orientation here.
 void DualTracker::Lockstep::dropDeadSlots() {
-  std::vector<int8_t>& signs = t.flooder_.signs();
+  HugeVector<int8_t>& signs = t.flooder_.signs();
   leaving.resize(old.size());
   for (HexId h : touched)
     if (!cx.isHex(h)) {
@@ -513,7 +513,7 @@ void DualTracker::Lockstep::labelPiece(size_t p, DualChange& change) {
 
 // Orients a piece from its first slot (its own label is not flipped); false when it is twisted.
 bool DualTracker::Lockstep::orientPiece(const std::vector<Slot>& piece) {
-  std::vector<int8_t>& signs = t.flooder_.signs();
+  HugeVector<int8_t>& signs = t.flooder_.signs();
   bool orientable = true;
   std::vector<Slot> stack{piece[0]};
   signs[slotIndex(piece[0])] = 1;

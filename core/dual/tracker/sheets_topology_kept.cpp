@@ -78,7 +78,7 @@ bool DualTracker::updateSheetsLocally(const Complex& cx, const std::vector<HexId
 // slot's component is marked in front_ (ci + 1) until clearMarks. False when a component touches
 // two sheets: they would merge, not a local change.
 bool DualTracker::TopologyKept::findNewComponents() {
-  std::vector<int32_t>& front = t.front_;
+  HugeVector<int32_t>& front = t.front_;
   for (HexId h : touched) {
     if (!cx.isHex(h)) continue;
     for (int a = 0; a < 3; ++a) {
