@@ -28,7 +28,7 @@ struct DualTrackerTestAccess {
   static HugeVector<int32_t>& front(DualTracker& t) { return t.front_; }
   static std::vector<int64_t>& delta(DualTracker& t) { return t.delta_; }
   static int32_t& pieceHi(DualTracker& t, int32_t chord) { return t.pieces_[size_t(chord)][0].hi; }
-  static std::vector<int32_t>& labelChord(DualTracker& t) { return t.dual_.labelChord; }
+  static HugeVector<int32_t>& labelChord(DualTracker& t) { return t.dual_.labelChord; }
   static int64_t& euler(DualTracker& t, int32_t sheet) { return t.dual_.sheets[size_t(sheet)].euler; }
   static std::vector<Slot>& chordSlots(DualTracker& t, int32_t chord) { return t.dual_.chords[size_t(chord)].slots.own(); }
 };

@@ -158,11 +158,11 @@ struct Dual {
   // labelChord names the chord of a label lying in one, else (-1) labelCuts lists its ranges of
   // places per chord. Read chord ids with chordAt().
   HugeVector<std::array<int32_t, 3>> chordLabel;
-  std::vector<int32_t> labelChord;
+  HugeVector<int32_t> labelChord;
   struct ChordCut {
     int32_t lo, hi, chord;  // places [lo, hi) of a label's run lie in this chord
   };
-  std::vector<std::vector<ChordCut>> labelCuts;  // per label (DualTracker only)
+  HugeVector<std::vector<ChordCut>> labelCuts;  // per label (DualTracker only)
   HugeVector<int32_t> chordPlace;               // per slot: its place in its label's run (DualTracker only)
 
   // The sheet id of slot (h, a), -1 for a tombstone.
