@@ -109,6 +109,8 @@ struct HugePageAllocator {
   // The storage starts at the first 2 MiB boundary inside a plain allocation 2 MiB larger, which
   // is remembered just before it. (aligned_alloc asks glibc for the size plus the alignment on
   // every call, so the previous build's freed arrays never fitted and each repetition grew the heap.)
+  // It fits: malloc aligns to max_align_t, so the boundary after raw + 8 is at most raw + 2 MiB.
+  static_assert(alignof(std::max_align_t) >= sizeof(void*));
   T* allocate(size_t n) {
     if (!huge(n)) return static_cast<T*>(::operator new(n * sizeof(T)));
     const size_t bytes = (n * sizeof(T) + kHuge - 1) & ~(kHuge - 1);
