@@ -8,6 +8,7 @@
 #include <new>
 #include <cstdint>
 #include <iterator>
+#include <type_traits>
 #include <vector>
 #if __has_include(<sys/mman.h>)
 #include <sys/mman.h>
@@ -30,12 +31,16 @@ inline void adviseHugePages(const void* p, size_t bytes) {
 #endif
 }
 
-// v.reserve(n), with huge pages advised for the new storage before anything writes it.
+template <class T>
+struct HugePageAllocator;
+
+// v.reserve(n), with huge pages advised for the new storage before anything writes it (a
+// HugePageAllocator has advised all of it already).
 template <class T, class A>
 void reserveHuge(std::vector<T, A>& v, size_t n) {
   if (v.capacity() >= n) return;
   v.reserve(n);
-  adviseHugePages(v.data() + v.size(), (n - v.size()) * sizeof(T));
+  if constexpr (!std::is_same_v<A, HugePageAllocator<T>>) adviseHugePages(v.data() + v.size(), (n - v.size()) * sizeof(T));
 }
 
 // Room for n entries and an eighth more (as Complex::reserve leaves for new hexes), so that arrays

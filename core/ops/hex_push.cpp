@@ -31,6 +31,47 @@ std::string hexPushPrecheck(const Complex& cx, QuadSide q) {
            " vertices; hex push needs exactly the 4 of the quad";
   return {};
 }
+// The 2-6 flip's 23 gluings, in the order of hexPush's new hexes: A' = 0 (on A's corners), B' = 1
+// (on B's), and 2 + k the ring hex of A's k-th side face s (on A's corners). A' keeps A's far face
+// and meets B' across r; ring hex s keeps A's side quad s (its face s) and B's side quad t beside
+// it (its face fA), and meets A' (its face opposite fA, A's face s), B' (its face opposite s, B's
+// face t) and, across its face u, the ring hex of A's side face u (its face s). hex_push's comment
+// on the corners says which vertices each of these faces carries.
+std::array<PlannedGluing, 23> hexPushGluings(int fA, int fB, const std::array<int, 4>& cA, const std::array<int, 4>& cB) {
+  const int na = axisOfFace(fA);
+  std::array<int, 4> side{};  // A's side faces, in the ring hexes' order
+  for (int f = 0, k = 0; f < 6; ++f)
+    if (axisOfFace(f) != na) side[size_t(k++)] = f;
+  // B's side face beside A's side face s: the one of B's faces other than fB through the B corners
+  // of the two q corners on s.
+  auto besideInB = [&](int s) {
+    std::array<int, 2> onS{};
+    for (int p = 0, n = 0; p < 4; ++p)
+      if (positionInFace(s, cA[size_t(p)]) >= 0) onS[size_t(n++)] = cB[size_t(p)];
+    for (int f = 0; f < 6; ++f)
+      if (f != fB && positionInFace(f, onS[0]) >= 0 && positionInFace(f, onS[1]) >= 0) return f;
+    return -1;
+  };
+  constexpr int8_t kA = -1, kB = -2;  // the removed hexes, as PlannedGluing::other
+  std::array<PlannedGluing, 23> plan{};
+  size_t i = 0;
+  auto add = [&](int hex, int face, int other, int otherFace) {
+    plan[i++] = {int8_t(hex), int8_t(face), int8_t(other), int8_t(otherFace)};
+  };
+  add(0, fA, 1, fB);
+  add(0, oppositeFace(fA), kA, oppositeFace(fA));
+  add(1, oppositeFace(fB), kB, oppositeFace(fB));
+  for (int k = 0; k < 4; ++k) {
+    const int s = side[size_t(k)], t = besideInB(s);
+    add(2 + k, s, kA, s);
+    add(2 + k, fA, kB, t);
+    add(0, s, 2 + k, oppositeFace(fA));
+    add(1, t, 2 + k, oppositeFace(s));
+    for (int m = k + 1; m < 4; ++m)
+      if (axisOfFace(side[size_t(m)]) != axisOfFace(s)) add(2 + k, side[size_t(m)], 2 + m, s);
+  }
+  return plan;
+}
 }  // namespace ops
 
 OpResult hexPush(Complex& cx, QuadSide q) {
@@ -78,7 +119,7 @@ OpResult hexPush(Complex& cx, QuadSide q) {
     }
     added.push_back(ring);
   }
-  auto created = replaceHexes(cx, op, {A, B}, added);
+  auto created = replaceHexesByPlan(cx, op, {A, B}, added, hexPushGluings(fA, fB, cA, cB));
   OpResult r;
   r.op = kind;
   r.removedHexes = {A, B};

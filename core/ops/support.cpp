@@ -374,3 +374,37 @@ std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::v
 }
 
 }  // namespace hexdual::ops
+
+namespace hexdual::ops {
+
+std::vector<HexId> replaceHexesByPlan(Complex& cx, const std::string& op, const std::vector<HexId>& removed,
+                                      const std::vector<std::array<VertexId, 8>>& added,
+                                      std::span<const PlannedGluing> plan) {
+  auto isRemoved = [&](HexId h) { return std::find(removed.begin(), removed.end(), h) != removed.end(); };
+  thread_local std::vector<Gluing> across;  // what was across each outside face of the plan
+  across.clear();
+  for (const PlannedGluing& g : plan) {
+    across.push_back(g.other < 0 ? cx.gluing(removed[size_t(-1 - g.other)], g.otherFace) : Gluing{});
+    if (!across.back().boundary() && isRemoved(across.back().hex)) return replaceHexes(cx, op, removed, added);
+  }
+  for (HexId h : removed)
+    for (int f = 0; f < 6; ++f) cx.unglue(h, f);
+  for (HexId h : removed) cx.removeHex(h);
+  std::vector<HexId> created;
+  created.reserve(added.size());
+  for (const auto& v : added) created.push_back(cx.addHex(v));
+  for (size_t i = 0; i < plan.size(); ++i) {
+    const PlannedGluing& g = plan[i];
+    const HexId h = created[size_t(g.hex)];
+    const QuadSide to = g.other >= 0 ? QuadSide{created[size_t(g.other)], g.otherFace} : QuadSide{across[i].hex, across[i].face};
+    if (to.hex < 0) continue;  // a former boundary quad stays on the boundary
+    const int o = orientByVertices(cx, h, g.face, to.hex, to.face);
+    if (o < 0)
+      reject(op, "the new hex " + std::to_string(h) + " does not meet " + entityName(to) + " as planned (face " +
+                     std::to_string(g.face) + ")");
+    cx.glue(h, g.face, to.hex, to.face, o);
+  }
+  return created;
+}
+
+}  // namespace hexdual::ops

@@ -1,6 +1,7 @@
 // Helpers shared by the operations (not part of the public API).
 #pragma once
 #include <algorithm>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -157,4 +158,19 @@ namespace hexdual::ops {
 // Throws (as op) when the new hexes do not fit. Call inside a Transaction.
 std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::vector<HexId>& removed,
                                 const std::vector<std::array<VertexId, 8>>& added);
+
+// One gluing of replaceHexesByPlan: face `face` of new hex `hex` (an index into `added`) meets face
+// `otherFace` of new hex `other`, or, when other < 0, whatever was across face `otherFace` of
+// removed hex -1 - other (nothing, when that was the boundary).
+struct PlannedGluing {
+  int8_t hex, face, other, otherFace;
+};
+// replaceHexes for an operation that knows by construction which faces meet (hex push): the same
+// complex, ids and gluings, without keying every new face by its vertices. Each gluing's
+// orientation is still read from the vertices, and one that does not fit rejects (as op). Where a
+// removed hex was glued to a removed hex other than as planned (a degenerate input) it is
+// replaceHexes itself. Call inside a Transaction.
+std::vector<HexId> replaceHexesByPlan(Complex& cx, const std::string& op, const std::vector<HexId>& removed,
+                                      const std::vector<std::array<VertexId, 8>>& added,
+                                      std::span<const PlannedGluing> plan);
 }  // namespace hexdual::ops
