@@ -381,11 +381,12 @@ std::vector<HexId> replaceHexesByPlan(Complex& cx, const std::string& op, const 
                                       const std::vector<std::array<VertexId, 8>>& added,
                                       std::span<const PlannedGluing> plan) {
   auto isRemoved = [&](HexId h) { return std::find(removed.begin(), removed.end(), h) != removed.end(); };
-  thread_local std::vector<Gluing> across;  // what was across each outside face of the plan
-  across.clear();
-  for (const PlannedGluing& g : plan) {
-    across.push_back(g.other < 0 ? cx.gluing(removed[size_t(-1 - g.other)], g.otherFace) : Gluing{});
-    if (!across.back().boundary() && isRemoved(across.back().hex)) return replaceHexes(cx, op, removed, added);
+  std::array<Gluing, 64> across;  // what was across each outside face of the plan
+  if (plan.size() > across.size()) return replaceHexes(cx, op, removed, added);
+  for (size_t i = 0; i < plan.size(); ++i) {
+    const PlannedGluing& g = plan[i];
+    across[i] = g.other < 0 ? cx.gluing(removed[size_t(-1 - g.other)], g.otherFace) : Gluing{};
+    if (!across[i].boundary() && isRemoved(across[i].hex)) return replaceHexes(cx, op, removed, added);
   }
   for (HexId h : removed)
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);
@@ -399,9 +400,7 @@ std::vector<HexId> replaceHexesByPlan(Complex& cx, const std::string& op, const 
     const QuadSide to = g.other >= 0 ? QuadSide{created[size_t(g.other)], g.otherFace} : QuadSide{across[i].hex, across[i].face};
     if (to.hex < 0) continue;  // a former boundary quad stays on the boundary
     const int o = orientByVertices(cx, h, g.face, to.hex, to.face);
-    if (o < 0)
-      reject(op, "the new hex " + std::to_string(h) + " does not meet " + entityName(to) + " as planned (face " +
-                     std::to_string(g.face) + ")");
+    if (o < 0) reject(op, "a new hex does not meet " + entityName(to) + " as planned");
     cx.glue(h, g.face, to.hex, to.face, o);
   }
   return created;
