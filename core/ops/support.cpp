@@ -271,6 +271,19 @@ VertexSplit splitVertex(const Complex& cx, std::pair<HexId, int> seed, const std
 
 namespace hexdual::ops {
 
+namespace {
+// The removed hexes unglued and removed, the new ones added (ids in order), nothing glued yet.
+std::vector<HexId> swapHexes(Complex& cx, const std::vector<HexId>& removed, const std::vector<std::array<VertexId, 8>>& added) {
+  for (HexId h : removed)
+    for (int f = 0; f < 6; ++f) cx.unglue(h, f);
+  for (HexId h : removed) cx.removeHex(h);
+  std::vector<HexId> created;
+  created.reserve(added.size());
+  for (const auto& v : added) created.push_back(cx.addHex(v));
+  return created;
+}
+}  // namespace
+
 std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::vector<HexId>& removed,
                                 const std::vector<std::array<VertexId, 8>>& added) {
   using Key = std::array<VertexId, 4>;
@@ -297,12 +310,7 @@ std::vector<HexId> replaceHexes(Complex& cx, const std::string& op, const std::v
       if (g.boundary()) formerBoundary.push_back(faceVertexSet(cx, h, f));
       else if (!isRemoved(g.hex)) outside.push_back({faceVertexSet(cx, h, f), {g.hex, g.face}});
     }
-  for (HexId h : removed)
-    for (int f = 0; f < 6; ++f) cx.unglue(h, f);
-  for (HexId h : removed) cx.removeHex(h);
-  std::vector<HexId> created;
-  created.reserve(added.size());
-  for (const auto& v : added) created.push_back(cx.addHex(v));
+  std::vector<HexId> created = swapHexes(cx, removed, added);
   open.clear();
   for (HexId h : created)
     for (int f = 0; f < 6; ++f) open.push_back({faceVertexSet(cx, h, f), {h, f}});
@@ -388,12 +396,7 @@ std::vector<HexId> replaceHexesByPlan(Complex& cx, const std::string& op, const 
     across[i] = g.other < 0 ? cx.gluing(removed[size_t(-1 - g.other)], g.otherFace) : Gluing{};
     if (!across[i].boundary() && isRemoved(across[i].hex)) return replaceHexes(cx, op, removed, added);
   }
-  for (HexId h : removed)
-    for (int f = 0; f < 6; ++f) cx.unglue(h, f);
-  for (HexId h : removed) cx.removeHex(h);
-  std::vector<HexId> created;
-  created.reserve(added.size());
-  for (const auto& v : added) created.push_back(cx.addHex(v));
+  std::vector<HexId> created = swapHexes(cx, removed, added);
   for (size_t i = 0; i < plan.size(); ++i) {
     const PlannedGluing& g = plan[i];
     const HexId h = created[size_t(g.hex)];
