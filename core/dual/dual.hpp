@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "complex/small_vector.hpp"
 
 namespace hexdual {
 
@@ -162,7 +163,7 @@ struct Dual {
   struct ChordCut {
     int32_t lo, hi, chord;  // places [lo, hi) of a label's run lie in this chord
   };
-  HugeVector<std::vector<ChordCut>> labelCuts;  // per label (DualTracker only)
+  HugeVector<SmallVector<ChordCut, 3>> labelCuts;  // per label (DualTracker only): up to three cuts in place
   HugeVector<int32_t> chordPlace;               // per slot: its place in its label's run (DualTracker only)
 
   // The sheet id of slot (h, a), -1 for a tombstone.

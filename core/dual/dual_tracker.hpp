@@ -137,7 +137,7 @@ class DualTracker {
   // placeInChord, and the slots before and after s along chord id where there are (a closed chord
   // wraps round): *hasPrev / *hasNext false where the chord ends.
   int32_t chordNeighbours(int32_t id, Slot s, Slot* prev, bool* hasPrev, Slot* next, bool* hasNext) const;
-  void appendSlots(const std::vector<Piece>& pieces, std::vector<Slot>& out) const;
+  void appendSlots(std::span<const Piece> pieces, std::vector<Slot>& out) const;
   void dropPieces(const std::vector<int32_t>& ids);
   Slot chordSlotAt(int32_t id, int32_t p) const;
   void sliceChord(int32_t id, int32_t a, int32_t b, std::vector<Piece>& out) const;  // places a..b, b < length
@@ -229,7 +229,7 @@ class DualTracker {
   std::vector<uint16_t> edgesToWalk_;
   // Chords: per label its run of slots (by place); per chord id its pieces; labels no slot carries.
   HugeVector<PooledSlots> runs_;  // MBs at 1M hexes, grown by edits
-  HugeVector<std::vector<Piece>> pieces_;
+  HugeVector<SmallVector<Piece, 4>> pieces_;  // per chord: up to four pieces in place
   std::vector<int32_t> freeChordLabels_;
   std::vector<int32_t> dropped_;            // labels that lost places in this update (released after it)
   mutable std::vector<uint8_t> chordSelf_;  // per chord id: 0/1 self-intersecting, 2 not known until read

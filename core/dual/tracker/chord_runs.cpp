@@ -88,7 +88,7 @@ void DualTracker::dropPieces(const std::vector<int32_t>& ids) {
 }
 
 // The slots of pieces, in order.
-void DualTracker::appendSlots(const std::vector<Piece>& pieces, std::vector<Slot>& out) const {
+void DualTracker::appendSlots(std::span<const Piece> pieces, std::vector<Slot>& out) const {
   for (const Piece& p : pieces)
     for (int32_t k = 0; k < p.hi - p.lo; ++k)
       out.push_back(runs_[size_t(p.label)][size_t(p.reversed ? p.hi - 1 - k : p.lo + k)]);
@@ -178,7 +178,7 @@ void DualTracker::releaseLabels() {
 // Lists chord id as these pieces (joined where they continue one another). A chord cut and joined
 // so often that it has many pieces is given one run again (its slots re-labelled: a rare, whole pass).
 void DualTracker::setChordPieces(int32_t id, const std::vector<Piece>& pieces) {
-  std::vector<Piece>& joined = pieces_[size_t(id)];  // emptied by dropPieces (its room is reused)
+  auto& joined = pieces_[size_t(id)];  // emptied by dropPieces (its room is reused)
   joined.clear();
   for (const Piece& p : pieces) {
     if (!joined.empty()) {
