@@ -54,6 +54,8 @@ class PooledSlots {
   const Slot& front() const { return view().front(); }
   const Slot& back() const { return view().back(); }
   bool pooled() const { return pool_ != nullptr; }
+  const Pool& pool() const { return pool_; }  // null unless pooled
+  size_t poolBegin() const { return begin_; }
   size_t capacity() const { return own_.capacity(); }  // of its own vector (0 while pooled)
   // Writing: a pooled list's slots are copied into its own vector first.
   std::vector<Slot>& own() {

@@ -140,7 +140,7 @@ DualTracker::DualTracker(const Complex& cx) {
   for (size_t c = 0; c < chords; ++c) {
     const Chord& ch = dual_.chords[c];
     const int32_t len = int32_t(ch.slots.size());
-    runs_[c] = ch.slots;  // the extraction's pool, shared: no copy
+    runs_[c] = LabelRun(ch.slots);  // the extraction's pool, shared: no copy
     pieces_[c].assign(1, Piece{int32_t(c), 0, len, false});
     dual_.labelCuts[c].assign(1, Dual::ChordCut{0, len, int32_t(c)});
     chordSelf_[c] = ch.selfIntersecting;

@@ -35,6 +35,7 @@
 #include "complex/complex.hpp"
 #include "complex/huge_pages.hpp"
 #include "dual/dual.hpp"
+#include "dual/tracker/label_run.hpp"
 
 namespace hexdual {
 
@@ -228,7 +229,7 @@ class DualTracker {
   // touched hex is walked, every slot of it checked against its chord).
   std::vector<uint16_t> edgesToWalk_;
   // Chords: per label its run of slots (by place); per chord id its pieces; labels no slot carries.
-  HugeVector<PooledSlots> runs_;  // MBs at 1M hexes, grown by edits
+  HugeVector<tracker::LabelRun> runs_;  // MBs at 1M hexes, grown by edits
   HugeVector<SmallVector<Piece, 4>> pieces_;  // per chord: up to four pieces in place
   std::vector<int32_t> freeChordLabels_;
   std::vector<int32_t> dropped_;            // labels that lost places in this update (released after it)

@@ -132,7 +132,7 @@ int32_t DualTracker::newChordLabel(std::span<const Slot> run) {
     dual_.chordLabel[size_t(run[i].hex)][size_t(run[i].axis)] = l;
     dual_.chordPlace[slotIndex(run[i])] = int32_t(i);
   }
-  runs_[size_t(l)].assign(run.begin(), run.end());
+  runs_[size_t(l)].assign(run.data(), run.data() + run.size());
   dual_.labelCuts[size_t(l)].clear();
   dual_.labelChord[size_t(l)] = -1;
   return l;
@@ -166,7 +166,7 @@ void DualTracker::releaseLabels() {
       // A short run keeps its room for the label's next use (no allocation per cut); a long one is freed.
       constexpr size_t kKeptRoom = 64;
       if (runs_[size_t(l)].capacity() > kKeptRoom)
-        runs_[size_t(l)] = std::vector<Slot>();
+        runs_[size_t(l)].release();
       else
         runs_[size_t(l)].clear();
       dual_.labelChord[size_t(l)] = -1;
