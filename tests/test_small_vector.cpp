@@ -44,6 +44,20 @@ TEST_CASE("SmallVector: in place up to N, on the heap beyond, the same contents 
   CHECK(contents(v) == std::vector<Cut>(5, Cut{1, 2, 3}));
 }
 
+TEST_CASE("SmallVector: an entry of the list pushed onto it as it grows, and assigned from its own range") {
+  SmallVector<Cut, 2> v;
+  v.push_back({1, 2, 3});
+  v.push_back(v[0]);
+  v.push_back(v[1]);  // full in place: moves to the heap while reading v[1]
+  CHECK(contents(v) == std::vector<Cut>(3, Cut{1, 2, 3}));
+  v.push_back({4, 5, 6});
+  v.push_back(v[3]);  // full on the heap: regrows while reading v[3]
+  CHECK(v.size() == 5);
+  CHECK(v[4] == Cut{4, 5, 6});
+  v.assign(v.begin() + 2, v.end());  // its own last three entries, overlapping where they go
+  CHECK(contents(v) == std::vector<Cut>{{1, 2, 3}, {4, 5, 6}, {4, 5, 6}});
+}
+
 TEST_CASE("SmallVector: copies and moves, in place and on the heap") {
   for (size_t n : {size_t(0), size_t(1), size_t(2), size_t(3), size_t(9)}) {
     CAPTURE(n);

@@ -59,8 +59,9 @@ class SmallVector {
 
   void clear() { size_ = 0; }  // keeps its room
   void push_back(const T& x) {
+    const T copy = x;  // x may be an entry of this list, which growing moves
     if (size_ == cap_) grow(2 * size_t(cap_));
-    data()[size_++] = x;
+    data()[size_++] = copy;
   }
   void assign(size_t n, const T& x) {
     clear();
@@ -88,7 +89,7 @@ class SmallVector {
   void append(const T* first, const T* last) {
     const size_t n = size_t(last - first);
     if (size_ + n > cap_) grow(std::max(size_ + n, 2 * size_t(cap_)));
-    if (n) std::memcpy(data() + size_, first, n * sizeof(T));
+    if (n) std::memmove(data() + size_, first, n * sizeof(T));  // assign's range may lie in this list (it never grows then)
     size_ += uint32_t(n);
   }
   [[gnu::noinline]] void grow(size_t room) {  // the rare path, kept out of the callers
