@@ -78,11 +78,6 @@ class SmallVector {
     --size_;
     return at;
   }
-  friend void swap(SmallVector& a, SmallVector& b) noexcept {
-    SmallVector t(std::move(a));
-    a = std::move(b);
-    b = std::move(t);
-  }
 
  private:
   bool onHeap() const { return cap_ > N; }
