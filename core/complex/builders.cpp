@@ -10,33 +10,7 @@ namespace hexdual {
 using namespace tables;
 
 Complex makeGrid(int a, int b, int c) {
-  if (a < 1 || b < 1 || c < 1) throw Error("grid: every dimension must be at least 1");
-  if (int64_t(a) * b * c > (int64_t(1) << 26)) throw Error("grid: more than 2^26 hexes");
-  Complex cx;
-  // Headroom so that the first operations on a large mesh do not reallocate everything.
-  size_t h = size_t(a) * b * c, v = size_t(a + 1) * (b + 1) * (c + 1);
-  cx.reserve(h + h / 8 + 64, v + v / 8 + 64);
-  for (int k = 0; k <= c; ++k)
-    for (int j = 0; j <= b; ++j)
-      for (int i = 0; i <= a; ++i) cx.addVertex({double(i), double(j), double(k)});
-  auto vid = [&](int i, int j, int k) { return VertexId(i + (a + 1) * (j + (b + 1) * k)); };
-  for (int k = 0; k < c; ++k)
-    for (int j = 0; j < b; ++j)
-      for (int i = 0; i < a; ++i) {
-        std::array<VertexId, 8> v;
-        for (int q = 0; q < 8; ++q) v[q] = vid(i + cornerBit(q, 0), j + cornerBit(q, 1), k + cornerBit(q, 2));
-        cx.addHex(v);
-      }
-  auto hid = [&](int i, int j, int k) { return HexId(i + a * (j + b * k)); };
-  // Face 2*axis+1 of a hex meets face 2*axis of the next along that axis, position for position.
-  for (int k = 0; k < c; ++k)
-    for (int j = 0; j < b; ++j)
-      for (int i = 0; i < a; ++i) {
-        if (i + 1 < a) cx.glue(hid(i, j, k), 1, hid(i + 1, j, k), 0, 0);
-        if (j + 1 < b) cx.glue(hid(i, j, k), 3, hid(i, j + 1, k), 2, 0);
-        if (k + 1 < c) cx.glue(hid(i, j, k), 5, hid(i, j, k + 1), 4, 0);
-      }
-  return cx;
+  return Complex::block(a, b, c);
 }
 
 Complex makeRing(int around, int radial, int axial) {

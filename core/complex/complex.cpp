@@ -20,6 +20,44 @@ void Complex::reserve(size_t hexes, size_t vertices) {
   reserveHuge(refs_, vertices);
 }
 
+Complex Complex::block(int a, int b, int c) {
+  if (a < 1 || b < 1 || c < 1) throw Error("grid: every dimension must be at least 1");
+  if (int64_t(a) * b * c > (int64_t(1) << 26)) throw Error("grid: more than 2^26 hexes");
+  Complex cx;
+  const size_t nh = size_t(a) * size_t(b) * size_t(c), nv = size_t(a + 1) * size_t(b + 1) * size_t(c + 1);
+  cx.reserve(nh + nh / 8 + 64, nv + nv / 8 + 64);  // headroom for the first edits (as addHex's callers leave)
+  // A vertex is a corner of one hex per side it has along each axis (two inside, one on a face).
+  auto sides = [](int i, int n) { return int32_t(i > 0) + int32_t(i < n); };
+  for (int k = 0; k <= c; ++k)
+    for (int j = 0; j <= b; ++j)
+      for (int i = 0; i <= a; ++i) {
+        cx.pos_.push_back({double(i), double(j), double(k)});
+        cx.refs_.push_back(sides(i, a) * sides(j, b) * sides(k, c));
+      }
+  const int32_t dx = 1, dy = a + 1, dz = (a + 1) * (b + 1);  // vertex id steps
+  const int32_t hy = a, hz = a * b;                          // hex id steps
+  HexId h = 0;
+  for (int k = 0; k < c; ++k)
+    for (int j = 0; j < b; ++j)
+      for (int i = 0; i < a; ++i, ++h) {
+        const VertexId v0 = i + dy * j + dz * k;
+        std::array<VertexId, 8> v;
+        for (int q = 0; q < 8; ++q) v[size_t(q)] = v0 + dx * cornerBit(q, 0) + dy * cornerBit(q, 1) + dz * cornerBit(q, 2);
+        cx.verts_.push_back(v);
+        // Face 2*axis meets face 2*axis+1 of the previous hex along the axis, position for position.
+        cx.glue_.push_back({i > 0 ? pack(h - 1, 1, 0) : kBoundary, i + 1 < a ? pack(h + 1, 0, 0) : kBoundary,
+                            j > 0 ? pack(h - hy, 3, 0) : kBoundary, j + 1 < b ? pack(h + hy, 2, 0) : kBoundary,
+                            k > 0 ? pack(h - hz, 5, 0) : kBoundary, k + 1 < c ? pack(h + hz, 4, 0) : kBoundary});
+      }
+  cx.alive_.assign(nh, 1);
+  const int64_t glued = int64_t(a - 1) * b * c + int64_t(a) * (b - 1) * c + int64_t(a) * b * (c - 1);
+  cx.numHexes_ = int64_t(nh);
+  cx.numVertices_ = int64_t(nv);
+  cx.numBoundarySides_ = 6 * int64_t(nh) - 2 * glued;
+  cx.revision_ = uint64_t(nv) + uint64_t(nh) + uint64_t(glued);  // one per vertex, hex and gluing, as one by one
+  return cx;
+}
+
 VertexId Complex::addVertex(Vec3 p) {
   pos_.push_back(p);
   refs_.push_back(0);

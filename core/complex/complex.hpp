@@ -99,6 +99,10 @@ class Complex {
   // ---- construction (builders.hpp has grids, rings and building from connectivity) ----
   // Reserves storage for this many hexes and vertices in all (avoids regrowth in builders).
   void reserve(size_t hexes, size_t vertices);
+  // A structured a x b x c block at integer positions (makeGrid, which checks the sizes): the
+  // state adding its vertices and hexes in order and gluing every face pair gives, written in one
+  // pass per array without the per-call checks (about a third of the time at 100^3).
+  static Complex block(int a, int b, int c);
   // Adds a vertex at a position; returns its id (ids are never reused).
   VertexId addVertex(Vec3 p);
   // Adds a hex on 8 existing vertex ids (VTK order), all faces on the boundary.

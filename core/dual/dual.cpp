@@ -319,6 +319,10 @@ class SheetUnionFind {
   }
   // Joins two slots whose orientations differ by `flip`; a conflict marks the sheet twisted.
   void unite(uint32_t a, uint32_t b, uint32_t flip) {
+    if (a < b && link_[b] == b << 1) {  // b an untwisted root: its tree hangs under a, no find
+      link_[b] = (a << 1) | flip;
+      return;
+    }
     uint32_t pa, pb;
     uint32_t ra = find(a, pa), rb = find(b, pb);
     if (ra == rb) {
@@ -342,6 +346,10 @@ uint32_t findChordRoot(uint32_t* link, uint32_t x) {
   return x;
 }
 void uniteChordSlots(uint32_t* link, uint32_t a, uint32_t b) {
+  if (a < b && link[b] == b) {  // b a root: its tree hangs under a, no find
+    link[b] = a;
+    return;
+  }
   a = findChordRoot(link, a);
   b = findChordRoot(link, b);
   if (a < b) link[b] = a;
@@ -436,7 +444,7 @@ unsigned selfGlued(const std::array<Gluing, 6>& glued, HexId h) {
 // gluings): one step from each neighbour, and when both land on the same incidence the edge is a
 // 4-cycle (a structured block's interior edge) decided by that incidence alone (unless it is (h, e):
 // a 2-cycle); else the walk.
-bool closesAsSmallest(const Complex& cx, HexId h, int e, const std::array<Gluing, 6>& glued, bool& closed) {
+[[gnu::always_inline]] inline bool closesAsSmallest(const Complex& cx, HexId h, int e, const std::array<Gluing, 6>& glued, bool& closed) {
   const auto& fs = kEdgeFaces[size_t(e)];
   const Gluing& g0 = glued[size_t(fs[0])];
   const Gluing& g1 = glued[size_t(fs[1])];
