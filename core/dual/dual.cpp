@@ -391,7 +391,7 @@ void uniteChordSlots(uint32_t* link, uint32_t a, uint32_t b) {
 // slot and whether a boundary start was claimed for it, and the starts: each open chord's boundary
 // face met first in (hex, face) order.
 struct ChordPlan {
-  std::vector<uint32_t> root;
+  std::vector<uint32_t> root, size;  // size: the chord's slots, counted as they are labelled
   std::vector<uint8_t> claimed, selfIntersecting;
   std::vector<QuadSide> starts;
 };
@@ -468,6 +468,7 @@ void labelChords(HexId h, unsigned boundary, int32_t* chordOf, ChordPlan& plan) 
     if (parent == i) {
       chordOf[i] = int32_t(plan.root.size());
       plan.root.push_back(uint32_t(i));
+      plan.size.push_back(0);
       plan.claimed.push_back(0);
       plan.selfIntersecting.push_back(0);
     } else {
@@ -475,6 +476,7 @@ void labelChords(HexId h, unsigned boundary, int32_t* chordOf, ChordPlan& plan) 
     }
   }
   const int32_t* c = chordOf + slotIndex(h, 0);
+  for (int a = 0; a < 3; ++a) ++plan.size[size_t(c[a])];
   if (c[0] == c[1] || c[0] == c[2]) plan.selfIntersecting[size_t(c[0])] = 1;
   if (c[1] == c[2]) plan.selfIntersecting[size_t(c[1])] = 1;
   for (int f = 0; f < 6; ++f)
@@ -601,26 +603,29 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
     d.chords[c].id = int32_t(c);
     d.chords[c].selfIntersecting = plan.selfIntersecting[c] != 0;
   }
-  // Each chord's slots, one range of one pool (PooledSlots), in the order the walks end.
+  // Each chord's slots, one range of one pool (PooledSlots), in chord id order: the sizes are
+  // counted by the label pass, so each walk writes its slots in place.
+  std::vector<size_t> at(d.chords.size() + 1, 0);
+  for (size_t c = 0; c < d.chords.size(); ++c) at[c + 1] = at[c] + plan.size[c];
   HugeVector<Slot> pool;
-  reserveHuge(pool, 3 * size_t(cx.numHexes()));
-  std::vector<std::pair<size_t, size_t>> range(d.chords.size());
-  auto keep = [&](int32_t id, const std::vector<Slot>& walked, bool reversed) {
-    const size_t begin = pool.size();
-    if (reversed)
-      pool.insert(pool.end(), walked.rbegin(), walked.rend());
-    else
-      pool.insert(pool.end(), walked.begin(), walked.end());
-    range[size_t(id)] = {begin, walked.size()};
+  reserveHuge(pool, at.back());
+  pool.resize(at.back());
+  // A walked chord's range, reversed when its smallest slot was entered through its high face (a
+  // walk from that slot lists it from the other end), and its places.
+  auto keep = [&](int32_t id, bool reversed) {
+    Slot* first = pool.data() + at[size_t(id)];
+    const size_t n = plan.size[size_t(id)];
+    if (reversed) std::reverse(first, first + n);
     if (places)
-      for (size_t i = 0; i < walked.size(); ++i) places[slotIndex(pool[begin + i].hex, pool[begin + i].axis)] = int32_t(i);
+      for (size_t i = 0; i < n; ++i) places[slotIndex(first[i].hex, first[i].axis)] = int32_t(i);
   };
   struct Lane {
     int32_t chord = -1;
     Slot cur;
     int exit = 0;
     bool rootEnteredLow = true;
-    std::vector<Slot> slots;
+    Slot* out = nullptr;  // the chord's range in the pool
+    size_t walked = 0, size = 0;
   };
   constexpr int kLanes = 16;
   std::array<Lane, kLanes> lanes;
@@ -632,19 +637,22 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
     l.chord = chordOf[slotIndex(l.cur.hex, l.cur.axis)];
     l.exit = oppositeFace(s.face);
     l.rootEnteredLow = (s.face & 1) == 0;
-    l.slots.clear();
+    l.out = pool.data() + at[size_t(l.chord)];
+    l.walked = 0;
+    l.size = plan.size[size_t(l.chord)];
     return true;
   };
   int active = 0;
   for (Lane& l : lanes) active += start(l);
-  const size_t limit = 3 * size_t(cx.hexCapacity());  // a valid complex never gets near it
+  // An open chord is a path from one boundary face to another: the walk from its claimed end
+  // meets exactly the slots its label counted (the size check only guards a corrupt complex).
   while (active > 0)
     for (Lane& l : lanes) {
       if (l.chord < 0) continue;
-      l.slots.push_back(l.cur);
+      l.out[l.walked++] = l.cur;
       const Gluing g = cx.gluing(l.cur.hex, l.exit);
-      if (g.boundary() || l.slots.size() > limit) {
-        keep(l.chord, l.slots, !l.rootEnteredLow);
+      if (g.boundary() || l.walked == l.size) {
+        keep(l.chord, !l.rootEnteredLow);
         l.chord = -1;
         if (!start(l)) --active;
         continue;
@@ -659,10 +667,12 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
       const Slot first{HexId(plan.root[c] / 3), int(plan.root[c] % 3)};
       walked.clear();
       d.chords[c].closed = walkClosedChord(cx, first, walked);
-      keep(int32_t(c), walked, false);
+      walked.resize(plan.size[c]);  // the label's count (equal in a valid complex)
+      std::copy(walked.begin(), walked.end(), pool.begin() + ptrdiff_t(at[c]));
+      keep(int32_t(c), false);
     }
   const auto shared = std::make_shared<const HugeVector<Slot>>(std::move(pool));
-  for (size_t c = 0; c < d.chords.size(); ++c) d.chords[c].slots = PooledSlots(shared, range[c].first, range[c].second);
+  for (size_t c = 0; c < d.chords.size(); ++c) d.chords[c].slots = PooledSlots(shared, at[c], at[c + 1] - at[c]);
 }
 
 // Every chord one label, equal to its id (DualTracker cuts and joins them later).
