@@ -29,6 +29,21 @@ constexpr auto kEdgeFaceMask = [] {
   return t;
 }();
 
+// Per mask of faces: the edges on none of them (a 12-bit mask). The set bits of a nibble, and its
+// lowest, by table: baseline x86-64 has no popcnt instruction, and __builtin_popcount there is a
+// call into libgcc (0.8% of a random sequence's instructions).
+constexpr auto kEdgesOffFaces = [] {
+  std::array<uint16_t, 64> t{};
+  for (unsigned m = 0; m < 64; ++m)
+    for (int e = 0; e < 12; ++e)
+      if (!(kEdgeFaceMask[size_t(e)] & m)) t[m] = uint16_t(t[m] | (1u << e));
+  return t;
+}();
+constexpr std::array<uint8_t, 16> kNibbleBits{0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+constexpr std::array<uint8_t, 16> kLowestBit{0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
+// The faces parallel to each axis (kParallelFaces) as masks.
+constexpr std::array<unsigned, 3> kParallelFaceMask{0b111100u, 0b110011u, 0b001111u};
+
 size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
 // A per-hex array of 3 values read as one flat per-slot array (slotIndex).
 int32_t* flat(HugeVector<std::array<int32_t, 3>>& v) { return v.empty() ? nullptr : v[0].data(); }
@@ -141,9 +156,6 @@ void SheetFlooder::markEdge(const Complex& cx, HexId h, int e, bool closed) {
 }
 
 int8_t slotShare(const Complex& cx, HexId h, int a, uint16_t marks) {
-  // The set bits of a nibble by table: baseline x86-64 has no popcnt instruction, and
-  // __builtin_popcount there is a call into libgcc (0.8% of a random sequence's instructions).
-  constexpr std::array<uint8_t, 16> kNibbleBits{0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
   int s = 2 + 2 * kNibbleBits[(marks >> (4 * a)) & 0xFu];
   for (int f : kParallelFaces[size_t(a)]) s -= cx.isBoundary({h, f}) ? 2 : 1;
   return int8_t(s);
@@ -511,6 +523,9 @@ template <bool kExtras>
       smaller |= unsigned(!g.boundary() && g.hex <= h) << f;  // itself: decided by the walk
     }
     labelChords(h, boundary, chordOf, plan);
+    // An edge on no face glued to a smaller hex, or on one glued to h itself (decided by the walk).
+    const unsigned self = selfGlued(glued, h);
+    const unsigned candidates = kEdgesOffFaces[smaller] | (self & smaller ? 0xFFFu & ~kEdgesOffFaces[self & smaller] : 0u);
     for (int a = 0; a < 3; ++a) {
       const size_t i = slotIndex(h, a);
       const uint32_t l = link[i], p = l >> 1;
@@ -525,29 +540,26 @@ template <bool kExtras>
       }
       label[i] = id;
       SheetStats& st = stats[size_t(id)];
+      // The quad's four sides, on the faces parallel to the axis; boundary loops first met here.
+      const unsigned onBoundary = boundary & kParallelFaceMask[size_t(a)];
+      const int sidesOnBoundary = kNibbleBits[onBoundary & 0xFu] + kNibbleBits[onBoundary >> 4];
       ++st.slots;
-      int share = 2;
-      for (int f : kParallelFaces[size_t(a)]) {
-        if (!((boundary >> f) & 1u)) {
-          ++st.interiorSides;
-          share -= 1;
-          continue;
-        }
-        ++st.boundarySides;
-        share -= 2;
-        if (!((loopSeen[size_t(h)] >> loopBit(f, a)) & 1u)) {
-          walkBoundaryLoop(cx, h, f, a, loopSeen.data());
-          ++st.loops;
-        }
-      }
-      for (int e = 4 * a; e < 4 * a + 4; ++e) {
+      st.interiorSides += 4 - sidesOnBoundary;
+      st.boundarySides += sidesOnBoundary;
+      int share = -2 - sidesOnBoundary;
+      if (onBoundary)
+        for (int f : kParallelFaces[size_t(a)])
+          if (((onBoundary >> f) & 1u) && !((loopSeen[size_t(h)] >> loopBit(f, a)) & 1u)) {
+            walkBoundaryLoop(cx, h, f, a, loopSeen.data());
+            ++st.loops;
+          }
+      // The primal edges along the axis that this incidence may be the smallest of (`candidates`).
+      for (unsigned todo = (candidates >> 4 * a) & 0xFu; todo; todo &= todo - 1) {
+        const int e = 4 * a + kLowestBit[todo];
         bool closed;
         const unsigned faces = kEdgeFaceMask[size_t(e)];
-        if (smaller & faces) {
-          if (!(smaller & faces & selfGlued(glued, h)) || !smallestIncidence(cx, h, e, closed)) continue;
-        } else if (!(boundary & faces) ? !closesAsSmallest(cx, h, e, glued, closed) : !smallestIncidence(cx, h, e, closed)) {
+        if (((smaller | boundary) & faces) ? !smallestIncidence(cx, h, e, closed) : !closesAsSmallest(cx, h, e, glued, closed))
           continue;
-        }
         ++st.vertices;
         if constexpr (kExtras) {
           marks[size_t(h)] |= uint16_t(1u << e);
