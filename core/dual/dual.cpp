@@ -473,7 +473,7 @@ unsigned selfGlued(const std::array<Gluing, 6>& glued, HexId h) {
 
 // Labels hex h's chord slots (read off their parents, smaller slots already labelled) and claims
 // a boundary start for each open chord first met here (`boundary`: h's boundary faces).
-void labelChords(HexId h, unsigned boundary, int32_t* chordOf, ChordPlan& plan) {
+[[gnu::always_inline]] inline void labelChords(HexId h, unsigned boundary, int32_t* chordOf, ChordPlan& plan) {
   for (int a = 0; a < 3; ++a) {
     const size_t i = slotIndex(h, a);
     const uint32_t parent = uint32_t(chordOf[i]);
