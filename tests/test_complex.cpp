@@ -123,6 +123,16 @@ TEST_CASE("edge cycles: interior edges close, boundary edges are fans") {
   auto fan = cx.edgeCycle({0, tables::edgeBetween(0, 4)}, &closed);
   CHECK_FALSE(closed);
   CHECK(fan.size() == 1);
+  // edgeCycleSize counts what edgeCycle lists, for every incidence of cycles, fans, a twisted ring's
+  // edges and the doubled edges of a pillow (validate() uses the count).
+  size_t incidences = 0;
+  for (const Complex& m : {makeGrid(3, 2, 2), makeRing(5, 2, 1), makeTwistedRing(5), io::readNative(kPillowNative, "pillow")})
+    for (HexId h : m.hexes())
+      for (int ed = 0; ed < 12; ++ed) {
+        REQUIRE(m.edgeCycleSize({h, ed}) == m.edgeCycle({h, ed}).size());
+        ++incidences;
+      }
+  CHECK(incidences == 12 * (12 + 10 + 5 + 4));
 }
 
 TEST_CASE("validate names the first violation") {

@@ -97,7 +97,19 @@ struct FaceKey {
   std::array<VertexId, 4> key;
   HexId hex;
   int face;
-  bool operator<(const FaceKey& o) const { return key != o.key ? key < o.key : (hex != o.hex ? hex < o.hex : face < o.face); }
+  // The vertex ids (ascending, non-negative) as two 64-bit words: the same order as comparing the
+  // arrays, in two integer compares instead of a memcmp call and a lexicographic loop (sorting
+  // a 1M-hex file's 6M faces spent a sixth of its load in memcmp).
+  uint64_t high() const { return uint64_t(uint32_t(key[0])) << 32 | uint32_t(key[1]); }
+  uint64_t low() const { return uint64_t(uint32_t(key[2])) << 32 | uint32_t(key[3]); }
+  bool operator<(const FaceKey& o) const {
+    const uint64_t a = high(), b = o.high();
+    if (a != b) return a < b;
+    const uint64_t c = low(), d = o.low();
+    if (c != d) return c < d;
+    return hex != o.hex ? hex < o.hex : face < o.face;
+  }
+  bool sameQuad(const FaceKey& o) const { return high() == o.high() && low() == o.low(); }
 };
 std::string quadName(const std::array<VertexId, 4>& k) {
   return "quad (" + std::to_string(k[0]) + "," + std::to_string(k[1]) + "," + std::to_string(k[2]) + "," +
@@ -137,7 +149,7 @@ Complex fromConnectivity(const std::vector<Vec3>& points, const std::vector<std:
   std::sort(faces.begin(), faces.end());
   for (size_t i = 0; i < faces.size();) {
     size_t j = i;
-    while (j < faces.size() && faces[j].key == faces[i].key) ++j;
+    while (j < faces.size() && faces[j].sameQuad(faces[i])) ++j;
     if (j - i > 2) {
       std::string who;
       for (size_t k = i; k < j; ++k) who += (k > i ? ", " : "") + std::to_string(faces[k].hex);
@@ -163,12 +175,10 @@ Complex fromConnectivity(const std::vector<Vec3>& points, const std::vector<std:
     }
     i = j;
   }
-  if (allowNonManifoldVertices) {
-    std::vector<VertexId> bad;
-    for (const LinkIssue& li : vertexLinkIssues(cx)) bad.push_back(li.vertex);
-    cx.setNonManifoldVertices(std::move(bad));
-  }
-  cx.validate();
+  if (allowNonManifoldVertices)
+    cx.validateAcceptingNonManifoldVertices();
+  else
+    cx.validate();
   return cx;
 }
 

@@ -303,6 +303,25 @@ std::vector<EdgeRef> Complex::edgeCycle(EdgeRef e, bool* closed) const {
   return back;
 }
 
+size_t Complex::edgeCycleSize(EdgeRef e) const {
+  // edgeCycle(e).size(), counted without listing (validate() walks every edge once).
+  const auto fs = facesOfEdge(e.edge);
+  const size_t limit = size_t(12) * size_t(numHexes_) + 1;
+  size_t n = 1;
+  EdgeRef cur = e;
+  int exitFace = fs[0];
+  while (stepAroundEdge(cur, exitFace)) {
+    if (cur == e) return n;  // closed
+    if (++n > limit) return n;
+  }
+  size_t back = 0;
+  cur = e;
+  exitFace = fs[1];
+  while (stepAroundEdge(cur, exitFace))
+    if (++back > limit) break;
+  return n + back;
+}
+
 EdgeRef Complex::canonical(EdgeRef e) const {
   // The smallest incidence met walking round the cycle, or both ways along the fan (no allocation).
   EdgeRef best = e;
@@ -397,9 +416,13 @@ std::vector<Complex::BoundaryQuad> Complex::boundaryQuads() const {
 }
 
 Counts Complex::counts() const {
-  Counts c;
   int32_t ne = 0;
-  auto cls = edgeClasses(&ne);
+  const auto cls = edgeClasses(&ne);
+  return countsFrom(cls, ne);
+}
+
+Counts Complex::countsFrom(const std::vector<int32_t>& cls, int32_t ne) const {
+  Counts c;
   c.vertices = numVertices_;
   c.edges = ne;
   c.quads = numQuads();

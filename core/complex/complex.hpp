@@ -172,6 +172,8 @@ class Complex {
   }
   // The (hex, edge) incidences of an edge, in cycle order; `closed` tells whether the cycle closes.
   std::vector<EdgeRef> edgeCycle(EdgeRef e, bool* closed = nullptr) const;
+  // Its number of incidences, without listing them.
+  size_t edgeCycleSize(EdgeRef e) const;
   // The canonical incidence (smallest) of an edge.
   EdgeRef canonical(EdgeRef e) const;
   // All (hex, corner) incidences of the vertex at corner c of hex h, found by walking gluings.
@@ -190,6 +192,10 @@ class Complex {
 
   // Checks every invariant; throws Error naming the first violation.
   void validate() const;
+  // Takes every vertex whose link is not a sphere or a disk as a tolerated non-manifold vertex
+  // (setNonManifoldVertices), then validate(): what the file readers do, with the edge classes
+  // and vertex links computed once for both.
+  void validateAcceptingNonManifoldVertices();
   // Vertices whose link is neither a sphere nor a disk, accepted from an input file (ascending):
   // validate() allows exactly these, and operations refuse to touch them.
   const std::vector<VertexId>& nonManifoldVertices() const { return nonManifold_; }
@@ -233,6 +239,11 @@ class Complex {
   }
   [[noreturn]] static void throwNoHex(HexId h, const char* what);
   void validateLinks(const std::vector<int32_t>& edgeClass) const;
+  // validate()'s checks; given `accepted`, the vertices whose link is not a sphere or a disk are
+  // listed there (and tolerated) instead of failing.
+  void validateImpl(std::vector<VertexId>* accepted) const;
+  // counts() from edge classes already computed (edgeClasses).
+  Counts countsFrom(const std::vector<int32_t>& edgeClass, int32_t numClasses) const;
   struct VertexStar {
     std::vector<std::pair<HexId, int>> corners;
     std::vector<int> link;  // union-find over 3 edge incidences per corner

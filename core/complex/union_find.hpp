@@ -8,7 +8,10 @@ namespace hexdual {
 
 class UnionFind {
  public:
-  explicit UnionFind(size_t n) : parent_(n) {
+  explicit UnionFind(size_t n = 0) { reset(n); }
+  // n singletons again, keeping the storage (one union-find reused for many small sets).
+  void reset(size_t n) {
+    parent_.resize(n);
     for (size_t i = 0; i < n; ++i) parent_[i] = uint32_t(i);
   }
   size_t find(size_t x) {

@@ -13,9 +13,18 @@ using namespace tables;
 namespace {
 std::string hf(HexId h, int f) { return "hex " + std::to_string(h) + " face " + std::to_string(f); }
 [[noreturn]] void fail(const std::string& msg) { throw Error("validate: " + msg); }
+std::vector<LinkIssue> linkIssues(const Complex& cx, const std::vector<int32_t>& edgeClass);
 }  // namespace
 
-void Complex::validate() const {
+void Complex::validate() const { validateImpl(nullptr); }
+
+void Complex::validateAcceptingNonManifoldVertices() {
+  std::vector<VertexId> accepted;
+  validateImpl(&accepted);
+  nonManifold_ = std::move(accepted);
+}
+
+void Complex::validateImpl(std::vector<VertexId>* accepted) const {
   // Vertex ids, reference counts, distinct corners.
   std::vector<int32_t> refs(pos_.size(), 0);
   int64_t hexCount = 0, boundarySides = 0;
@@ -71,18 +80,21 @@ void Complex::validate() const {
       int32_t k = cls[size_t(12) * h + e];
       if (seen[size_t(k)]) continue;
       seen[size_t(k)] = 1;
-      auto cyc = edgeCycle({h, e});
-      if ((int32_t)cyc.size() != classSize[size_t(k)])
+      if (edgeCycleSize({h, e}) != size_t(classSize[size_t(k)]))
         fail("edge at hex " + std::to_string(h) + " edge " + std::to_string(e) + " does not form one cycle or fan");
     }
 
-  validateLinks(cls);
+  if (accepted) {
+    for (const LinkIssue& li : linkIssues(*this, cls)) accepted->push_back(li.vertex);
+  } else {
+    validateLinks(cls);
+  }
 
   // Euler characteristic of a 3-manifold with boundary: chi(M) = chi(boundary) / 2.
-  Counts c = counts();
+  Counts c = countsFrom(cls, numEdges);
   int64_t chi = c.vertices - c.edges + c.quads - c.hexes;
   int64_t chiB = c.boundaryVertices - c.boundaryEdges + c.boundaryQuads;
-  if (nonManifold_.empty() && 2 * chi != chiB)
+  if ((accepted ? accepted->empty() : nonManifold_.empty()) && 2 * chi != chiB)
     fail("Euler characteristic V-E+F-H = " + std::to_string(chi) + " but the boundary's is " + std::to_string(chiB) +
          " (expected twice)");
 }
@@ -116,11 +128,12 @@ std::vector<LinkIssue> linkIssues(const Complex& cx, const std::vector<int32_t>&
 
   std::vector<LinkIssue> issues;
   std::vector<int32_t> edges;
+  UnionFind uf;  // one for every vertex's corners: no allocation per vertex
   for (size_t v = 0; v < nv; ++v) {
     size_t b = size_t(start[v]), e = size_t(start[v + 1]);
     if (b == e) continue;
     auto first = inc.begin() + long(b), last = inc.begin() + long(e);  // sorted by (hex, corner)
-    UnionFind uf(e - b);
+    uf.reset(e - b);
     int64_t boundarySides = 0;
     edges.clear();
     for (size_t i = b; i < e; ++i) {

@@ -61,10 +61,7 @@ Complex readNative(std::string_view data, const std::string& name, ReadReport* r
   }
   lx.expectKeyword("end");
   try {
-    std::vector<VertexId> bad;
-    for (const LinkIssue& li : vertexLinkIssues(cx)) bad.push_back(li.vertex);
-    cx.setNonManifoldVertices(std::move(bad));
-    cx.validate();
+    cx.validateAcceptingNonManifoldVertices();
   } catch (const Error& e) {
     throw Error(name + ": " + e.what());
   }
