@@ -588,18 +588,16 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
   // Slot lists, one range each of one pool (PooledSlots), sorted: one pass over the labels.
   std::vector<size_t> at(stats.size() + 1, 0);
   for (size_t s = 0; s < stats.size(); ++s) at[s + 1] = at[s] + size_t(stats[s].slots);
-  HugeVector<Slot> pool;
-  reserveHuge(pool, at.back());
-  pool.resize(at.back());
+  const auto pool = std::make_shared<SlotPool>(at.back());
+  Slot* slots = pool->data();
   std::vector<size_t> next(at.begin(), at.end() - 1);
   for (HexId h : cx.hexes()) {
     const auto& l = d.sheetLabel[size_t(h)];
     if (l[0] == l[1] || l[0] == l[2]) d.sheets[size_t(l[0])].selfIntersecting = true;
     if (l[1] == l[2]) d.sheets[size_t(l[1])].selfIntersecting = true;
-    for (int a = 0; a < 3; ++a) pool[next[size_t(l[size_t(a)])]++] = {h, a};
+    for (int a = 0; a < 3; ++a) slots[next[size_t(l[size_t(a)])]++] = {h, a};
   }
-  const auto shared = std::make_shared<const HugeVector<Slot>>(std::move(pool));
-  for (size_t s = 0; s < stats.size(); ++s) d.sheets[s].slots = SlotList(PooledSlots(shared, at[s], at[s + 1] - at[s]));
+  for (size_t s = 0; s < stats.size(); ++s) d.sheets[s].slots = SlotList(PooledSlots(pool, at[s], at[s + 1] - at[s]));
 }
 
 // Chord slot lists. Ids and labels are known (the chord union-find); each open chord is walked
@@ -619,13 +617,11 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
   // counted by the label pass, so each walk writes its slots in place.
   std::vector<size_t> at(d.chords.size() + 1, 0);
   for (size_t c = 0; c < d.chords.size(); ++c) at[c + 1] = at[c] + plan.size[c];
-  HugeVector<Slot> pool;
-  reserveHuge(pool, at.back());
-  pool.resize(at.back());
+  const auto pool = std::make_shared<SlotPool>(at.back());
   // A walked chord's range, reversed when its smallest slot was entered through its high face (a
   // walk from that slot lists it from the other end), and its places.
   auto keep = [&](int32_t id, bool reversed) {
-    Slot* first = pool.data() + at[size_t(id)];
+    Slot* first = pool->data() + at[size_t(id)];
     const size_t n = plan.size[size_t(id)];
     if (reversed) std::reverse(first, first + n);
     if (places)
@@ -649,7 +645,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
     l.chord = chordOf[slotIndex(l.cur.hex, l.cur.axis)];
     l.exit = oppositeFace(s.face);
     l.rootEnteredLow = (s.face & 1) == 0;
-    l.out = pool.data() + at[size_t(l.chord)];
+    l.out = pool->data() + at[size_t(l.chord)];
     l.walked = 0;
     l.size = plan.size[size_t(l.chord)];
     return true;
@@ -664,6 +660,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
       l.out[l.walked++] = l.cur;
       const Gluing g = cx.gluing(l.cur.hex, l.exit);
       if (g.boundary() || l.walked == l.size) {
+        std::fill(l.out + l.walked, l.out + l.size, Slot{});  // (a corrupt complex's short walk: no unwritten slot)
         keep(l.chord, !l.rootEnteredLow);
         l.chord = -1;
         if (!start(l)) --active;
@@ -680,11 +677,10 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
       walked.clear();
       d.chords[c].closed = walkClosedChord(cx, first, walked);
       walked.resize(plan.size[c]);  // the label's count (equal in a valid complex)
-      std::copy(walked.begin(), walked.end(), pool.begin() + ptrdiff_t(at[c]));
+      std::copy(walked.begin(), walked.end(), pool->data() + at[c]);
       keep(int32_t(c), false);
     }
-  const auto shared = std::make_shared<const HugeVector<Slot>>(std::move(pool));
-  for (size_t c = 0; c < d.chords.size(); ++c) d.chords[c].slots = PooledSlots(shared, at[c], at[c + 1] - at[c]);
+  for (size_t c = 0; c < d.chords.size(); ++c) d.chords[c].slots = PooledSlots(pool, at[c], at[c + 1] - at[c]);
 }
 
 // Every chord one label, equal to its id (DualTracker cuts and joins them later).

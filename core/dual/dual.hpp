@@ -21,6 +21,28 @@ struct Slot {
   friend bool operator<(Slot a, Slot b) { return a.hex != b.hex ? a.hex < b.hex : a.axis < b.axis; }
 };
 
+// The storage of one extraction's slot lists: n slots in one allocation (whole huge pages where the
+// OS gives them, HugePageAllocator), written by the extraction before any list reads them. Not a
+// vector: a vector fills its n slots on creation and the extraction then writes every one again
+// (two 24 MB fills per 1M-hex extraction natively, and two element-by-element loops in wasm).
+class SlotPool {
+ public:
+  explicit SlotPool(size_t n);
+  ~SlotPool();
+  SlotPool(const SlotPool&) = delete;
+  SlotPool& operator=(const SlotPool&) = delete;
+  Slot* data() { return data_; }
+  const Slot* data() const { return data_; }
+  size_t size() const { return size_; }
+  const Slot* begin() const { return data_; }
+  const Slot* end() const { return data_ + size_; }
+  const Slot& operator[](size_t i) const { return data_[i]; }
+
+ private:
+  Slot* data_;
+  size_t size_;
+};
+
 // A list of slots that either views a range of a pool or owns a vector. Extraction lists every
 // sheet's slots in one pool and every chord's in another (each one allocation, in huge pages where
 // the OS gives them: a 1M-hex mesh's 30,300 lists cost a few dozen page faults, not 11,600); a list
@@ -28,7 +50,7 @@ struct Slot {
 // lives while any list views it. Read like a const std::vector<Slot>.
 class PooledSlots {
  public:
-  using Pool = std::shared_ptr<const HugeVector<Slot>>;
+  using Pool = std::shared_ptr<const SlotPool>;
   PooledSlots() = default;
   PooledSlots(std::vector<Slot> own);
   PooledSlots(Pool pool, size_t begin, size_t size);

@@ -7,6 +7,11 @@
 namespace hexdual {
 
 PooledSlots::PooledSlots(std::vector<Slot> own) : own_(std::move(own)) {}
+// Slot is an aggregate with a trivial destructor: storage from the allocator holds its objects
+// once written (no constructor has to run first), and needs no destructor calls.
+SlotPool::SlotPool(size_t n) : data_(HugePageAllocator<Slot>().allocate(n)), size_(n) {}
+SlotPool::~SlotPool() { HugePageAllocator<Slot>().deallocate(data_, size_); }
+
 PooledSlots::PooledSlots(Pool pool, size_t begin, size_t size) : pool_(std::move(pool)), begin_(begin), size_(size) {}
 PooledSlots::PooledSlots(const PooledSlots&) = default;
 PooledSlots::PooledSlots(PooledSlots&&) noexcept = default;
