@@ -36,6 +36,29 @@ TEST_CASE("cli: grid, info --json, validate, convert") {
   CHECK(contains(run("info /tmp/hexdual_cli_r.vtk").out, "sheet 0: 16 hexes, annulus, 2 boundary loop(s), euler 0"));
 }
 
+TEST_CASE("cli: validate names each non-manifold vertex and exits 1; a valid file exits 0") {
+  // Two unit cubes touching at one corner (vertex 6 of the first is vertex 0 of the second): the
+  // reader accepts the file and keeps the vertex; validate explains it.
+  {
+    std::FILE* f = std::fopen("/tmp/hexdual_cli_touch.vtk", "w");
+    REQUIRE(f);
+    std::fputs("# vtk DataFile Version 3.0\ntouch\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 15 double\n", f);
+    const char* pts[] = {"0 0 0", "1 0 0", "1 1 0", "0 1 0", "0 0 1", "1 0 1", "1 1 1", "0 1 1",
+                         "2 1 1", "2 2 1", "1 2 1", "1 1 2", "2 1 2", "2 2 2", "1 2 2"};
+    for (const char* p : pts) std::fprintf(f, "%s\n", p);
+    std::fputs("CELLS 2 18\n8 0 1 2 3 4 5 6 7\n8 6 8 9 10 11 12 13 14\nCELL_TYPES 2\n12\n12\n", f);
+    std::fclose(f);
+  }
+  Run touch = run("validate /tmp/hexdual_cli_touch.vtk");
+  CHECK(touch.status == 1);
+  CHECK(touch.out ==
+        "/tmp/hexdual_cli_touch.vtk: vertex 6 at (1, 1, 1) in hexes 0, 1 is non-manifold: its link has 2 components\n"
+        "/tmp/hexdual_cli_touch.vtk: 1 non-manifold vertices; otherwise valid (2 hexes); operations refuse to touch "
+        "these vertices\n");
+  CHECK(run("grid 2x2x2 -o /tmp/hexdual_cli_g2.vtk").status == 0);
+  CHECK(run("validate /tmp/hexdual_cli_g2.vtk").out == "/tmp/hexdual_cli_g2.vtk: valid (8 hexes)\n");
+}
+
 TEST_CASE("cli: bad input gives a one-line error and a non-zero status") {
   Run missing = run("info /tmp/does-not-exist.vtk");
   CHECK(missing.status == 1);
