@@ -83,6 +83,11 @@ TEST_CASE("Complex::block (makeGrid) is the state adding and gluing one by one g
   }
   CHECK(errorOf([] { makeGrid(0, 2, 2); }) == "grid: every dimension must be at least 1");
   CHECK(errorOf([] { makeGrid(1 << 9, 1 << 9, 1 << 9); }) == "grid: more than 2^26 hexes");
+  // Products that wrap a 64-bit integer (2^63, 2^66, 2^78) are refused too, not allocated.
+  CHECK(errorOf([] { makeGrid(1 << 21, 1 << 21, 1 << 21); }) == "grid: more than 2^26 hexes");
+  CHECK(errorOf([] { makeGrid(1 << 22, 1 << 22, 1 << 22); }) == "grid: more than 2^26 hexes");
+  CHECK(errorOf([] { makeGrid(1 << 26, 1 << 26, 1 << 26); }) == "grid: more than 2^26 hexes");
+  CHECK(errorOf([] { makeRing(1 << 21, 1 << 21, 1 << 21); }) == "ring: more than 2^26 hexes");
 }
 
 TEST_CASE("a ring mesh 8x2x2 has the O-grid's counts") {

@@ -15,7 +15,9 @@ Complex makeGrid(int a, int b, int c) {
 
 Complex makeRing(int around, int radial, int axial) {
   if (around < 3 || radial < 1 || axial < 1) throw Error("ring: needs at least 3 around and 1 radial and axial layer");
-  if (int64_t(around) * radial * axial > (int64_t(1) << 26)) throw Error("ring: more than 2^26 hexes");
+  // around * radial first: a product of three ints can pass 2^63 (and wrap) before it is compared.
+  if (int64_t(around) * radial > (int64_t(1) << 26) || int64_t(around) * radial * axial > (int64_t(1) << 26))
+    throw Error("ring: more than 2^26 hexes");
   std::vector<Vec3> pts;
   auto vid = [&](int t, int s, int k) { return VertexId((t % around) + around * (s + (radial + 1) * k)); };
   const double pi = std::acos(-1.0), r0 = 1.0 + 0.25 * around / pi;

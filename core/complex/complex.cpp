@@ -22,7 +22,8 @@ void Complex::reserve(size_t hexes, size_t vertices) {
 
 Complex Complex::block(int a, int b, int c) {
   if (a < 1 || b < 1 || c < 1) throw Error("grid: every dimension must be at least 1");
-  if (int64_t(a) * b * c > (int64_t(1) << 26)) throw Error("grid: more than 2^26 hexes");
+  // a * b first: a product of three ints can pass 2^63 (and wrap) before it is compared.
+  if (int64_t(a) * b > (int64_t(1) << 26) || int64_t(a) * b * c > (int64_t(1) << 26)) throw Error("grid: more than 2^26 hexes");
   Complex cx;
   const size_t nh = size_t(a) * size_t(b) * size_t(c), nv = size_t(a + 1) * size_t(b + 1) * size_t(c + 1);
   cx.reserve(nh + nh / 8 + 64, nv + nv / 8 + 64);  // headroom for the first edits (as addHex's callers leave)
