@@ -15,9 +15,7 @@ Complex makeGrid(int a, int b, int c) {
 
 Complex makeRing(int around, int radial, int axial) {
   if (around < 3 || radial < 1 || axial < 1) throw Error("ring: needs at least 3 around and 1 radial and axial layer");
-  // around * radial first: a product of three ints can pass 2^63 (and wrap) before it is compared.
-  if (int64_t(around) * radial > (int64_t(1) << 26) || int64_t(around) * radial * axial > (int64_t(1) << 26))
-    throw Error("ring: more than 2^26 hexes");
+  if (Complex::tooManyHexes(around, radial, axial)) throw Error("ring: more than 2^26 hexes");
   std::vector<Vec3> pts;
   auto vid = [&](int t, int s, int k) { return VertexId((t % around) + around * (s + (radial + 1) * k)); };
   const double pi = std::acos(-1.0), r0 = 1.0 + 0.25 * around / pi;
@@ -40,7 +38,7 @@ Complex makeRing(int around, int radial, int axial) {
 
 Complex makeTwistedRing(int around) {
   if (around < 3) throw Error("twisted ring: needs at least 3 hexes around");
-  if (around > (1 << 26)) throw Error("twisted ring: more than 2^26 hexes");
+  if (around > Complex::kMaxHexes) throw Error("twisted ring: more than 2^26 hexes");
   const double pi = std::acos(-1.0), r0 = 2.0 + 0.3 * around / pi;
   std::vector<Vec3> pts;
   // Cross-section corner (s, k) of layer t, turned by a quarter turn over the whole ring.

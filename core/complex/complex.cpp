@@ -22,8 +22,7 @@ void Complex::reserve(size_t hexes, size_t vertices) {
 
 Complex Complex::block(int a, int b, int c) {
   if (a < 1 || b < 1 || c < 1) throw Error("grid: every dimension must be at least 1");
-  // a * b first: a product of three ints can pass 2^63 (and wrap) before it is compared.
-  if (int64_t(a) * b > (int64_t(1) << 26) || int64_t(a) * b * c > (int64_t(1) << 26)) throw Error("grid: more than 2^26 hexes");
+  if (tooManyHexes(a, b, c)) throw Error("grid: more than 2^26 hexes");
   Complex cx;
   const size_t nh = size_t(a) * size_t(b) * size_t(c), nv = size_t(a + 1) * size_t(b + 1) * size_t(c + 1);
   cx.reserve(nh + nh / 8 + 64, nv + nv / 8 + 64);  // headroom for the first edits (as addHex's callers leave)
@@ -70,7 +69,7 @@ VertexId Complex::addVertex(Vec3 p) {
 HexId Complex::addHex(const std::array<VertexId, 8>& v) {
   for (VertexId x : v)
     if (x < 0 || x >= (VertexId)pos_.size()) throw Error("addHex: vertex " + std::to_string(x) + " does not exist");
-  if (alive_.size() >= (size_t(1) << 26)) throw Error("addHex: more than 2^26 hexes");
+  if (alive_.size() >= size_t(kMaxHexes)) throw Error("addHex: more than 2^26 hexes");
   verts_.push_back(v);
   std::array<uint32_t, 6> g;
   g.fill(kBoundary);
@@ -276,66 +275,26 @@ std::vector<QuadSide> Complex::quads() const {
 }
 
 std::vector<EdgeRef> Complex::edgeCycle(EdgeRef e, bool* closed) const {
-  std::vector<EdgeRef> fwd{e};
-  auto fs = facesOfEdge(e.edge);
-  EdgeRef cur = e;
-  int exitFace = fs[0];
-  const size_t limit = size_t(12) * size_t(numHexes_) + 1;
-  bool isClosed = false;
-  while (stepAroundEdge(cur, exitFace)) {
-    if (cur == e) {
-      isClosed = true;
-      break;
-    }
-    fwd.push_back(cur);
-    if (fwd.size() > limit) break;
-  }
+  std::vector<EdgeRef> fwd{e}, back;
+  const bool isClosed = walkAroundEdge(e, [&](EdgeRef cur, int dir) { (dir == 0 ? fwd : back).push_back(cur); });
   if (closed) *closed = isClosed;
   if (isClosed) return fwd;
-  std::vector<EdgeRef> back;
-  cur = e;
-  exitFace = fs[1];
-  while (stepAroundEdge(cur, exitFace)) {
-    back.push_back(cur);
-    if (back.size() > limit) break;
-  }
   std::reverse(back.begin(), back.end());
   back.insert(back.end(), fwd.begin(), fwd.end());
   return back;
 }
 
 size_t Complex::edgeCycleSize(EdgeRef e) const {
-  // edgeCycle(e).size(), counted without listing (validate() walks every edge once).
-  const auto fs = facesOfEdge(e.edge);
-  const size_t limit = size_t(12) * size_t(numHexes_) + 1;
   size_t n = 1;
-  EdgeRef cur = e;
-  int exitFace = fs[0];
-  while (stepAroundEdge(cur, exitFace)) {
-    if (cur == e) return n;  // closed
-    if (++n > limit) return n;
-  }
-  size_t back = 0;
-  cur = e;
-  exitFace = fs[1];
-  while (stepAroundEdge(cur, exitFace))
-    if (++back > limit) break;
-  return n + back;
+  walkAroundEdge(e, [&n](EdgeRef, int) { ++n; });
+  return n;
 }
 
 EdgeRef Complex::canonical(EdgeRef e) const {
-  // The smallest incidence met walking round the cycle, or both ways along the fan (no allocation).
   EdgeRef best = e;
-  auto fs = facesOfEdge(e.edge);
-  const size_t limit = size_t(12) * size_t(numHexes_) + 1;
-  for (int dir = 0; dir < 2; ++dir) {
-    EdgeRef cur = e;
-    int exitFace = fs[size_t(dir)];
-    for (size_t n = 0; n < limit && stepAroundEdge(cur, exitFace); ++n) {
-      if (cur == e) return best;
-      if (cur < best) best = cur;
-    }
-  }
+  walkAroundEdge(e, [&best](EdgeRef cur, int) {
+    if (cur < best) best = cur;
+  });
   return best;
 }
 

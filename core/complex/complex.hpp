@@ -99,9 +99,14 @@ class Complex {
   // ---- construction (builders.hpp has grids, rings and building from connectivity) ----
   // Reserves storage for this many hexes and vertices in all (avoids regrowth in builders).
   void reserve(size_t hexes, size_t vertices);
-  // A structured a x b x c block at integer positions (makeGrid, which checks the sizes): the
-  // state adding its vertices and hexes in order and gluing every face pair gives, written in one
-  // pass per array without the per-call checks (about a third of the time at 100^3).
+  // Hex ids fit in the 26 bits a packed gluing keeps for them.
+  static constexpr int64_t kMaxHexes = int64_t(1) << 26;
+  // Whether an a x b x c arrangement (each at least 1) has more than kMaxHexes hexes; a * b is
+  // compared first, since the product of three ints can pass 2^63 (and wrap) before it is.
+  static bool tooManyHexes(int64_t a, int64_t b, int64_t c) { return a * b > kMaxHexes || a * b * c > kMaxHexes; }
+  // A structured a x b x c block at integer positions (makeGrid): the state adding its vertices
+  // and hexes in order and gluing every face pair gives, written in one pass per array without
+  // the per-call checks (in 40% of the time at 100^3). Refuses sizes below 1 or above kMaxHexes.
   static Complex block(int a, int b, int c);
   // Adds a vertex at a position; returns its id (ids are never reused).
   VertexId addVertex(Vec3 p);
@@ -172,7 +177,7 @@ class Complex {
   }
   // The (hex, edge) incidences of an edge, in cycle order; `closed` tells whether the cycle closes.
   std::vector<EdgeRef> edgeCycle(EdgeRef e, bool* closed = nullptr) const;
-  // Its number of incidences, without listing them.
+  // Its number of incidences, without listing them (validate() counts every edge's).
   size_t edgeCycleSize(EdgeRef e) const;
   // The canonical incidence (smallest) of an edge.
   EdgeRef canonical(EdgeRef e) const;
@@ -238,6 +243,23 @@ class Complex {
       throwNoHex(h, what);
   }
   [[noreturn]] static void throwNoHex(HexId h, const char* what);
+  // Calls visit(incidence, dir) for every incidence of e's edge but e itself: round the cycle
+  // (dir 0), or out along the fan through each of e's faces (dir 0, then dir 1). Returns whether
+  // the cycle closes. At most 12 * hexes + 1 steps each way (a corrupt complex cannot loop it).
+  template <class Visit>
+  bool walkAroundEdge(EdgeRef e, Visit&& visit) const {
+    const auto fs = tables::facesOfEdge(e.edge);
+    const size_t limit = size_t(12) * size_t(numHexes_) + 1;
+    for (int dir = 0; dir < 2; ++dir) {
+      EdgeRef cur = e;
+      int exitFace = fs[size_t(dir)];
+      for (size_t n = 0; n < limit && stepAroundEdge(cur, exitFace); ++n) {
+        if (cur == e) return true;
+        visit(cur, dir);
+      }
+    }
+    return false;
+  }
   void validateLinks(const std::vector<int32_t>& edgeClass) const;
   // validate()'s checks; given `accepted`, the vertices whose link is not a sphere or a disk are
   // listed there (and tolerated) instead of failing.
