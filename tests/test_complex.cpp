@@ -128,6 +128,12 @@ TEST_CASE("edge cycles: interior edges close, boundary edges are fans") {
   auto fan = cx.edgeCycle({0, tables::edgeBetween(0, 4)}, &closed);
   CHECK_FALSE(closed);
   CHECK(fan.size() == 1);
+  // The same by count: the central edge's 4, a corner's fan of 1, and the fan of 2 along a boundary
+  // edge that hexes 0 and 1 share (hex 0's edge 1-5, on the y = 0 face).
+  CHECK(cx.edgeCycleSize({0, e}) == 4);
+  CHECK(cx.edgeCycleSize({0, tables::edgeBetween(0, 4)}) == 1);
+  CHECK(cx.edgeCycleSize({0, tables::edgeBetween(1, 5)}) == 2);
+  CHECK(cx.edgeCycle({0, tables::edgeBetween(1, 5)}).size() == 2);
   // edgeCycleSize counts what edgeCycle lists, for every incidence of cycles, fans, a twisted ring's
   // edges and the doubled edges of a pillow (validate() uses the count).
   size_t incidences = 0;
