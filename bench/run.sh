@@ -177,11 +177,14 @@ node -e 'const a = JSON.parse(process.argv[1]); console.log(`| ${a.n}³ | ${a.co
 echo
 echo "### Sheet extraction of the middle layer of a 100³ grid (issue 22; CPU ms, minimum of $REPS applications and undos)"
 echo
-echo "| step | op ms | op + dual update ms | exact undo's ids (idMemo + restoreIds) ms | slots the update visits |"
-echo "| --- | --- | --- | --- | --- |"
+echo "Floor: the step's own edits (unglue, remove, renumber, glue; journaled for undo) replayed in a transaction"
+echo "with no planning, no checks and no dual update."
+echo
+echo "| step | op ms | op + dual update ms | floor (its edits alone) ms | exact undo's ids (idMemo + restoreIds) ms | slots the update visits |"
+echo "| --- | --- | --- | --- | --- | --- |"
 se=$(build/native/hexdual_bench sheetops 100 "$REPS" sheetExtract)
 echo "$se" >>"$RESULTS"
-node -e 'const a = JSON.parse(process.argv[1]); console.log(`| ${a.op} (10,000 hexes) | ${a.opMs.toFixed(1)} | ${a.opPlusDualMs.toFixed(1)} | ${a.undoIdsMs.toFixed(1)} | ${a.slotsTouched} |`);' "$se"
+node -e 'const a = JSON.parse(process.argv[1]); console.log(`| ${a.op} (10,000 hexes) | ${a.opMs.toFixed(1)} | ${a.opPlusDualMs.toFixed(1)} | ${a.editsMs.toFixed(1)} | ${a.undoIdsMs.toFixed(1)} | ${a.slotsTouched} |`);' "$se"
 
 echo
 echo "### Against the performance targets (this run)"
@@ -223,5 +226,5 @@ node -e '
   const size = rows.find((r) => r.bench === "size");
   if (size) console.log(`| .wasm ≤ 250 kB gzipped (gzip -9) | ${size.wasmGzBytes} bytes | ${verdict(size.wasmGzBytes <= 250000)} |`);
   const se = rows.find((r) => r.bench === "sheetop" && r.op === "sheetExtract");
-  if (se) console.log(`| sheet extraction at 100³ ≤ 5 ms natively (issue 22; op + dual update) | ${se.opMs.toFixed(1)} + ${(se.opPlusDualMs - se.opMs).toFixed(1)} = ${se.opPlusDualMs.toFixed(1)} ms | ${verdict(se.opPlusDualMs <= 5)} |`);
+  if (se) console.log(`| sheet extraction at 100³ ≤ 5 ms natively (issue 22; op + dual update) | ${se.opMs.toFixed(1)} + ${(se.opPlusDualMs - se.opMs).toFixed(1)} = ${se.opPlusDualMs.toFixed(1)} ms (its edits alone: ${se.editsMs.toFixed(1)} ms) | ${verdict(se.opPlusDualMs <= 5)} |`);
 ' "$RESULTS"

@@ -70,7 +70,7 @@ std::vector<ColumnHex> walkColumn(const Complex& cx, EdgeRef e, const std::strin
 }
 
 // The vertex lines of the two diagonal edges merge pairwise (a union-find keyed by vertex id).
-std::vector<std::vector<std::pair<HexId, int>>> diagonalClasses(const Complex& cx, const std::vector<ColumnHex>& column) {
+MergeClasses diagonalClasses(const Complex& cx, const std::vector<ColumnHex>& column) {
   std::unordered_map<VertexId, VertexId> parent;
   std::unordered_map<VertexId, std::pair<HexId, int>> cornerOf;
   auto find = [&](VertexId v) {
@@ -96,7 +96,9 @@ std::vector<std::vector<std::pair<HexId, int>>> diagonalClasses(const Complex& c
     if (fresh) classes.emplace_back();
     classes[it->second].push_back(cornerOf.at(v));
   }
-  return classes;
+  MergeClasses out;
+  for (const auto& cls : classes) out.add(cls);
+  return out;
 }
 
 // The side quads glued to each other once the column is gone: from every side facing a hex

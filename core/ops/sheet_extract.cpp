@@ -77,9 +77,11 @@ std::vector<Run> runsOf(const Complex& cx, const SheetHexes& sheet, const std::s
 
 // The edge class: one merge (its two ends) per edge. Refuses a vertex on two edges of the class
 // with different other ends (self-touching): three vertices would become one.
-std::vector<std::vector<std::pair<HexId, int>>> collapsedEdges(const Complex& cx, const SheetHexes& sheet, const std::string& op) {
+MergeClasses collapsedEdges(const Complex& cx, const SheetHexes& sheet, const std::string& op) {
   IdMap<VertexId> partner(2 * sheet.hexes.size());  // a sheet of n hexes: about 2n vertices
-  std::vector<std::vector<std::pair<HexId, int>>> classes;
+  MergeClasses classes;
+  classes.corners.reserve(4 * sheet.hexes.size());
+  classes.begin.reserve(2 * sheet.hexes.size() + 1);
   auto pairUp = [&](VertexId v, VertexId w) {
     auto [it, fresh] = partner.emplace(v, w);
     if (!fresh && *it != w)
@@ -95,7 +97,8 @@ std::vector<std::vector<std::pair<HexId, int>>> collapsedEdges(const Complex& cx
       const VertexId v0 = cx.vertex(h, c0), v1 = cx.vertex(h, c1);
       const bool fresh = pairUp(v0, v1);
       pairUp(v1, v0);
-      if (fresh) classes.push_back({{h, c0}, {h, c1}});
+      const std::pair<HexId, int> ends[2] = {{h, c0}, {h, c1}};
+      if (fresh) classes.add(ends);
     }
   }
   return classes;
@@ -178,7 +181,7 @@ void reportInverse(const Complex& cx, OpResult& res, const std::vector<Run>& run
 // then can the collapse change the topology (collapsing arcs with at most one end on the boundary
 // keeps it; every applied step's Δ is compared with full counts in the tests), so only then is the
 // Euler characteristic counted.
-bool collapsesProperArc(const Complex& cx, const std::vector<std::vector<std::pair<HexId, int>>>& edges, const VertexMerges& m) {
+bool collapsesProperArc(const Complex& cx, const MergeClasses& edges, const VertexMerges& m) {
   for (size_t k = 0; k < edges.size(); ++k) {
     if (m.boundaryMembers[k] < 2) continue;
     const auto [h, c0] = edges[k][0];

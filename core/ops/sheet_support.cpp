@@ -107,51 +107,85 @@ IdMap<int8_t> sheetUp(const Complex& cx, const SheetHexes& sheet) {
 namespace {
 using Corners = std::vector<std::pair<HexId, int>>;
 
-// The corners of the vertex at corner c of hex h, into `out` (its storage reused: no allocation
-// per vertex once it has grown), as Complex::cornersOfVertex lists them.
-void starInto(const Complex& cx, HexId h, int c, Corners& out) {
-  out.clear();
-  out.push_back({h, c});
-  for (size_t i = 0; i < out.size(); ++i) {
-    auto [hh, cc] = out[i];
-    for (int f : facesOfCorner(cc)) {
-      if (cx.isBoundary({hh, f})) continue;
-      const std::pair<HexId, int> n{cx.gluing(hh, f).hex, cx.mappedCorner(hh, f, cc)};
-      if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+// A vertex's star walked across the faces between its corners: the corners (as
+// Complex::cornersOfVertex lists them), the glued face pairs between them (`links`, by index in
+// `corners`), and whether one of them has a boundary face at the vertex. Each face pair is crossed
+// once: a corner keeps, per axis, whether its face there was already crossed from the other side.
+// A hex holds a vertex at one corner at most (validate), so a corner is new exactly when its hex is.
+struct StarWalk {
+  Corners corners;
+  std::vector<uint8_t> crossed;
+  std::vector<std::pair<uint32_t, uint32_t>> links;
+  bool boundary = false;
+};
+void walkStarOf(const Complex& cx, HexId h, int c, StarWalk& st) {
+  st.corners.assign(1, {h, c});
+  st.crossed.assign(1, 0);
+  st.links.clear();
+  st.boundary = false;
+  for (size_t i = 0; i < st.corners.size(); ++i) {
+    const auto [hh, cc] = st.corners[i];
+    for (int k = 0; k < 3; ++k) {
+      if (st.crossed[i] >> k & 1) continue;
+      const Gluing g = cx.gluing(hh, 2 * k + cornerBit(cc, k));
+      if (g.boundary()) {
+        st.boundary = true;
+        continue;
+      }
+      const uint8_t arrived = uint8_t(1u << (g.face >> 1));
+      size_t j = 0;
+      while (j < st.corners.size() && st.corners[j].first != g.hex) ++j;
+      if (j == st.corners.size()) {
+        st.corners.push_back({g.hex, kCornerSteps[size_t(cornerStepIndex(cc, k, g.face, g.orient))].corner});
+        st.crossed.push_back(0);
+      }
+      st.crossed[j] |= arrived;
+      st.links.push_back({uint32_t(i), uint32_t(j)});
     }
   }
 }
 
-// Whether these corners of one vertex are connected across the faces between them.
-bool faceConnected(const Complex& cx, const Corners& corners, std::vector<uint8_t>& seen, std::vector<size_t>& stack) {
-  if (corners.empty()) return true;
-  seen.assign(corners.size(), 0);
-  stack.assign(1, 0);
-  seen[0] = 1;
-  size_t reached = 1;
-  while (!stack.empty()) {
-    auto [h, c] = corners[stack.back()];
-    stack.pop_back();
-    for (int f : facesOfCorner(c)) {
-      if (cx.isBoundary({h, f})) continue;
-      const std::pair<HexId, int> n{cx.gluing(h, f).hex, cx.mappedCorner(h, f, c)};
-      const size_t j = size_t(std::find(corners.begin(), corners.end(), n) - corners.begin());
-      if (j < corners.size() && !seen[j]) seen[j] = 1, ++reached, stack.push_back(j);
+// The star's corners off the removed hexes (into `outside`), and whether they are connected across
+// the faces between them (the star's links with both ends outside).
+template <class Removed>
+bool outsideConnected(const StarWalk& st, const Removed& removed, Corners& outside, std::vector<int>& parent) {
+  outside.clear();
+  parent.assign(st.corners.size(), -1);  // -1: removed; else a union-find link among the outside corners
+  for (size_t i = 0; i < st.corners.size(); ++i)
+    if (!removed(st.corners[i].first)) {
+      parent[i] = int(i);
+      outside.push_back(st.corners[i]);
     }
+  auto find = [&](int x) {
+    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+    return x;
+  };
+  size_t pieces = outside.size();
+  for (auto [i, j] : st.links) {
+    if (parent[i] < 0 || parent[j] < 0) continue;
+    const int a = find(int(i)), b = find(int(j));
+    if (a != b) parent[size_t(std::max(a, b))] = std::min(a, b), --pieces;
   }
-  return reached == corners.size();
+  return pieces <= 1;
+}
+
+// The corners of the vertex at corner c of hex h, into `out`, as Complex::cornersOfVertex lists them.
+void starInto(const Complex& cx, HexId h, int c, Corners& out) {
+  thread_local StarWalk st;
+  walkStarOf(cx, h, c, st);
+  out.swap(st.corners);
 }
 }  // namespace
 
-VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pair<HexId, int>>>& classes,
-                        const std::function<bool(HexId)>& removed) {
+VertexMerges planMerges(const Complex& cx, const MergeClasses& classes, const std::function<bool(HexId)>& removed) {
   VertexMerges m;
   m.into.reserve(2 * classes.size());
-  Corners star;
+  StarWalk star;
   std::vector<Corners> outside;  // per vertex of the class: its corners off the removed hexes
-  std::vector<uint8_t> seen;
-  std::vector<size_t> stack;
-  for (const auto& cls : classes) {
+  std::vector<int> parent;
+  m.members.reserve(classes.corners.size());
+  for (size_t q = 0; q < classes.size(); ++q) {
+    const std::span<const std::pair<HexId, int>> cls = classes[q];
     VertexId keep = -1, keepAny = -1;
     Vec3 sumB, sumAll;
     int nB = 0;
@@ -159,8 +193,8 @@ VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pa
     for (size_t k = 0; k < cls.size(); ++k) {
       const auto [h, c] = cls[k];
       const VertexId v = cx.vertex(h, c);
-      starInto(cx, h, c, star);
-      const bool onBoundary = cornersOnBoundary(cx, star);
+      walkStarOf(cx, h, c, star);
+      const bool onBoundary = star.boundary;
       sumAll = sumAll + cx.position(v);
       keepAny = keepAny < 0 ? v : std::min(keepAny, v);
       if (onBoundary) {
@@ -168,10 +202,7 @@ VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pa
         ++nB;
         keep = keep < 0 ? v : std::min(keep, v);
       }
-      outside[k].clear();
-      for (auto corner : star)
-        if (!removed(corner.first)) outside[k].push_back(corner);
-      if (m.split < 0 && !faceConnected(cx, outside[k], seen, stack)) m.split = v;
+      if (!outsideConnected(star, removed, outside[k], parent) && m.split < 0) m.split = v;
     }
     if (keep < 0) keep = keepAny;
     std::pair<HexId, int> anchor{-1, 0};
@@ -190,6 +221,9 @@ VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pa
     m.placed.push_back({keep, nB ? (1.0 / nB) * sumB : (1.0 / double(cls.size())) * sumAll});
   }
   std::sort(m.dropped.begin(), m.dropped.end());
+  for (auto [h, c] : m.renamed) m.renamedHexes.push_back(h);
+  std::sort(m.renamedHexes.begin(), m.renamedHexes.end());
+  m.renamedHexes.erase(std::unique(m.renamedHexes.begin(), m.renamedHexes.end()), m.renamedHexes.end());
   return m;
 }
 
@@ -245,7 +279,7 @@ void keepTopologyOrUndo(Complex& cx, const EulerBefore& before, int64_t edgesAft
 void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMerges& m,
                     const std::vector<std::pair<QuadSide, QuadSide>>& glues, const EulerBefore& before,
                     const std::vector<std::pair<HexId, int>>& after, const std::string& op) {
-  std::vector<HexId> touched = renamedHexes(m);
+  std::vector<HexId> touched = m.renamedHexes;
   for (auto [a, b] : glues) {
     const int o = a == b ? -1 : orientByVertices(cx, a.hex, a.face, b.hex, b.face);
     if (o < 0) refuse(op, "invalid-result", "after the collapse " + entityName(a) + " and " + entityName(b) + " cannot be glued");
@@ -261,16 +295,8 @@ void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMer
   std::sort(res.removedVertices.begin(), res.removedVertices.end());
 }
 
-std::vector<HexId> renamedHexes(const VertexMerges& m) {
-  std::vector<HexId> hexes;
-  for (auto [h, c] : m.renamed) hexes.push_back(h);
-  std::sort(hexes.begin(), hexes.end());
-  hexes.erase(std::unique(hexes.begin(), hexes.end()), hexes.end());
-  return hexes;
-}
-
 void requireDistinctCorners(const Complex& cx, const VertexMerges& m, const std::string& op) {
-  for (HexId h : renamedHexes(m)) {
+  for (HexId h : m.renamedHexes) {
     std::array<VertexId, 8> v = cx.hexVertices(h);
     for (VertexId& x : v) x = m.target(x);
     for (int i = 0; i < 8; ++i)

@@ -3,6 +3,7 @@
 // (hash maps keyed by hex or vertex id), never a pass over the mesh.
 #pragma once
 #include <functional>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -48,6 +49,7 @@ struct VertexMerges {
   IdMap<VertexId> into;                              // every merged vertex -> the kept one
   std::vector<std::pair<VertexId, Vec3>> placed;     // kept vertex, its place after the merge
   std::vector<std::pair<HexId, int>> renamed;        // corners to renumber (outside the removed hexes)
+  std::vector<HexId> renamedHexes;                   // the hexes of those corners (ascending, once each)
   std::vector<VertexId> dropped;                     // vertices merged away, ascending
   VertexId split = -1;  // a merged vertex whose corners outside the removed hexes fall apart (face-connected pieces)
   std::vector<std::pair<HexId, int>> anchors;  // per class: a corner off the removed hexes (it holds the kept vertex after)
@@ -55,9 +57,21 @@ struct VertexMerges {
   std::vector<int> boundaryMembers;            // per class: how many of its vertices are on the boundary
   VertexId target(VertexId v) const { return into.get(v, v); }
 };
-// `classes`: per class, one corner of each of its vertices (distinct vertices).
-VertexMerges planMerges(const Complex& cx, const std::vector<std::vector<std::pair<HexId, int>>>& classes,
-                        const std::function<bool(HexId)>& removed);
+// Classes of vertices to merge: per class, one corner of each of its vertices (distinct
+// vertices), all in one array (a sheet extraction has one class per collapsed edge: thousands).
+struct MergeClasses {
+  std::vector<std::pair<HexId, int>> corners;
+  std::vector<uint32_t> begin{0};  // class k: corners[begin[k], begin[k + 1])
+  size_t size() const { return begin.size() - 1; }
+  std::span<const std::pair<HexId, int>> operator[](size_t k) const {
+    return {corners.data() + begin[k], corners.data() + begin[k + 1]};
+  }
+  void add(std::span<const std::pair<HexId, int>> cls) {
+    corners.insert(corners.end(), cls.begin(), cls.end());
+    begin.push_back(uint32_t(corners.size()));
+  }
+};
+VertexMerges planMerges(const Complex& cx, const MergeClasses& classes, const std::function<bool(HexId)>& removed);
 // The number of edges with an end at one of these vertices (each named by one of its corners):
 // the only edges a collapse of them can change. Costs their stars.
 int64_t edgesAt(const Complex& cx, const std::vector<std::pair<HexId, int>>& vertices);
@@ -82,8 +96,5 @@ void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMer
 void requireDistinctCorners(const Complex& cx, const VertexMerges& m, const std::string& op);
 // Renumbers the corners and places the kept vertices (call inside the transaction).
 void applyMerges(Complex& cx, const VertexMerges& m);
-
-// The hexes with a renumbered corner (ascending, once each).
-std::vector<HexId> renamedHexes(const VertexMerges& m);
 
 }  // namespace hexdual::ops
