@@ -66,6 +66,9 @@ struct DualTracker::ChordRejoin {
     std::vector<int32_t> compId, taken, stretchPieceAt, splicedIds;
     std::vector<Piece> stretchPieces, pieces;
     std::vector<Slot> run;
+    // Per hex id: its index in `touched`; per chord id: its index in `ids`; -1 for the others
+    // (outside a rejoin every entry is -1: the destructor resets what the constructor set).
+    std::vector<int32_t> hexPos, idPos;
   };
   static Scratch& scratch() {
     thread_local Scratch s;
@@ -118,18 +121,30 @@ struct DualTracker::ChordRejoin {
     items.clear();
     comps.clear();
     taken.clear();
+    if (sc.hexPos.size() < size_t(cx.hexCapacity())) sc.hexPos.resize(size_t(cx.hexCapacity()), -1);
+    for (size_t i = 0; i < touched.size(); ++i)
+      if (sc.hexPos[size_t(touched[i])] < 0) sc.hexPos[size_t(touched[i])] = int32_t(i);  // a repeat: its first place
+    if (!ids.empty() && sc.idPos.size() <= size_t(ids.back())) sc.idPos.resize(size_t(ids.back()) + 1, -1);
+    for (size_t k = 0; k < ids.size(); ++k) sc.idPos[size_t(ids[k])] = int32_t(k);
   }
   ~ChordRejoin() {
     for (int32_t id : taken) takenMark[size_t(id)] = 0;
+    for (HexId h : touched) sc.hexPos[size_t(h)] = -1;
+    for (int32_t id : ids) sc.idPos[size_t(id)] = -1;
   }
   ChordRejoin(const ChordRejoin&) = delete;
   ChordRejoin& operator=(const ChordRejoin&) = delete;
-  bool inIds(int32_t c) const { return c >= 0 && std::binary_search(ids.begin(), ids.end(), c); }
   // Small helpers of the hot walks, defined here (inline).
+  // The place of chord c in ids, or ids.size() when it is not one of them.
+  size_t idIndex(int32_t c) const {
+    const int32_t k = c >= 0 && size_t(c) < sc.idPos.size() ? sc.idPos[size_t(c)] : -1;
+    return k < 0 ? ids.size() : size_t(k);
+  }
+  bool inIds(int32_t c) const { return idIndex(c) < ids.size(); }
+  // The index in ts of touched slot s, or -1.
   int32_t indexOf(Slot s) const {
-    if (!std::binary_search(touched.begin(), touched.end(), s.hex)) return -1;
-    return int32_t(3 * size_t(std::lower_bound(touched.begin(), touched.end(), s.hex) - touched.begin()) +
-                   size_t(s.axis));
+    const int32_t i = s.hex >= 0 && size_t(s.hex) < sc.hexPos.size() ? sc.hexPos[size_t(s.hex)] : -1;
+    return i < 0 ? -1 : int32_t(3 * size_t(i) + size_t(s.axis));
   }
   // The one face of s's hex along its axis glued to slot t, else -1.
   int faceTo(Slot s, Slot t) const {
@@ -508,9 +523,9 @@ void DualTracker::ChordRejoin::markSelfIntersections() {
 bool DualTracker::ChordRejoin::splice(size_t ci) const {
   const Comp& c = comps[ci];
   const int32_t id = compId[ci];
-  const size_t k = size_t(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
+  const size_t k = idIndex(id);
   const std::span<const Item> cs = itemsOf(c);
-  if (c.closed || k == ids.size() || ids[k] != id || !contiguous[k] || cs.size() < 3) return false;
+  if (c.closed || k == ids.size() || !contiguous[k] || cs.size() < 3) return false;
   const Item &head = cs.front(), &tail = cs.back();
   if (head.stretch < 0 || tail.stretch < 0 || !head.forward || !tail.forward ||
       stretches[size_t(head.stretch)].chord != id || stretches[size_t(head.stretch)].a != 0 ||
@@ -571,7 +586,7 @@ void DualTracker::ChordRejoin::commit(DualChange& change) {
   sc.stretchPieceAt.assign(1, 0);
   for (size_t r = 0; r < stretches.size(); ++r) {
     const Stretch& st = stretches[r];
-    const int32_t len = lengths[size_t(std::lower_bound(ids.begin(), ids.end(), st.chord) - ids.begin())];
+    const int32_t len = lengths[idIndex(st.chord)];
     tr.sliceChord(st.chord, st.a, std::min(st.b, len - 1), sc.stretchPieces);
     if (st.b >= len) tr.sliceChord(st.chord, 0, st.b - len, sc.stretchPieces);
     sc.stretchPieceAt.push_back(int32_t(sc.stretchPieces.size()));
@@ -592,7 +607,7 @@ void DualTracker::ChordRejoin::commit(DualChange& change) {
     tr.chordSelf_[size_t(id)] = self[ci];
     if (self[ci] != 2) ch.selfIntersecting = self[ci] != 0;
     tr.setChordPieces(id, sc.pieces);
-    if (!std::binary_search(ids.begin(), ids.end(), id))
+    if (!inIds(id))
       report(change.chordsCreated, id);
     else if (spliced[ci])
       splicedIds.push_back(id);
