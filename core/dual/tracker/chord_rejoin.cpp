@@ -8,6 +8,7 @@
 // writing nothing, when the state is not one it can follow.
 #include <algorithm>
 #include <numeric>
+#include <utility>
 #include <span>
 
 #include "complex/id_map.hpp"
@@ -68,7 +69,7 @@ struct DualTracker::ChordRejoin {
     std::vector<Slot> run;
     // Per hex id: its index in `touched`; per chord id: its index in `ids`; -1 for the others
     // (outside a rejoin every entry is -1: the destructor resets what the constructor set).
-    std::vector<int32_t> hexPos, idPos;
+    std::vector<int32_t> hexPos, idPos, byOldEnd;
   };
   static Scratch& scratch() {
     thread_local Scratch s;
@@ -84,7 +85,7 @@ struct DualTracker::ChordRejoin {
   std::vector<Touched>& ts = sc.ts;
   std::vector<Stretch>& stretches = sc.stretches;
   // The touched slots of each changed chord, found once (a sheet operation changes thousands of
-  // chords): (old chord, index into ts), sorted.
+  // chords): (old chord, index into ts), by chord in ids order and by ts index within (cutStretches).
   std::vector<std::pair<int32_t, int32_t>>& byOld = sc.byOld;
   // The first stretch end (2 * stretch + side) at a slot leaving through a face, by endKey.
   IdMap<int32_t>& endIndex = sc.endIndex;
@@ -210,9 +211,17 @@ bool DualTracker::ChordRejoin::cutStretches() {
   lengths.assign(ids.size(), 0);
   liveOld.assign(ids.size(), 0);
   contiguous.assign(ids.size(), 0);
+  // byOld by counting: each changed chord's touched slots in ts order (as sorting the pairs gave);
+  // afterwards byOldEnd[k] is where chord ids[k]'s range ends (and ids[k + 1]'s begins).
+  std::vector<int32_t>& end = sc.byOldEnd;
+  end.assign(ids.size(), 0);
+  for (const Touched& t : ts)
+    if (const size_t k = idIndex(t.old); k < ids.size()) ++end[k];
+  int32_t total = 0;
+  for (int32_t& e : end) total += std::exchange(e, total);  // each range's start
+  byOld.resize(size_t(total));
   for (size_t i = 0; i < ts.size(); ++i)
-    if (inIds(ts[i].old)) byOld.push_back({ts[i].old, int32_t(i)});
-  std::sort(byOld.begin(), byOld.end());
+    if (const size_t k = idIndex(ts[i].old); k < ids.size()) byOld[size_t(end[k]++)] = {ts[i].old, int32_t(i)};
   for (size_t k = 0; k < ids.size(); ++k)
     if (!cutStretchesOf(k)) return false;
   tr.slotsTouched_ += 2 * stretches.size();
@@ -242,9 +251,8 @@ bool DualTracker::ChordRejoin::cutStretchesOf(size_t k) {
   lengths[k] = len;
   std::vector<int32_t>& at = sc.at;
   at.clear();
-  for (auto it = std::lower_bound(byOld.begin(), byOld.end(), std::pair<int32_t, int32_t>{id, -1});
-       it != byOld.end() && it->first == id; ++it) {
-    const Touched& t = ts[size_t(it->second)];
+  for (int32_t q = k ? sc.byOldEnd[k - 1] : 0; q < sc.byOldEnd[k]; ++q) {
+    const Touched& t = ts[size_t(byOld[size_t(q)].second)];
     const int32_t p = tr.placeInChord(id, t.slot);
     if (p < 0) return false;
     at.push_back(p);
