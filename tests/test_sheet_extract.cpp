@@ -154,6 +154,24 @@ TEST_CASE("sheet-extract: refusals name their rule and leave the complex unchang
         "sheet-extract: hex-vertices-merge: hex 2 would lose a corner: its vertices 5 and 3 would merge into 3");
 }
 
+// planMerges' split: a merged vertex whose corners off the sheet are not connected across faces
+// (they touch only at the vertex). The extraction is valid, but no insertion gives it back.
+TEST_CASE("sheet-extract: where the hexes off the sheet touch only at a merged vertex, it applies with no inverse, named") {
+  Complex cx = makeGrid(3, 3, 3);
+  applyLog(cx, "v1;chordpush h9e3 h12f5 h21f2;hexpush h4f1;hexpush h3f3");
+  DualTracker tracker(cx);
+  Checked c = checkSheetStep(cx, tracker, parseOpStep("sheet-extract h0e8"), true);
+  REQUIRE(c.applied);
+  CHECK_FALSE(c.report.result.inverse);
+  CHECK(c.report.result.noInverse ==
+        "around vertex 5 the hexes off the sheet touch only at the vertex: no sheet insertion gives it back");
+  // Another sheet through hex 0 has no such vertex: it has an inverse.
+  Checked other = checkSheetStep(cx, tracker, parseOpStep("sheet-extract h0e4"), true);
+  REQUIRE(other.applied);
+  REQUIRE(other.report.result.inverse);
+  CHECK(formatOpStep(*other.report.result.inverse) == "sheet-insert h35f2 h31f2 h31f1 h12f2 h13f2 h14f2 h28f4 h22f2 h23f2");
+}
+
 TEST_CASE("sheet-extract: a vertex the input left non-manifold is refused with its rule") {
   // Two cubes touching at one vertex (accepted from a file, recorded as non-manifold).
   std::vector<Vec3> p;
