@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <random>
+#include <thread>
 
 #include "complex/builders.hpp"
 #include "dual/dual_tracker.hpp"
@@ -314,4 +315,28 @@ TEST_CASE("dual tracker: a sheet extraction's long log gives the same touched he
     CHECK(std::count(scratch.begin(), scratch.end(), 0) == std::ptrdiff_t(scratch.size()));
     if (pass == 0) cx.undo(r->edits);
   }
+}
+
+// An undo's log names the hexes the step added, which the complex no longer has (its capacity
+// shrank back): the chord rejoin's per-hex scratch must reach them too. On a fresh thread, whose
+// scratch starts empty, with the tracker built after the step. (Under the sanitizer build this
+// was a heap overflow; the release build wrote past the scratch silently.)
+TEST_CASE("dual tracker: an undo's update names hexes past the complex's capacity (a fresh thread)") {
+  std::string failure = "did not run";
+  std::thread worker([&] {
+    try {
+      Complex cx = makeGrid(3, 3, 3);
+      const OpResult r = applyStep(cx, "pillow h13f5");
+      const HexId grown = cx.hexCapacity();
+      DualTracker tracker(cx);
+      cx.undo(r.edits);
+      tracker.update(cx, r.edits, keepsSheetTopology(r));
+      compareDuals(cx, tracker.dual(), extractDual(cx));
+      failure = grown == 29 && cx.hexCapacity() == 27 ? "" : "the capacities are not 29 then 27";
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+  });
+  worker.join();
+  CHECK(failure == "");
 }

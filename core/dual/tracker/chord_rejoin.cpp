@@ -122,10 +122,13 @@ struct DualTracker::ChordRejoin {
     items.clear();
     comps.clear();
     taken.clear();
-    if (sc.hexPos.size() < size_t(cx.hexCapacity())) sc.hexPos.resize(size_t(cx.hexCapacity()), -1);
-    for (size_t i = 0; i < touched.size(); ++i)
-      if (sc.hexPos[size_t(touched[i])] < 0) sc.hexPos[size_t(touched[i])] = int32_t(i);  // a repeat: its first place
+    // Both arrays grown before either is marked (a failed allocation leaves no mark behind). The
+    // touched hexes can lie beyond the complex's capacity: an undo's log names the hexes it took
+    // away. touched and ids are ascending, without repeats.
+    const size_t reach = std::max(size_t(cx.hexCapacity()), touched.empty() ? size_t(0) : size_t(touched.back()) + 1);
+    if (sc.hexPos.size() < reach) sc.hexPos.resize(reach, -1);
     if (!ids.empty() && sc.idPos.size() <= size_t(ids.back())) sc.idPos.resize(size_t(ids.back()) + 1, -1);
+    for (size_t i = 0; i < touched.size(); ++i) sc.hexPos[size_t(touched[i])] = int32_t(i);
     for (size_t k = 0; k < ids.size(); ++k) sc.idPos[size_t(ids[k])] = int32_t(k);
   }
   ~ChordRejoin() {
