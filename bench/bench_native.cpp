@@ -237,7 +237,8 @@ static int benchLayoutFile(const char* file, int reps) {
 
 // The floor of an operation: the edits it made, replayed into the complex in a transaction of
 // their own (journaled for undo, as the operation's are) with no planning, no checks and no dual
-// update. `after`: per edit, what it set (read right after the operation, before its undo).
+// update. replayOf reads what each edit set (a gluing, a corner, a position) right after the
+// operation, before its undo.
 struct EditReplay {
   Complex::Edit e;
   Gluing glued;

@@ -97,8 +97,10 @@ MergeClasses collapsedEdges(const Complex& cx, const SheetHexes& sheet, const st
       const VertexId v0 = cx.vertex(h, c0), v1 = cx.vertex(h, c1);
       const bool fresh = pairUp(v0, v1);
       pairUp(v1, v0);
-      const std::pair<HexId, int> ends[2] = {{h, c0}, {h, c1}};
-      if (fresh) classes.add(ends);
+      if (fresh) {
+        const std::pair<HexId, int> ends[2] = {{h, c0}, {h, c1}};
+        classes.add(ends);
+      }
     }
   }
   return classes;

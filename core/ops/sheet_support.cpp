@@ -169,12 +169,6 @@ bool outsideConnected(const StarWalk& st, const Removed& removed, Corners& outsi
   return pieces <= 1;
 }
 
-// The corners of the vertex at corner c of hex h, into `out`, as Complex::cornersOfVertex lists them.
-void starInto(const Complex& cx, HexId h, int c, Corners& out) {
-  thread_local StarWalk st;
-  walkStarOf(cx, h, c, st);
-  out.swap(st.corners);
-}
 }  // namespace
 
 VertexMerges planMerges(const Complex& cx, const MergeClasses& classes, const std::function<bool(HexId)>& removed) {
@@ -234,12 +228,13 @@ int64_t edgesAt(const Complex& cx, const std::vector<std::pair<HexId, int>>& ver
   std::unordered_set<VertexId> in;
   for (auto [h, c] : vertices) in.insert(cx.vertex(h, c));
   std::unordered_set<VertexId> done;
-  Corners star;
+  StarWalk walk;
+  const Corners& star = walk.corners;
   std::vector<int> parent;
   int64_t twice = 0;
   for (auto [h, c] : vertices) {
     if (!done.insert(cx.vertex(h, c)).second) continue;
-    starInto(cx, h, c, star);
+    walkStarOf(cx, h, c, walk);
     parent.resize(3 * star.size());
     for (size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
     auto find = [&](int x) {

@@ -69,7 +69,8 @@ struct DualTracker::ChordRejoin {
     std::vector<Slot> run;
     // Per hex id: its index in `touched`; per chord id: its index in `ids`; -1 for the others
     // (outside a rejoin every entry is -1: the destructor resets what the constructor set).
-    std::vector<int32_t> hexPos, idPos, byOldEnd;
+    std::vector<int32_t> hexPos, idPos;
+    std::vector<int32_t> byOldEnd;  // per changed chord: where its range of byOld ends (cutStretches)
   };
   static Scratch& scratch() {
     thread_local Scratch s;
