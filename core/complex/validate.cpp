@@ -303,37 +303,66 @@ void Complex::validateAround(const std::vector<HexId>& hexList) const {
 }
 
 // A vertex's link changes only when a corner at it is added, removed or re-pointed, or a face at it
-// is glued or unglued: the vertices of the open transaction's edits (a superset, with repeats).
-// Consecutive edits mostly name the same few vertices (a hex's faces unglued in turn, then the hex
-// removed), so a vertex among the last 8 listed is not listed again. Extracting a 100³ grid's middle
-// sheet (110,001 edits) lists 148,429 vertices instead of about 560,000, each a probe into
-// validateAround's table: that part of its check went from 7-10 to 5-6 ms.
+// is glued or unglued: the vertices of the open transaction's edits, each listed once. A short
+// journal (a few hundred edits: every atomic operation) skips a vertex among the last 8 listed, as
+// consecutive edits mostly name the same few vertices (a hex's faces unglued in turn, then the hex
+// removed), and may list a vertex again further on: validateAround's table takes repeats. A long one
+// (a sheet operation) stamps each vertex per call in a per-thread array, one entry per vertex id, so
+// each is listed once: extracting a 100³ grid's middle sheet (110,001 edits) lists 10,201 vertices
+// where the last-8 rule listed 148,429 (about 560,000 without it), each a probe into validateAround's
+// table of 8 entries per hex. The stamps cost 4 bytes per vertex id per thread, kept between calls.
 std::vector<VertexId> Complex::verticesWithEditedStars() const {
-  std::vector<VertexId> out;
-  out.reserve(2 * journal_.size());
-  std::array<VertexId, 8> recent;
-  recent.fill(-1);
-  size_t next = 0;
-  auto add = [&](VertexId v) {
-    for (VertexId r : recent)
-      if (r == v) return;
-    recent[next++ & 7] = v;
-    out.push_back(v);
-  };
-  auto addFace = [&](HexId h, int f) {
-    for (int c : kFaceCorners[size_t(f)]) add(verts_[size_t(h)][size_t(c)]);
-  };
-  for (const Edit& e : journal_) {
-    if (e.kind == Edit::AddHex || e.kind == Edit::RemoveHex) {
-      for (VertexId v : verts_[size_t(e.hex)]) add(v);
-    } else if (e.kind == Edit::SetCorner) {
-      add(VertexId(e.value));
-      add(verts_[size_t(e.hex)][size_t(e.face)]);
-    } else if (e.kind == Edit::Glue || e.kind == Edit::Unglue) {
-      addFace(e.hex, e.face);
-      addFace(HexId(e.value >> 6), int((e.value >> 3) & 7));
+  // Each edit's vertices, through `add` (one loop per rule, so each inlines its own).
+  auto eachVertex = [&](auto&& add) {
+    auto addFace = [&](HexId h, int f) {
+      for (int c : kFaceCorners[size_t(f)]) add(verts_[size_t(h)][size_t(c)]);
+    };
+    for (const Edit& e : journal_) {
+      if (e.kind == Edit::AddHex || e.kind == Edit::RemoveHex) {
+        for (VertexId v : verts_[size_t(e.hex)]) add(v);
+      } else if (e.kind == Edit::SetCorner) {
+        add(VertexId(e.value));
+        add(verts_[size_t(e.hex)][size_t(e.face)]);
+      } else if (e.kind == Edit::Glue || e.kind == Edit::Unglue) {
+        addFace(e.hex, e.face);
+        addFace(HexId(e.value >> 6), int((e.value >> 3) & 7));
+      }
     }
+  };
+  std::vector<VertexId> out;
+  constexpr size_t kStampFrom = 512;  // edits: below, the last-8 rule (no per-vertex array touched)
+  if (journal_.size() < kStampFrom) {
+    out.reserve(2 * journal_.size());
+    std::array<VertexId, 8> recent;
+    recent.fill(-1);
+    size_t next = 0;
+    eachVertex([&](VertexId v) {
+      for (VertexId r : recent)
+        if (r == v) return;
+      recent[next++ & 7] = v;
+      out.push_back(v);
+    });
+    return out;
   }
+  thread_local std::vector<uint32_t> stampsOf;
+  thread_local uint32_t epochOf = 0;
+  std::vector<uint32_t>& stamps = stampsOf;  // (one thread-local lookup, not one per vertex)
+  if (stamps.size() < size_t(vertexCapacity())) stamps.resize(size_t(vertexCapacity()), 0);
+  uint32_t epoch = ++epochOf;
+  if (epoch == 0) {  // wrapped: every old stamp could match again
+    std::fill(stamps.begin(), stamps.end(), 0);
+    epoch = epochOf = 1;
+  }
+  out.reserve(journal_.size() / 4);
+  uint32_t* stamp = stamps.data();
+  const size_t n = stamps.size();
+  eachVertex([&](VertexId v) {
+    if (size_t(v) < n) {  // (always: ids stay below the capacity)
+      if (stamp[size_t(v)] == epoch) return;
+      stamp[size_t(v)] = epoch;
+    }
+    out.push_back(v);  // (a repeat would only be probed again)
+  });
   return out;
 }
 

@@ -210,7 +210,9 @@ OpResult sheetExtract(Complex& cx, EdgeRef e) {
   requireManifold(cx, sheet.hexes, op);
   const std::vector<Run> runs = runsOf(cx, sheet, op);
   const auto edges = collapsedEdges(cx, sheet, op);
-  const VertexMerges m = planMerges(cx, edges, [&](HexId h) { return sheet.axisOf(h) >= 0; });
+  std::vector<uint64_t> inSheet((size_t(cx.hexCapacity()) + 63) / 64, 0);  // a bit per hex: what planMerges asks most
+  for (HexId h : sheet.hexes) inSheet[size_t(h) >> 6] |= uint64_t(1) << (size_t(h) & 63);
+  const VertexMerges m = planMerges(cx, edges, [&](HexId h) { return inSheet[size_t(h) >> 6] >> (size_t(h) & 63) & 1; });
   requireDistinctCorners(cx, m, op);
   const auto glues = gluesOf(cx, runs, m, op);
   OpResult res;

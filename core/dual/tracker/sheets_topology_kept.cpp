@@ -30,6 +30,7 @@ struct DualTracker::TopologyKept {
     std::vector<std::pair<int32_t, Slot>> dead;
     std::vector<Slot> gone;
     std::vector<HexId> born;
+    std::vector<uint32_t> at;  // dropDeadSlots: per sheet id, where its group of dead slots ends
   };
   static Scratch& scratch() {
     thread_local Scratch s;
@@ -132,9 +133,26 @@ void DualTracker::TopologyKept::dropDeadSlots() {
       t.flooder_.signs()[3 * size_t(h) + size_t(a)] = 0;
     }
   }
+  std::vector<Slot>& gone = sc.gone;
+  if (dead.size() >= 256) {
+    // Many (a sheet operation's: 30,000 when a 100³ sheet is extracted): grouped by sheet with a
+    // count per sheet id, not sorted. Each group stays in slot order, as touched is ascending.
+    std::vector<uint32_t>& at = sc.at;
+    at.assign(t.dual_.sheets.size() + 1, 0);
+    for (const auto& [id, s] : dead) ++at[size_t(id) + 1];
+    for (size_t i = 1; i < at.size(); ++i) at[i] += at[i - 1];
+    gone.resize(dead.size());
+    for (const auto& [id, s] : dead) gone[at[size_t(id)]++] = s;  // at[id]: now where id's group ends
+    size_t from = 0;
+    for (size_t id = 0; id + 1 < at.size(); ++id) {
+      if (at[id] == from) continue;
+      t.dual_.sheets[id].slots.remove(std::span<const Slot>(gone.data() + from, at[id] - from));
+      from = at[id];
+    }
+    return;
+  }
   std::sort(dead.begin(), dead.end(),
             [](const auto& x, const auto& y) { return x.first != y.first ? x.first < y.first : x.second < y.second; });
-  std::vector<Slot>& gone = sc.gone;
   for (size_t i = 0; i < dead.size();) {
     gone.clear();
     size_t j = i;
