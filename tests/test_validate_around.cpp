@@ -147,3 +147,35 @@ TEST_CASE(
           cx.validateAround({0, 1});
         }) == "validate: vertex " + std::to_string(shared) + " is non-manifold: its link is not connected");
 }
+
+TEST_CASE("validateAround in a long transaction (512 edits or more: each edited vertex listed once) checks every link its edits changed") {
+  // A 6x6x6 grid: the quad between hexes 0 and 1 unglued first, then 300 other quads unglued and
+  // glued back (600 more edits). The first edit's 4 vertices must still be checked, at every call.
+  Complex grid = makeGrid(6, 6, 6);
+  const VertexId first = std::min({grid.vertex(0, 1), grid.vertex(0, 2), grid.vertex(0, 5), grid.vertex(0, 6)});
+  auto regluedMany = [&](bool breakFirst) {
+    grid.beginTransaction();
+    if (breakFirst) grid.unglue(0, 1);
+    int reglued = 0;
+    for (HexId h = 2; h < grid.hexCapacity() && reglued < 300; ++h)
+      for (int f = 0; f < 6 && reglued < 300; ++f) {
+        const Gluing g = grid.gluing(h, f);
+        if (g.boundary() || g.hex < 2) continue;
+        grid.unglue(h, f);
+        grid.glue(h, f, g.hex, g.face, g.orient);
+        ++reglued;
+      }
+    REQUIRE(reglued == 300);
+  };
+  std::vector<HexId> all;
+  for (HexId h = 0; h < grid.hexCapacity(); ++h) all.push_back(h);
+  const std::string broken = "validate: vertex " + std::to_string(first) + " is non-manifold: its link is not connected";
+  regluedMany(true);
+  CHECK(errorOf([&] { grid.validateAround(all); }) == broken);
+  CHECK(errorOf([&] { grid.validateAround(all); }) == broken);  // a second call lists the vertices again
+  grid.rollbackTransaction();
+  regluedMany(false);
+  CHECK(errorOf([&] { grid.validateAround(all); }) == "");
+  grid.rollbackTransaction();
+  CHECK(errorOf([&] { grid.validateAround(all); }) == "");
+}

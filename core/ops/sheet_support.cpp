@@ -190,7 +190,7 @@ namespace {
 // through a bitmap of the id range, one pass each way, instead of a sort: a 100³ sheet extraction's
 // 40,000 renamed corners lie in 20,000 hexes of a million.
 void sortUnique(std::vector<int32_t>& ids, size_t bound) {
-  if (ids.size() < 4096 || bound > 64 * ids.size() * 64) {
+  if (ids.size() < 1024 || bound > 64 * ids.size() * 64) {
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     return;
