@@ -201,33 +201,127 @@ bool collapsesProperArc(const Complex& cx, const MergeClasses& edges, const Vert
   return false;
 }
 
+// Whether the extraction's result is a valid complex whatever the validity check would find, so
+// that its commit walks no vertex link (Transaction::commitValidByConstruction). The argument:
+// - Only the links of the merged vertices change: every corner, quad and gluing the extraction
+//   edits has all its vertices among them (each vertex of a sheet hex ends a collapsed edge).
+//   Distinct corners are required before (requireDistinctCorners), and the new gluings match
+//   vertex for vertex (orientByVertices).
+// - The link of the merged vertex of edge e = v0v1 is link(v0) and link(v1) with the corners of
+//   the hexes round e taken out (the umbrellas D0, D1 round e's link vertex), glued along their
+//   rims: the quads at v0 and at v1 of those hexes, which the extraction glues pairwise in order.
+// - When every hex at v0 and at v1 is a hex round e (one edge joins them), the rims are simple
+//   (the far ends of the rim edges are distinct vertices), every rim quad is glued (no run ends on
+//   the boundary or folds) and the corners off the sheet stay face-connected (no split):
+//   * e closed, v1 inside: link(v1) minus D1 is a disk with the rim as boundary, so the new link
+//     is link(v0) with D0 replaced by a disk: a sphere or a disk as link(v0) was (and the same
+//     with v0 and v1 exchanged);
+//   * e closed, v0 and v1 both on the boundary: an annulus. Not certified (the check refuses it);
+//   * e a fan (both ends on the boundary): two disks glued along an arc of each boundary: a disk.
+// Anything else (folds, boundary runs, splits, doubled edges, a vertex with more sheet hexes than
+// e's): not certified, and the validity check decides as before.
+// tests/test_valid_by_construction.cpp checks the claim on every certified extraction it meets.
+bool validByConstruction(const Complex& cx, const std::vector<Run>& runs, const MergeClasses& edges, const VertexMerges& m) {
+  if (m.split >= 0 || m.removedCorners.size() != 2 * edges.size()) return false;
+  for (const Run& r : runs)
+    if (r.hexes.size() != 1 || cx.isBoundary(r.before) || cx.isBoundary(r.after)) return false;
+  std::array<VertexId, 64> rim0, rim1;  // far ends of the rim edges at v0 and at v1 (each named twice on a cycle)
+  auto distinct = [](std::array<VertexId, 64>& a, size_t n) {
+    std::sort(a.begin(), a.begin() + std::ptrdiff_t(n));
+    return size_t(std::unique(a.begin(), a.begin() + std::ptrdiff_t(n)) - a.begin());
+  };
+  for (size_t k = 0; k < edges.size(); ++k) {
+    const auto [h, c0] = edges[k][0];
+    const VertexId v0 = cx.vertex(h, c0);
+    size_t round = 0, n0 = 0, n1 = 0;  // hexes round e; rim ends listed
+    auto visit = [&](EdgeRef cur) {
+      ++round;
+      const int a = axisOfEdge(cur.edge);
+      for (int c : kEdgeCorners[size_t(cur.edge)]) {
+        const bool atV0 = cx.vertex(cur.hex, c) == v0;
+        for (int b = 0; b < 3; ++b)
+          if (b != a) (atV0 ? rim0[n0++] : rim1[n1++]) = cx.vertex(cur.hex, flipAxis(c, b));
+      }
+    };
+    const EdgeRef start{h, edgeBetween(c0, edges[k][1].second)};
+    bool closed = false;
+    visit(start);
+    for (int dir = 0; dir < 2 && !closed; ++dir) {
+      EdgeRef cur = start;
+      int exit = facesOfEdge(start.edge)[size_t(dir)];
+      while (cx.stepAroundEdge(cur, exit)) {
+        if (cur == start) {
+          closed = true;
+          break;
+        }
+        if (round == 31) return false;  // (a large edge cycle: left to the check)
+        visit(cur);
+      }
+    }
+    if (n0 != 2 * round || n1 != 2 * round) return false;
+    if (m.removedCorners[2 * k] != int(round) || m.removedCorners[2 * k + 1] != int(round)) return false;
+    if (closed && (round < 2 || m.boundaryMembers[k] == 2)) return false;
+    const size_t want = closed ? round : round + 1;
+    if (distinct(rim0, n0) != want || distinct(rim1, n1) != want) return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+namespace {
+// Everything the extraction decides before it edits (each step refuses with its rule).
+struct ExtractionPlan {
+  SheetHexes sheet;
+  std::vector<Run> runs;
+  MergeClasses edges;
+  VertexMerges merges;
+  std::vector<std::pair<QuadSide, QuadSide>> glues;
+};
+ExtractionPlan planExtraction(const Complex& cx, EdgeRef e, const std::string& op) {
+  ExtractionPlan p;
+  p.sheet = sheetThrough(cx, e, op);
+  requireManifold(cx, p.sheet.hexes, op);
+  p.runs = runsOf(cx, p.sheet, op);
+  p.edges = collapsedEdges(cx, p.sheet, op);
+  std::vector<uint64_t> inSheet((size_t(cx.hexCapacity()) + 63) / 64, 0);  // a bit per hex: what planMerges asks most
+  for (HexId h : p.sheet.hexes) inSheet[size_t(h) >> 6] |= uint64_t(1) << (size_t(h) & 63);
+  p.merges = planMerges(cx, p.edges, [&](HexId h) { return inSheet[size_t(h) >> 6] >> (size_t(h) & 63) & 1; });
+  requireDistinctCorners(cx, p.merges, op);
+  p.glues = gluesOf(cx, p.runs, p.merges, op);
+  return p;
+}
+}  // namespace
+
+bool sheetExtractValidByConstruction(const Complex& cx, EdgeRef e) {
+  try {
+    const ExtractionPlan p = planExtraction(cx, e, opName(OpKind::SheetExtract));
+    return validByConstruction(cx, p.runs, p.edges, p.merges);
+  } catch (const Error&) {
+    return false;
+  }
+}
 
 OpResult sheetExtract(Complex& cx, EdgeRef e) {
   const OpKind kind = OpKind::SheetExtract;
   const std::string op = opName(kind);
-  const SheetHexes sheet = sheetThrough(cx, e, op);
-  requireManifold(cx, sheet.hexes, op);
-  const std::vector<Run> runs = runsOf(cx, sheet, op);
-  const auto edges = collapsedEdges(cx, sheet, op);
-  std::vector<uint64_t> inSheet((size_t(cx.hexCapacity()) + 63) / 64, 0);  // a bit per hex: what planMerges asks most
-  for (HexId h : sheet.hexes) inSheet[size_t(h) >> 6] |= uint64_t(1) << (size_t(h) & 63);
-  const VertexMerges m = planMerges(cx, edges, [&](HexId h) { return inSheet[size_t(h) >> 6] >> (size_t(h) & 63) & 1; });
-  requireDistinctCorners(cx, m, op);
-  const auto glues = gluesOf(cx, runs, m, op);
+  const ExtractionPlan p = planExtraction(cx, e, op);
+  const SheetHexes& sheet = p.sheet;
+  const VertexMerges& m = p.merges;
   OpResult res;
   res.op = kind;
   res.removedHexes = sheet.hexes;
-  reportInverse(cx, res, runs, sheet, m.split);  // names quads by their outside sides, which survive
+  reportInverse(cx, res, p.runs, sheet, m.split);  // names quads by their outside sides, which survive
+  const bool certified = validByConstruction(cx, p.runs, p.edges, m);
 
-  const bool countEuler = collapsesProperArc(cx, edges, m);
+  const bool countEuler = collapsesProperArc(cx, p.edges, m);
   const EulerBefore before{cx.numVertices(), countEuler ? edgesAt(cx, m.members) : -1, cx.numQuads(), cx.numHexes()};
   Transaction tx(cx);
   for (HexId h : sheet.hexes)
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);
   for (HexId h : sheet.hexes) cx.removeHex(h);
   applyMerges(cx, m);
-  finishCollapse(cx, tx, res, m, glues, before, m.anchors, op);
+  finishCollapse(cx, tx, res, m, p.glues, before, m.anchors, op, certified);
   return res;
 }
 

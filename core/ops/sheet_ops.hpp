@@ -25,6 +25,10 @@ namespace hexdual {
 // (non-manifold-result, invalid-result). Inverse: the sheet
 // insertion along the glued quads (a pillow for a sheet of 2 hexes folded on itself).
 OpResult sheetExtract(Complex& cx, EdgeRef e);
+// Whether sheetExtract(cx, e) would commit without walking vertex links: its result is then valid
+// by the argument in sheet_extract.cpp (the common case: no fold, no run ending on the boundary, a
+// simple collapse at every vertex). False when it would be refused. For the tests of that claim.
+bool sheetExtractValidByConstruction(const Complex& cx, EdgeRef e);
 
 // ---- sheet insertion (pillowing a surface of quads) ----
 // `quads` names a surface: every quad by one of its sides. Each vertex of the surface splits in

@@ -43,9 +43,13 @@ void requireManifold(const Complex& cx, const std::vector<HexId>& hexes, const s
   requireManifoldVertices(cx, hexes, op + ": non-manifold-vertex");
 }
 
-void commitOrRefuse(Transaction& tx, OpResult& r, const std::vector<HexId>& touched, const std::string& op) {
+void commitOrRefuse(Transaction& tx, OpResult& r, const std::vector<HexId>& touched, const std::string& op,
+                    bool validByConstruction) {
   try {
-    tx.commit(r, touched);
+    if (validByConstruction)
+      tx.commitValidByConstruction(r, touched);  // (still refuses a vertex the input left non-manifold)
+    else
+      tx.commit(r, touched);
   } catch (const Error& e) {  // still open: the transaction rolls back as this unwinds
     const std::string why = e.what();
     const bool link = why.find("link") != std::string::npos || why.find("non-manifold") != std::string::npos;
@@ -210,6 +214,7 @@ VertexMerges planMerges(const Complex& cx, const MergeClasses& classes, const st
   std::vector<Corners> outside;  // per vertex of the class: its corners off the removed hexes
   std::vector<int> parent;
   m.members.reserve(classes.corners.size());
+  m.removedCorners.reserve(classes.corners.size());
   for (size_t q = 0; q < classes.size(); ++q) {
     const std::span<const std::pair<HexId, int>> cls = classes[q];
     VertexId keep = -1, keepAny = -1;
@@ -229,6 +234,7 @@ VertexMerges planMerges(const Complex& cx, const MergeClasses& classes, const st
         keep = keep < 0 ? v : std::min(keep, v);
       }
       if (!outsideConnected(star, removed, outside[k], parent) && m.split < 0) m.split = v;
+      m.removedCorners.push_back(int(star.corners.size() - outside[k].size()));
     }
     if (keep < 0) keep = keepAny;
     std::pair<HexId, int> anchor{-1, 0};
@@ -304,7 +310,7 @@ void keepTopologyOrUndo(Complex& cx, const EulerBefore& before, int64_t edgesAft
 
 void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMerges& m,
                     const std::vector<std::pair<QuadSide, QuadSide>>& glues, const EulerBefore& before,
-                    const std::vector<std::pair<HexId, int>>& after, const std::string& op) {
+                    const std::vector<std::pair<HexId, int>>& after, const std::string& op, bool validByConstruction) {
   std::vector<HexId> touched = m.renamedHexes;
   for (auto [a, b] : glues) {
     const int o = a == b ? -1 : orientByVertices(cx, a.hex, a.face, b.hex, b.face);
@@ -313,7 +319,7 @@ void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMer
     touched.push_back(a.hex);
     touched.push_back(b.hex);
   }
-  commitOrRefuse(tx, res, touched, op);
+  commitOrRefuse(tx, res, touched, op, validByConstruction);
   if (before.edgesAround >= 0) keepTopologyOrUndo(cx, before, edgesAt(cx, after), res, op);
   res.removedVertices = m.dropped;
   for (auto [v, p] : m.placed)

@@ -25,7 +25,8 @@ void requireEdge(const Complex& cx, EdgeRef e, const std::string& op);
 void requireManifold(const Complex& cx, const std::vector<HexId>& hexes, const std::string& op);
 // Commits, or refuses naming the broken invariant: rule non-manifold-result for a vertex link,
 // invalid-result for any other.
-void commitOrRefuse(Transaction& tx, OpResult& r, const std::vector<HexId>& touched, const std::string& op);
+void commitOrRefuse(Transaction& tx, OpResult& r, const std::vector<HexId>& touched, const std::string& op,
+                    bool validByConstruction = false);
 
 // A sheet: its hexes (ascending) and, per hex, the local axis crossed by its edge class there.
 struct SheetHexes {
@@ -55,6 +56,7 @@ struct VertexMerges {
   std::vector<std::pair<HexId, int>> anchors;  // per class: a corner off the removed hexes (it holds the kept vertex after)
   std::vector<std::pair<HexId, int>> members;  // every merged vertex, by one of its corners (before the edit)
   std::vector<int> boundaryMembers;            // per class: how many of its vertices are on the boundary
+  std::vector<int> removedCorners;             // per member: its corners in the removed hexes
   VertexId target(VertexId v) const { return into.get(v, v); }
 };
 // Classes of vertices to merge: per class, one corner of each of its vertices (distinct
@@ -88,9 +90,12 @@ void keepTopologyOrUndo(Complex& cx, const EulerBefore& before, int64_t edgesAft
 // vertices merged: glues the quad pairs it closes, commits (refusing an invalid result), refuses a
 // change of topology (undoing), and lists the vertices that went away. `after`: corners of the
 // vertices counted in `before` that stay (edgesAt); no topology check when before.edgesAround < 0.
+// `validByConstruction`: the caller has shown the result valid (sheet_extract.cpp), so the commit
+// walks no vertex link (Transaction::commitValidByConstruction).
 void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMerges& m,
                     const std::vector<std::pair<QuadSide, QuadSide>>& glues, const EulerBefore& before,
-                    const std::vector<std::pair<HexId, int>>& after, const std::string& op);
+                    const std::vector<std::pair<HexId, int>>& after, const std::string& op,
+                    bool validByConstruction = false);
 
 // Refuses (hex-vertices-merge) when a hex that keeps a renumbered corner would get two equal vertices.
 void requireDistinctCorners(const Complex& cx, const VertexMerges& m, const std::string& op);
