@@ -6,6 +6,8 @@
 #include "sheet_helpers.hpp"
 
 #include "complex/builders.hpp"
+#include "complex/hex_tables.hpp"
+#include "ops/sheet_support.hpp"
 
 using namespace hexdual;
 using namespace hexdual::test;
@@ -217,6 +219,39 @@ TEST_CASE("sheet-extract: a 24^3 grid's middle layers along x, y and z (the path
     CHECK(isomorphic(back, makeGrid(axis == 0 ? 23 : 24, axis == 1 ? 23 : 24, axis == 2 ? 23 : 24), false));
     applyStep(back, *c.report.result.inverse);
     CHECK(isomorphic(back, grid, false));
+  }
+}
+
+// planMerges lists the hexes of the renamed corners ascending, once each: through a bitmap of the
+// hex range when there are 1,024 or more (a 24^3 layer: 2,304), by a sort below. Both against a sort.
+TEST_CASE("planMerges: the renamed hexes are the renamed corners' hexes, ascending, once each (small and large sheets)") {
+  for (int n : {4, 24}) {
+    CAPTURE(n);
+    const Complex grid = makeGrid(n, n, n);
+    // The x-edges of the layer x = n/2: one merge class per edge, as a sheet extraction plans them.
+    ops::MergeClasses classes;
+    std::vector<uint8_t> inLayer(size_t(grid.hexCapacity()), 0), seen(size_t(grid.vertexCapacity()), 0);
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j) {
+        const HexId h = n / 2 + n * (j + n * k);
+        inLayer[size_t(h)] = 1;
+        for (int e = 0; e < 4; ++e) {
+          const int c0 = tables::kEdgeCorners[size_t(e)][0], c1 = tables::kEdgeCorners[size_t(e)][1];
+          if (seen[size_t(grid.vertex(h, c0))]) continue;
+          seen[size_t(grid.vertex(h, c0))] = 1;
+          const std::pair<HexId, int> ends[2] = {{h, c0}, {h, c1}};
+          classes.add(ends);
+        }
+      }
+    REQUIRE(classes.size() == size_t((n + 1) * (n + 1)));
+    const ops::VertexMerges m = ops::planMerges(grid, classes, [&](HexId h) { return inLayer[size_t(h)] != 0; });
+    std::vector<HexId> want;
+    for (auto [h, c] : m.renamed) want.push_back(h);
+    std::sort(want.begin(), want.end());
+    want.erase(std::unique(want.begin(), want.end()), want.end());
+    CHECK(m.renamedHexes == want);
+    CHECK(m.renamedHexes.size() == size_t(n * n));  // the layer x = n/2 + 1 keeps the renamed corners
+    CHECK((n == 24 ? m.renamed.size() >= 1024 : m.renamed.size() < 1024));  // the bitmap at 24^3 (2,304 corners), the sort at 4^3
   }
 }
 

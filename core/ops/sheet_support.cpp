@@ -3,6 +3,7 @@
 #include "ops/sheet_support.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <unordered_set>
 
@@ -131,6 +132,9 @@ void walkStarOf(const Complex& cx, HexId h, int c, StarWalk& st) {
   uint8_t* crossed = st.crossed.data();
   auto* links = st.links.data();
   size_t n = 1, nLinks = 0;
+  std::array<int8_t, 32> slot;  // hex -> its corner's index, while n <= 16
+  slot.fill(-1);
+  slot[(uint32_t(h) * 0x9E3779B1u) >> 27] = 0;
   corners[0] = {h, c};
   crossed[0] = 0;
   st.boundary = false;
@@ -144,8 +148,18 @@ void walkStarOf(const Complex& cx, HexId h, int c, StarWalk& st) {
         continue;
       }
       const uint8_t arrived = uint8_t(1u << (g.face >> 1));
-      size_t j = 0;
-      while (j < n && corners[j].first != g.hex) ++j;
+      // The corner of g.hex (a hex holds the vertex at one corner): through a 32-entry table by hex
+      // while the star has at most 16 corners, by a scan beyond.
+      size_t j = n;
+      if (n <= 16) {
+        size_t at = (uint32_t(g.hex) * 0x9E3779B1u) >> 27;
+        while (slot[at] >= 0 && corners[size_t(slot[at])].first != g.hex) at = (at + 1) & 31;
+        if (slot[at] >= 0) j = size_t(slot[at]);
+        else if (n < 16) slot[at] = int8_t(n);
+      } else {
+        j = 0;
+        while (j < n && corners[j].first != g.hex) ++j;
+      }
       if (j == n) {
         if (n == st.corners.size()) {  // (3 links per corner at most: links grow with corners)
           st.corners.resize(2 * n), st.crossed.resize(2 * n), st.links.resize(6 * n);
