@@ -267,9 +267,6 @@ bool validByConstruction(const Complex& cx, const std::vector<Run>& runs, const 
   return true;
 }
 
-}  // namespace
-
-namespace {
 // Everything the extraction decides before it edits (each step refuses with its rule).
 struct ExtractionPlan {
   SheetHexes sheet;
@@ -284,9 +281,18 @@ ExtractionPlan planExtraction(const Complex& cx, EdgeRef e, const std::string& o
   requireManifold(cx, p.sheet.hexes, op);
   p.runs = runsOf(cx, p.sheet, op);
   p.edges = collapsedEdges(cx, p.sheet, op);
-  std::vector<uint64_t> inSheet((size_t(cx.hexCapacity()) + 63) / 64, 0);  // a bit per hex: what planMerges asks most
-  for (HexId h : p.sheet.hexes) inSheet[size_t(h) >> 6] |= uint64_t(1) << (size_t(h) & 63);
-  p.merges = planMerges(cx, p.edges, [&](HexId h) { return inSheet[size_t(h) >> 6] >> (size_t(h) & 63) & 1; });
+  // planMerges asks of every corner of every merged vertex's star whether its hex is the sheet's:
+  // a bit per hex of the mesh when that bitmap is small beside the sheet (at most 8 words per sheet
+  // hex, which plans far more than that per hex: a 100³ layer's 10,000 hexes, 15,625 words), else
+  // the sheet's map, so a small sheet on a large mesh costs what it is.
+  const size_t words = (size_t(cx.hexCapacity()) + 63) / 64;
+  if (words <= 8 * p.sheet.hexes.size()) {
+    std::vector<uint64_t> inSheet(words, 0);
+    for (HexId h : p.sheet.hexes) inSheet[size_t(h) >> 6] |= uint64_t(1) << (size_t(h) & 63);
+    p.merges = planMerges(cx, p.edges, [&](HexId h) { return inSheet[size_t(h) >> 6] >> (size_t(h) & 63) & 1; });
+  } else {
+    p.merges = planMerges(cx, p.edges, [&](HexId h) { return p.sheet.axisOf(h) >= 0; });
+  }
   requireDistinctCorners(cx, p.merges, op);
   p.glues = gluesOf(cx, p.runs, p.merges, op);
   return p;

@@ -118,19 +118,23 @@ using Corners = std::vector<std::pair<HexId, int>>;
 // `corners`), and whether one of them has a boundary face at the vertex. Each face pair is crossed
 // once: a corner keeps, per axis, whether its face there was already crossed from the other side.
 // A hex holds a vertex at one corner at most (validate), so a corner is new exactly when its hex is.
+// The arrays are kept between walks and only ever grow; the walk's part is counted by its sizes.
 struct StarWalk {
-  Corners corners;
-  std::vector<uint8_t> crossed;
-  std::vector<std::pair<uint32_t, uint32_t>> links;
+  Corners cornerRoom;
+  std::vector<uint8_t> crossedRoom;
+  std::vector<std::pair<uint32_t, uint32_t>> linkRoom;  // 3 per corner of room: a corner crosses 3 faces at most
+  size_t size = 0, linkCount = 0;
   bool boundary = false;
+  std::span<const std::pair<HexId, int>> corners() const { return {cornerRoom.data(), size}; }
+  std::span<const std::pair<uint32_t, uint32_t>> links() const { return {linkRoom.data(), linkCount}; }
+  void grow(size_t room) { cornerRoom.resize(room), crossedRoom.resize(room), linkRoom.resize(3 * room); }
 };
 void walkStarOf(const Complex& cx, HexId h, int c, StarWalk& st) {
-  // Written through raw pointers into arrays kept between walks (grown when a star outgrows them).
-  const size_t room = std::max<size_t>(16, st.corners.capacity());  // (resizing within it allocates nothing)
-  st.corners.resize(room), st.crossed.resize(room), st.links.resize(3 * room);
-  auto* corners = st.corners.data();
-  uint8_t* crossed = st.crossed.data();
-  auto* links = st.links.data();
+  // Written through raw pointers into the kept arrays (grown when a star outgrows them).
+  if (st.cornerRoom.size() < 16) st.grow(16);
+  auto* corners = st.cornerRoom.data();
+  uint8_t* crossed = st.crossedRoom.data();
+  auto* links = st.linkRoom.data();
   size_t n = 1, nLinks = 0;
   std::array<int8_t, 32> slot;  // hex -> its corner's index, while n <= 16
   slot.fill(-1);
@@ -161,9 +165,9 @@ void walkStarOf(const Complex& cx, HexId h, int c, StarWalk& st) {
         while (j < n && corners[j].first != g.hex) ++j;
       }
       if (j == n) {
-        if (n == st.corners.size()) {  // (3 links per corner at most: links grow with corners)
-          st.corners.resize(2 * n), st.crossed.resize(2 * n), st.links.resize(6 * n);
-          corners = st.corners.data(), crossed = st.crossed.data(), links = st.links.data();
+        if (n == st.cornerRoom.size()) {
+          st.grow(2 * n);
+          corners = st.cornerRoom.data(), crossed = st.crossedRoom.data(), links = st.linkRoom.data();
         }
         corners[n] = {g.hex, kCornerSteps[size_t(cornerStepIndex(cc, k, g.face, g.orient))].corner};
         crossed[n++] = 0;
@@ -172,9 +176,8 @@ void walkStarOf(const Complex& cx, HexId h, int c, StarWalk& st) {
       links[nLinks++] = {uint32_t(i), uint32_t(j)};
     }
   }
-  st.corners.resize(n);  // (no reallocation: shrinking keeps the capacity)
-  st.crossed.resize(n);
-  st.links.resize(nLinks);
+  st.size = n;
+  st.linkCount = nLinks;
 }
 
 // The star's corners off the removed hexes (into `outside`), and whether they are connected across
@@ -182,18 +185,19 @@ void walkStarOf(const Complex& cx, HexId h, int c, StarWalk& st) {
 template <class Removed>
 bool outsideConnected(const StarWalk& st, const Removed& removed, Corners& outside, std::vector<int>& parent) {
   outside.clear();
-  parent.assign(st.corners.size(), -1);  // -1: removed; else a union-find link among the outside corners
-  for (size_t i = 0; i < st.corners.size(); ++i)
-    if (!removed(st.corners[i].first)) {
+  const auto corners = st.corners();
+  parent.assign(corners.size(), -1);  // -1: removed; else a union-find link among the outside corners
+  for (size_t i = 0; i < corners.size(); ++i)
+    if (!removed(corners[i].first)) {
       parent[i] = int(i);
-      outside.push_back(st.corners[i]);
+      outside.push_back(corners[i]);
     }
   auto find = [&](int x) {
     while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
     return x;
   };
   size_t pieces = outside.size();
-  for (auto [i, j] : st.links) {
+  for (auto [i, j] : st.links()) {
     if (parent[i] < 0 || parent[j] < 0) continue;
     const int a = find(int(i)), b = find(int(j));
     if (a != b) parent[size_t(std::max(a, b))] = std::min(a, b), --pieces;
@@ -248,7 +252,7 @@ VertexMerges planMerges(const Complex& cx, const MergeClasses& classes, const st
         keep = keep < 0 ? v : std::min(keep, v);
       }
       if (!outsideConnected(star, removed, outside[k], parent) && m.split < 0) m.split = v;
-      m.removedCorners.push_back(int(star.corners.size() - outside[k].size()));
+      m.removedCorners.push_back(int(star.size - outside[k].size()));
     }
     if (keep < 0) keep = keepAny;
     std::pair<HexId, int> anchor{-1, 0};
@@ -280,12 +284,12 @@ int64_t edgesAt(const Complex& cx, const std::vector<std::pair<HexId, int>>& ver
   for (auto [h, c] : vertices) in.insert(cx.vertex(h, c));
   std::unordered_set<VertexId> done;
   StarWalk walk;
-  const Corners& star = walk.corners;
   std::vector<int> parent;
   int64_t twice = 0;
   for (auto [h, c] : vertices) {
     if (!done.insert(cx.vertex(h, c)).second) continue;
     walkStarOf(cx, h, c, walk);
+    const auto star = walk.corners();
     parent.resize(3 * star.size());
     for (size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
     auto find = [&](int x) {
