@@ -16,7 +16,8 @@ if (!['build', 'layout', 'ops', 'throughput'].includes(what) || !nArg) {
 }
 if (what === 'ops') {
   // The native `hexdual_bench ops N REPS` cases through the package: mesh.apply(step) (the step, the
-  // tracker's dual update and the report crossing into JS) then mesh.undo(); minimum CPU time.
+  // tracker's dual update and the report crossing into JS) then mesh.undo(); minimum CPU time of
+  // each (undoUs: mesh.undo, the exact undo with its dual update).
   await init();
   const n = Number(nArg), reps = Number(repsArg || 11);
   const m = Mesh.grid(n, n, n);
@@ -41,15 +42,18 @@ if (what === 'ops') {
     for (const s of steps) {
       try { m.apply(s); m.undo(); step = s; break; } catch { /* not this axis */ }
     }
-    const times = [];
+    const times = [], undoTimes = [];
     for (let k = 0; k < reps; k++) {
       const t0 = cpuMs();
       m.apply(step);
-      times.push(cpuMs() - t0);
+      const t1 = cpuMs();
       m.undo();
+      times.push(t1 - t0);
+      undoTimes.push(cpuMs() - t1);
     }
     if (setup) m.undo();
-    console.log(JSON.stringify({ bench: 'op-wasm', n, op: name, stepUs: +(1000 * Math.min(...times)).toFixed(2) }));
+    const us = (ts) => +(1000 * Math.min(...ts)).toFixed(2);
+    console.log(JSON.stringify({ bench: 'op-wasm', n, op: name, stepUs: us(times), undoUs: us(undoTimes) }));
   }
   m.delete();
   process.exit(0);

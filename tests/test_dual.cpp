@@ -146,9 +146,12 @@ TEST_CASE("dual tracker: after an exact undo, releaseRetiredTail gives the redon
 namespace {
 struct CollapseCost {
   size_t explored = 0, merged = 0, chordSlots = 0, undoExplored = 0, pushChordSlots = 0, undoChordSlots = 0;
+  size_t readUndoExplored = 0;  // the undo's sheet slots when the lists were read between step and undo
 };
 // Face collapse (or a hex push then ring collapse) at the centre of an n^3 grid, dual kept by the
-// tracker, checked against a fresh extraction, then undone; what each update touched.
+// tracker, checked against a fresh extraction (on a copy of the tracker, so that no list is read),
+// then undone (exactly: updateUndone with the step's memo); what each update touched. Then once
+// more with the lists read between the step and its undo, which then re-floods the merged sheet.
 CollapseCost collapseAtCentre(int n, bool ring) {
   Complex cx = makeGrid(n, n, n);
   DualTracker tracker(cx);
@@ -165,17 +168,35 @@ CollapseCost collapseAtCentre(int n, bool ring) {
     for (int a = 0; a < 3; ++a)
       if (tracker.dual().chords[size_t(tracker.dual().chordAt(ringHex, a))].closed) step += std::to_string(4 * a);
   }
-  StepReport r = applyStepTracked(cx, tracker, parseOpStep(step));
+  const DualTracker before = tracker;
+  DualIdMemo memo;
+  StepReport r = applyStepTracked(cx, tracker, parseOpStep(step), {}, &memo);
   CHECK_FALSE(tracker.lastUpdateReflooded());
-  compareDuals(cx, tracker.dual(), extractDual(cx));
+  CHECK(memo.unmerge != nullptr);  // every old sheet kept: recorded for the undo
+  compareDuals(cx, DualTracker(tracker).dual(), extractDual(cx));
   CollapseCost cost{tracker.sheetSlotsTouched(), tracker.mergedLabels(), tracker.chordSlotsTouched(), 0,
                     pushChordSlots};
-  cx.undo(r.result.edits);
-  tracker.update(cx, r.result.edits, keepsSheetTopology(r.result));
+  undoStepTracked(cx, tracker, r, memo);
+  CHECK(tracker.lastUpdateUnmerged());
   CHECK_FALSE(tracker.lastUpdateReflooded());
-  compareDuals(cx, tracker.dual(), extractDual(cx));
   cost.undoExplored = tracker.sheetSlotsTouched();
   cost.undoChordSlots = tracker.chordSlotsTouched();
+  compareDuals(cx, DualTracker(tracker).dual(), extractDual(cx));
+  for (HexId h : cx.hexes()) {  // the ids before the step
+    REQUIRE(tracker.dual().sheetsAt(h) == before.dual().sheetsAt(h));
+    REQUIRE(tracker.dual().chordsAt(h) == before.dual().chordsAt(h));
+  }
+  REQUIRE(tracker.dual().sheets.size() == before.dual().sheets.size());
+  tracker.checkInvariants(cx);
+
+  DualIdMemo memo2;
+  StepReport r2 = applyStepTracked(cx, tracker, parseOpStep(step), {}, &memo2);
+  compareDuals(cx, tracker.dual(), extractDual(cx));  // reads every list: the merge's runs are merged
+  undoStepTracked(cx, tracker, r2, memo2);
+  CHECK_FALSE(tracker.lastUpdateUnmerged());
+  cost.readUndoExplored = tracker.sheetSlotsTouched();
+  compareDuals(cx, tracker.dual(), extractDual(cx));
+  tracker.checkInvariants(cx);
   return cost;
 }
 }  // namespace
@@ -191,7 +212,9 @@ TEST_CASE("dual tracker: ring and face collapse updates explore O(region) sheet 
                                      << small.chordSlots << " / " << big.chordSlots << ", undo explored "
                                      << small.undoExplored << " / " << big.undoExplored << ", undo chord slots "
                                      << small.undoChordSlots << " / " << big.undoChordSlots << ", hex push chord slots "
-                                     << small.pushChordSlots << " / " << big.pushChordSlots);
+                                     << small.pushChordSlots << " / " << big.pushChordSlots
+                                     << ", undo explored with the lists read between " << small.readUndoExplored
+                                     << " / " << big.readUndoExplored);
     // Every sheet slot the update visits, merge included, is in the same region whatever the grid size.
     CHECK(small.explored == (ring ? 165 : 114));
     CHECK(big.explored == small.explored);
@@ -214,6 +237,60 @@ TEST_CASE("dual tracker: ring and face collapse updates explore O(region) sheet 
     CHECK(big.chordSlots == small.chordSlots);
     CHECK(small.undoChordSlots == (ring ? 76 : 20));
     CHECK(big.undoChordSlots == small.undoChordSlots);
+    // The undo splits the merged layer again from the step's memo: the touched slots only, the
+    // same at every size; with the lists read in between it floods the smaller layer (n^2 and more).
+    CHECK(small.undoExplored == (ring ? 81 : 42));
+    CHECK(big.undoExplored == small.undoExplored);
+    CHECK(small.readUndoExplored > 30 * 30);
+    CHECK(big.readUndoExplored > 60 * 60);
+  }
+}
+
+// Steps undone in LIFO order, none of whose lists was read in between: each undo restores its
+// step's sheets from the memo, the later undo's restore leaving the state the earlier memo names.
+// A later step through a sheet the earlier one merged merges that sheet's pending list first (a
+// memo holds clean lists): the earlier undo then floods, with the same result.
+TEST_CASE("dual tracker: collapses undone in LIFO order restore their sheets from the memo") {
+  for (bool overlapping : {false, true}) {
+    CAPTURE(overlapping);
+    const int n = 14;
+    Complex cx = makeGrid(n, n, n);
+    DualTracker tracker(cx);
+    const DualTracker before = tracker;
+    auto id = [&](int i, int j, int k) { return std::to_string(i + n * (j + n * k)); };
+    auto faceCollapse = [&](int i, int j, int k) {
+      return "facecollapse h" + id(i, j, k) + "e11 h" + id(i, j, k) + "f1 h" + id(i, j + 1, k) + "f1";
+    };
+    // Apart, the three touch no sheet in common; overlapping, the second and third cross the first's.
+    const std::vector<std::string> steps =
+        overlapping ? std::vector<std::string>{faceCollapse(3, 3, 3), faceCollapse(7, 4, 6), faceCollapse(4, 8, 9)}
+                    : std::vector<std::string>{faceCollapse(2, 2, 2), faceCollapse(6, 6, 6), faceCollapse(10, 10, 10)};
+    std::vector<std::pair<StepReport, DualIdMemo>> done;
+    for (const std::string& text : steps) {
+      CAPTURE(text);
+      DualIdMemo memo;
+      StepReport r = applyStepTracked(cx, tracker, parseOpStep(text), {}, &memo);
+      CHECK(memo.unmerge != nullptr);
+      done.emplace_back(std::move(r), std::move(memo));
+    }
+    compareDuals(cx, DualTracker(tracker).dual(), extractDual(cx));
+    while (!done.empty()) {
+      CAPTURE(done.size());
+      undoStepTracked(cx, tracker, done.back().first, done.back().second);
+      const bool fromMemo = !overlapping || done.size() > 1;
+      CHECK(tracker.lastUpdateUnmerged() == fromMemo);
+      if (fromMemo) CHECK(tracker.sheetSlotsTouched() < 100);
+      done.pop_back();
+      compareDuals(cx, DualTracker(tracker).dual(), extractDual(cx));
+    }
+    for (HexId h : cx.hexes()) {
+      REQUIRE(tracker.dual().sheetsAt(h) == before.dual().sheetsAt(h));
+      REQUIRE(tracker.dual().chordsAt(h) == before.dual().chordsAt(h));
+    }
+    REQUIRE(tracker.dual().sheets.size() == before.dual().sheets.size());
+    REQUIRE(tracker.dual().chords.size() == before.dual().chords.size());
+    tracker.checkInvariants(cx);
+    compareDuals(cx, tracker.dual(), before.dual());
   }
 }
 
@@ -285,6 +362,26 @@ TEST_CASE("SlotList: pending runs and removals read as one sorted list") {
   CHECK(std::is_sorted(mixed.begin(), mixed.end()));
   CHECK(mixed.front() == Slot{3, 1});
   CHECK(mixed.back() == Slot{239, 0});
+}
+
+// A list handed over by a merge brings its pending additions, which wait in no order: they join
+// as a sorted run (they once joined as they came, and the next read merged an unsorted run: a
+// sheet then read with slots twice and out of order, found by the undo property test).
+TEST_CASE("SlotList: a merged list's unsorted pending additions read sorted") {
+  auto slots = [](std::initializer_list<std::pair<int, int>> xs) {
+    std::vector<Slot> v;
+    for (auto [h, a] : xs) v.push_back({h, a});
+    return v;
+  };
+  SlotList a(slots({{2, 0}, {6, 0}, {10, 0}}));
+  SlotList b(slots({{1, 1}}));
+  b.add(slots({{9, 1}, {3, 1}, {5, 1}}));
+  b.add(slots({{4, 1}}));
+  a.absorb(std::move(b));
+  a.remove(slots({{3, 1}, {6, 0}}));
+  CHECK(a.size() == 6);
+  CHECK(a.get() == slots({{1, 1}, {2, 0}, {4, 1}, {5, 1}, {9, 1}, {10, 0}}));
+  CHECK(a.size() == a.get().size());
 }
 
 // Extraction lists every sheet's slots in one pool and every chord's in another; a list copies

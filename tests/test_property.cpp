@@ -271,12 +271,22 @@ void requireSameIds(const Complex& cx, const DualTracker& live, const DualTracke
 }
 }  // namespace
 
-TEST_CASE("property: undo gives the dual its ids back, so after any mix of steps, undos and redos the ids are a replay's") {
-  const uint32_t firstSeed = 20261205;
-  const std::vector<Complex> meshes{makeGrid(4, 4, 4), makeRing(8, 2, 3), makeGrid(5, 3, 3)};
-  int sequences = 60;
-  if (const char* env = std::getenv("HEXDUAL_PROPERTY_SEQUENCES")) sequences = std::min(sequences, std::atoi(env));
-  int64_t undos = 0, sheetSteps = 0;
+namespace {
+struct UndoCounts {
+  // unmerges: undos that restored the sheets from the memo; memoUndos: undos right after their
+  // step, of a step whose memo kept its sheets; directRestored: those of them that restored
+  int64_t undos = 0, sheetSteps = 0, unmerges = 0, memoUndos = 0, directRestored = 0;
+};
+// Random steps, undos and redos (30 actions per sequence, mesh k mod meshes), the ids after each
+// against a replay's. readLists: the invariants are checked on the tracker itself (reading every
+// sheet list), else on a copy (no list read between a step and its undo, which then splits merged
+// sheets from the step's memo). collapses: in every sequence, else in the even ones. sheetOps:
+// some steps are sheet extractions and dicings.
+UndoCounts undoIdsSequences(const std::vector<Complex>& meshes, uint32_t firstSeed, int sequences, bool readLists,
+                            bool collapses, bool sheetOps) {
+  UndoCounts n;
+  int64_t &undos = n.undos, &sheetSteps = n.sheetSteps, &unmerges = n.unmerges, &memoUndos = n.memoUndos,
+          &directRestored = n.directRestored;
   for (int k = 0; k < sequences; ++k) {
     const uint32_t seed = firstSeed + uint32_t(k);
     CAPTURE(seed);
@@ -291,16 +301,22 @@ TEST_CASE("property: undo gives the dual its ids back, so after any mix of steps
     std::vector<Done> done;
     std::vector<OpStep> redo;
     std::vector<HexId> recent;
+    bool followsItsStep = false;  // the last action applied the step on top of done
     auto apply = [&](const OpStep& step) {
       Done d;
       d.report = applyStepTracked(cx, tracker, step, {}, &d.memo);
       recent = d.report.result.createdHexes;
       done.push_back(std::move(d));
+      followsItsStep = true;
     };
     for (int action = 0; action < 30; ++action) {
       const uint32_t r = rng() % 6;
       if (r == 0 && !done.empty()) {
         undoStepTracked(cx, tracker, done.back().report, done.back().memo);
+        const bool direct = done.back().memo.unmerge != nullptr && followsItsStep;
+        memoUndos += direct;
+        directRestored += direct && tracker.lastUpdateUnmerged();
+        followsItsStep = false;
         redo.push_back(done.back().report.step);
         done.pop_back();
         ++undos;
@@ -309,8 +325,8 @@ TEST_CASE("property: undo gives the dual its ids back, so after any mix of steps
         redo.pop_back();
       } else {
         // Sheet operations remove and re-create whole sheets: the case a fresh name is likeliest.
-        std::string text = randomStep(cx, rng, recent, k % 2 == 0);
-        if (r == 2) {
+        std::string text = randomStep(cx, rng, recent, collapses || k % 2 == 0);
+        if (r == 2 && sheetOps) {
           std::vector<HexId> live;
           for (HexId h : cx.hexes()) live.push_back(h);
           const std::string e = "h" + std::to_string(live[rng() % live.size()]) + "e" + std::to_string(rng() % 12);
@@ -322,18 +338,60 @@ TEST_CASE("property: undo gives the dual its ids back, so after any mix of steps
         } catch (const Error&) {
           continue;
         }
-        sheetSteps += r == 2;
+        sheetSteps += r == 2 && sheetOps;
         redo.clear();
       }
-      tracker.checkInvariants(cx);
+      CAPTURE(action);
+      unmerges += tracker.lastUpdateUnmerged();
+      if (readLists)
+        tracker.checkInvariants(cx);
+      else
+        DualTracker(tracker).checkInvariants(cx);
+      // Every sheet's pending list edits read as its slots: settled on a copy, so that the next
+      // steps still meet the pending runs (a merged list's unsorted additions once read as
+      // slots twice and out of order here, and only here: the next read was mostly a re-write).
+      for (const Sheet& sh : tracker.dual().sheets)
+        if (sh.alive) {
+          SlotList copy = sh.slots;
+          CAPTURE(sh.id);
+          REQUIRE(copy.get().size() == sh.slots.size());
+          REQUIRE(std::is_sorted(copy.begin(), copy.end()));
+        }
       Complex fresh = start;
       DualTracker replay(fresh);
       for (const Done& d : done) applyStepTracked(fresh, replay, d.report.step);
       requireSameIds(cx, tracker, replay);
     }
   }
-  MESSAGE("undo ids: " << sequences << " sequences from seed " << firstSeed << ", " << undos << " undos, " << sheetSteps
-                       << " sheet steps; every state's ids equal a replay's");
-  CHECK(undos > 10);
-  CHECK(sheetSteps > 5);
+  return n;
+}
+}  // namespace
+
+TEST_CASE("property: undo gives the dual its ids back, so after any mix of steps, undos and redos the ids are a replay's") {
+  const uint32_t firstSeed = 20261205;
+  int sequences = 60;
+  if (const char* env = std::getenv("HEXDUAL_PROPERTY_SEQUENCES")) sequences = std::min(sequences, std::atoi(env));
+  const UndoCounts n = undoIdsSequences({makeGrid(4, 4, 4), makeRing(8, 2, 3), makeGrid(5, 3, 3)}, firstSeed,
+                                        sequences, true, false, true);
+  MESSAGE("undo ids: " << sequences << " sequences from seed " << firstSeed << ", " << n.undos << " undos, "
+                       << n.sheetSteps << " sheet steps; every state's ids equal a replay's");
+  CHECK(n.undos > 10);
+  CHECK(n.sheetSteps > 5);
+}
+
+// The same with no list read between a step and its undo, on meshes with an interior: an undo of a
+// step that kept every sheet (a collapse merging two, a ring collapse's new sheet) restores the
+// sheets from the step's memo (DualTracker::updateUndone) instead of flooding them, and the ids,
+// lists and invariants are a replay's all the same.
+TEST_CASE("property: an undo that restores merged sheets from the step's memo gives a replay's dual") {
+  const uint32_t firstSeed = 20261271;
+  int sequences = 24;
+  if (const char* env = std::getenv("HEXDUAL_PROPERTY_SEQUENCES")) sequences = std::min(sequences, std::atoi(env));
+  const UndoCounts n =
+      undoIdsSequences({makeGrid(9, 9, 9), makeRing(16, 4, 5)}, firstSeed, sequences, false, true, false);
+  MESSAGE("undo from memo: " << sequences << " sequences from seed " << firstSeed << ", " << n.undos << " undos, "
+                             << n.memoUndos << " right after a step that kept every sheet, " << n.unmerges
+                             << " restored from the memo");
+  CHECK(n.directRestored == n.memoUndos);  // nothing read the lists in between: every such undo restores
+  if (sequences >= 24) CHECK(n.unmerges >= 4);
 }

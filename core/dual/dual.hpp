@@ -129,6 +129,7 @@ class SlotList {
   void reserve(size_t n) { list_.reserve(n); }
   void push_back(Slot s) {  // s after every slot listed (extraction lists slots in order)
     get();
+    ++version_;
     list_.push_back(s);
     ++size_;
   }
@@ -140,8 +141,24 @@ class SlotList {
   void remove(std::span<const Slot> listed);
   friend bool operator==(const SlotList& a, const SlotList& b) { return a.get() == b.get(); }
 
+  // For an exact undo (DualTracker::updateUndone). version() changes whenever the settled list
+  // does (a merge of pending edits, an assignment); clean() when nothing waits.
+  uint64_t version() const { return version_; }
+  bool clean() const { return runs_.empty() && adds_.empty() && gone_.empty(); }
+  size_t pendingRuns() const { return runs_.size(); }
+  size_t runSize(size_t i) const { return runs_[i].size(); }
+  // Drops the pending additions and removals and hands back the pending runs (in the order they
+  // were absorbed): the list is again the one of its version, as when it was last clean.
+  std::vector<std::vector<Slot>> dropPending();
+  // The list as it was at `version` (a run dropPending handed back), nothing pending.
+  void restore(std::vector<Slot> sorted, uint64_t version) {
+    *this = std::move(sorted);
+    version_ = version;
+  }
+
  private:
   void settle() const;
+  mutable uint64_t version_ = 0;
   mutable PooledSlots list_;
   mutable std::vector<std::vector<Slot>> runs_;  // sorted runs (merged lists) waiting to join
   mutable std::vector<Slot> adds_;               // slots waiting to join (a few per edit), in no order
@@ -300,7 +317,8 @@ ChordWalk walkChordForward(const Complex& cx, Slot start, int exitFace, Chord& c
                            std::vector<int32_t>* previous = nullptr);
 
 // Compares two duals of the same complex up to renaming of ids: same partition of slots into
-// sheets and chords, same classification. Throws Error naming the first difference.
+// sheets and chords, same classification, each sheet listing the same slots (read: a list's pending
+// edits are merged). Throws Error naming the first difference.
 void compareDuals(const Complex& cx, const Dual& a, const Dual& b);
 
 }  // namespace hexdual

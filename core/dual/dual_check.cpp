@@ -84,6 +84,8 @@ void compareDuals(const Complex& cx, const Dual& a, const Dual& b) {
         p.topology != q.topology || p.selfIntersecting != q.selfIntersecting || p.orientable != q.orientable)
       fail("sheet " + std::to_string(x) + " and sheet " + std::to_string(y) + " are classified differently (" +
            p.topology + " euler " + std::to_string(p.euler) + " vs " + q.topology + " euler " + std::to_string(q.euler) + ")");
+    if (!(p.slots == q.slots))  // (reads the lists: their pending edits are merged)
+      fail("sheet " + std::to_string(x) + " lists other slots than sheet " + std::to_string(y));
   }
   liveA = liveB = 0;
   for (const Chord& c : a.chords) liveA += c.alive;

@@ -8,6 +8,7 @@
 #include "dual/dual_tracker.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 #include "complex/huge_pages.hpp"
 #include "complex/id_map.hpp"
@@ -102,7 +103,13 @@ std::vector<uint16_t> edgesChangedBy(const Complex::EditLog& log, const std::vec
   return out;
 }
 
+void DualTracker::newSheetState() {
+  static std::atomic<uint64_t> last{0};
+  sheetState_ = ++last;
+}
+
 DualTracker::DualTracker(const Complex& cx) {
+  newSheetState();
   DualExtras extras;
   dual_ = extractDual(cx, &extras);
   flooder_.signs() = std::move(extras.slotSigns);
@@ -167,6 +174,7 @@ void DualTracker::releaseRetiredTail() { dropRetiredAbove(0, 0); }
 // Drops the retired ids at the end of the id ranges, keeping at least `sheets` and `chords` ids.
 void DualTracker::dropRetiredAbove(size_t sheets, size_t chords) {
   while (dual_.sheets.size() > sheets && !dual_.sheets.back().alive) {
+    newSheetState();
     dual_.sheets.pop_back();
     selfPairs_.pop_back();
     if (labels_.size() > dual_.sheets.size()) {
@@ -214,6 +222,16 @@ DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits,
   return change;
 }
 
+DualChange DualTracker::updateUndone(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology,
+                                     const DualIdMemo& memo) {
+  std::vector<HexId> touched;
+  touched.reserve(2 * edits.edits.size());
+  touchedHexesWithEdges(edits, touched, edgesToWalk_, walked_);
+  DualChange change = updateSorted(cx, touched, sheetsKeepTopology, memo.unmerge.get());
+  edgesToWalk_.clear();
+  return change;
+}
+
 DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bool sheetsKeepTopology) {
   sortUniqueIds(touched);
   edgesToWalk_.clear();  // not known: every edge of a live touched hex is walked
@@ -221,17 +239,24 @@ DualChange DualTracker::update(const Complex& cx, std::vector<HexId> touched, bo
 }
 
 // touched: sorted, without repeats.
-DualChange DualTracker::updateSorted(const Complex& cx, const std::vector<HexId>& touched, bool sheetsKeepTopology) {
+DualChange DualTracker::updateSorted(const Complex& cx, const std::vector<HexId>& touched, bool sheetsKeepTopology,
+                                     const DualUnmergeMemo* unmerge) {
   const size_t cap = std::max(size_t(cx.hexCapacity()), dual_.sheetLabel.size());
   growPerHexArrays(cap);
   slotsTouched_ = 0;
   sheetSlotsTouched_ = 0;
   mergedLabels_ = 0;
   reflooded_ = false;
+  unmerged_ = false;
   DualChange change;
-  if (!(sheetsKeepTopology && updateSheetsLocally(cx, touched, change)) && !updateSheetsLockstep(cx, touched, change)) {
-    reflooded_ = true;
-    updateSheetsByFlood(cx, touched, change);
+  if (unmerge && unmergeSheets(cx, touched, *unmerge, change)) {
+    // sheetState_ is the merge's memo's again
+  } else {
+    if (!(sheetsKeepTopology && updateSheetsLocally(cx, touched, change)) && !updateSheetsLockstep(cx, touched, change)) {
+      reflooded_ = true;
+      updateSheetsByFlood(cx, touched, change);
+    }
+    newSheetState();
   }
   slotsTouched_ = sheetSlotsTouched_;
   updateChords(cx, touched, change);

@@ -25,10 +25,12 @@
 //   tracker/chord_runs.cpp               chords as pieces of labelled runs: slicing, cutting, labels, settling
 //   tracker/chord_update.cpp             which chords changed; the whole re-walk (reference and fallback)
 //   tracker/chord_rejoin.cpp             the local chord update: stretches joined by walks through the edit
+//   tracker/sheets_unmerge.cpp           exact undo of a step that kept every sheet: its memo, given back
 //   tracker/id_restore.cpp               exact undo's ids: a step's ids read before it, given back after its undo
 // The undo journal itself is the complex's (Complex::EditLog, cx.undo); the tracker follows an undo
 // like any edit and gives the undone step's ids back with releaseRetiredTail().
 #pragma once
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -44,12 +46,18 @@ struct DualChange {
   std::vector<int> chordsCreated, chordsRemoved, chordsChanged;
 };
 
+// What the update undoing a step that kept every sheet (merging some, adding new ones) needs to
+// split them again without flooding them (tracker/sheets_unmerge.cpp): the sheets' labels, slot
+// lists and measures before the step. Filled by update(cx, edits, keeps, memo); read by updateUndone.
+struct DualUnmergeMemo;
+
 // What undoing a step needs to give the dual its ids back: the id ranges before the step and one
 // slot of each sheet and chord through the hexes it touched, with that sheet's or chord's id. Read
 // by idMemo() before the step's update; restoreIds() applies it after the update undoing the step.
 struct DualIdMemo {
   size_t sheets = 0, chords = 0;  // dual().sheets.size(), dual().chords.size() before the step
   std::vector<std::pair<Slot, int32_t>> sheetSlots, chordSlots;
+  std::shared_ptr<const DualUnmergeMemo> unmerge;  // set by update(..., memo) when the step kept every sheet
 };
 
 class DualTracker {
@@ -70,6 +78,19 @@ class DualTracker {
   // sheetsKeepTopology new slots join the sheet they touch and no sheet is re-flooded: the cost
   // is local. A merge of two sheets, if one is ever found, falls back to re-flooding the sheets involved.
   DualChange update(const Complex& cx, std::vector<HexId> touched, bool sheetsKeepTopology = false);
+
+  // The same, for a step whose exact undo may follow: when the step kept every sheet (a face or
+  // ring collapse joining two layers), memo (idMemo's, taken before) also keeps what the undo's
+  // update needs to split them again in time proportional to the step, not to the sheets.
+  DualChange update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology, DualIdMemo& memo);
+  // The update after cx.undo(edits), edits being the log of the step memo was taken for (the last
+  // step the tracker followed, or one whose later steps were undone through updateUndone too): the
+  // merged sheets are given back from memo when nothing else changed the sheets since (else, and
+  // for every other step, it is update(cx, edits, sheetsKeepTopology)). restoreIds(memo) follows.
+  DualChange updateUndone(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology,
+                          const DualIdMemo& memo);
+  // Whether the last update gave merged sheets back from a memo (updateUndone) instead of flooding.
+  bool lastUpdateUnmerged() const { return unmerged_; }
 
   // Drops retired ids at the end of the id ranges, so that after an exact undo (LIFO) the ids the
   // undone step created are handed out again when it is redone.
@@ -106,7 +127,17 @@ class DualTracker {
   void checkInvariants(const Complex& cx) const;
 
  private:
-  DualChange updateSorted(const Complex& cx, const std::vector<HexId>& touched, bool sheetsKeepTopology);
+  DualChange updateSorted(const Complex& cx, const std::vector<HexId>& touched, bool sheetsKeepTopology,
+                          const DualUnmergeMemo* unmerge = nullptr);
+
+  // ---- exact undo of a merge (tracker/sheets_unmerge.cpp) ----
+  // The lockstep, before it commits a plan that only merges sheets, records them when asked to
+  // (recordUnmerge_ set by update(..., memo)); unmergeSheets gives them back after the undo.
+  void recordUnmerge(const std::vector<HexId>& touched, const std::vector<int32_t>& old,
+                     const std::vector<std::pair<int32_t, int32_t>>& merges, size_t pieces);
+  bool unmergeSheets(const Complex& cx, const std::vector<HexId>& touched, const DualUnmergeMemo& u, DualChange& change);
+  void retirePieces(const DualUnmergeMemo& u, DualChange& change);
+  void newSheetState();  // a number no tracker in the process had: a memo never fits another tracker
   friend struct DualTrackerTestAccess;  // tests break the state on purpose to see checkInvariants fail
 
   // ---- sheet update strategies, one unit each; update() runs the first that accepts the edit ----
@@ -239,7 +270,12 @@ class DualTracker {
   bool localChords_ = true, chordsRewalked_ = false;
   std::vector<int64_t> delta_;  // per sheet id: change of twice its Euler characteristic (0 outside an update)
   size_t slotsTouched_ = 0, sheetSlotsTouched_ = 0, mergedLabels_ = 0;
-  bool reflooded_ = false;
+  bool reflooded_ = false, unmerged_ = false;
+  // Names the sheet side's state (labels, lists, measures): a fresh number after every change but
+  // an unmerge, which gives back the number the merge's memo was taken at.
+  uint64_t sheetState_ = 0;
+  bool recordUnmerge_ = false;                  // the current update is asked to record a merge
+  std::shared_ptr<DualUnmergeMemo> recorded_;  // what it recorded
 };
 
 // Hex ids whose gluings or corners an edit log changed (created, removed, re-glued, renumbered).

@@ -40,6 +40,7 @@ bool PooledSlots::equal(std::span<const Slot> a, std::span<const Slot> b) {
 }
 
 SlotList& SlotList::operator=(std::vector<Slot> sorted) {
+  ++version_;
   list_ = std::move(sorted);
   runs_.clear();
   adds_.clear();
@@ -49,6 +50,7 @@ SlotList& SlotList::operator=(std::vector<Slot> sorted) {
 }
 
 void SlotList::clear() {
+  ++version_;
   list_.clear();
   runs_.clear();
   adds_.clear();
@@ -81,14 +83,19 @@ void SlotList::add(std::span<const Slot> slots) {
 void SlotList::absorb(SlotList&& other) {
   if (other.size_ == 0 && other.gone_.empty()) return;
   if (size_ == 0 && runs_.empty() && adds_.empty() && gone_.empty()) {
+    const uint64_t v = version_;
     *this = std::move(other);
+    version_ = v + 1;
     other.clear();
     return;
   }
   size_ += other.size_;
   if (!other.list_.empty()) runs_.push_back(std::move(other.list_.own()));
   for (auto& r : other.runs_) runs_.push_back(std::move(r));
-  if (!other.adds_.empty()) runs_.push_back(std::move(other.adds_));
+  if (!other.adds_.empty()) {  // a run is sorted; additions wait in no order
+    std::sort(other.adds_.begin(), other.adds_.end());
+    runs_.push_back(std::move(other.adds_));
+  }
   gone_.insert(gone_.end(), other.gone_.begin(), other.gone_.end());
   other.clear();
   if (runs_.size() > kMaxRuns || tooMany(gone_.size(), size_)) settle();
@@ -104,7 +111,17 @@ void SlotList::remove(std::span<const Slot> listed) {
 // Merges the pending runs into the longest list (the smaller ones first, then once into it from
 // the back, in place), then the pending additions (sorted first), and drops the pending removals in one pass
 // (one listed copy per removal). The pending buffers keep their capacity.
+std::vector<std::vector<Slot>> SlotList::dropPending() {
+  std::vector<std::vector<Slot>> runs = std::move(runs_);
+  runs_.clear();
+  adds_.clear();
+  gone_.clear();
+  size_ = list_.size();
+  return runs;
+}
+
 void SlotList::settle() const {
+  ++version_;
   if (!runs_.empty()) {
     runs_.push_back(std::move(list_.own()));
     std::sort(runs_.begin(), runs_.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });

@@ -10,14 +10,18 @@ StepReport applyStepTracked(Complex& cx, DualTracker& tracker, const OpStep& ste
   StepReport rep;
   rep.step = step;
   rep.result = applyStep(cx, step, options);
-  if (memo) *memo = tracker.idMemo(cx, rep.result.edits);  // the tracker still holds the dual before the step
-  rep.dual = tracker.update(cx, rep.result.edits, keepsSheetTopology(rep.result));
+  if (memo) {
+    *memo = tracker.idMemo(cx, rep.result.edits);  // the tracker still holds the dual before the step
+    rep.dual = tracker.update(cx, rep.result.edits, keepsSheetTopology(rep.result), *memo);
+  } else {
+    rep.dual = tracker.update(cx, rep.result.edits, keepsSheetTopology(rep.result));
+  }
   return rep;
 }
 
 void undoStepTracked(Complex& cx, DualTracker& tracker, const StepReport& rep, const DualIdMemo& memo) {
   cx.undo(rep.result.edits);
-  tracker.update(cx, rep.result.edits, keepsSheetTopology(rep.result));
+  tracker.updateUndone(cx, rep.result.edits, keepsSheetTopology(rep.result), memo);
   tracker.restoreIds(memo);
 }
 

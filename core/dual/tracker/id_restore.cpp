@@ -44,6 +44,7 @@ void DualTracker::restoreIds(const DualIdMemo& memo) {
 }
 
 void DualTracker::swapSheetIds(int32_t a, int32_t b) {
+  newSheetState();
   const size_t n = size_t(std::max(a, b)) + 1;
   while (dual_.sheets.size() < n) {  // an id the undo's releases had dropped: back, retired
     Sheet s;

@@ -91,6 +91,7 @@ struct DualTracker::Lockstep {
   void keepLargestOldSheet();
   bool flipsRelativeToKept();
   void numberPieces();
+  void recordForUndo();
 
   // ---- commit ----
   std::vector<int32_t> affected, merged;
@@ -131,6 +132,7 @@ bool DualTracker::updateSheetsLockstep(const Complex& cx, const std::vector<HexI
     return false;
   }
   ls.numberPieces();
+  if (recordUnmerge_) ls.recordForUndo();
   ls.uncountRelabelledHexes();
   ls.moveShares();
   ls.dropDeadSlots();
@@ -414,6 +416,21 @@ void DualTracker::Lockstep::numberPieces() {
     if (best >= 0) taken[oldIndex(best)] = 1;
     pieceId[p] = best >= 0 ? best : fresh++;
   }
+}
+
+// A plan that keeps every old sheet (merging some into others, adding new pieces made of touched
+// hexes' slots only) is recorded for its exact undo (tracker/sheets_unmerge.cpp), before anything
+// is written: a face or ring collapse joining two layers, a hex push's new sheet.
+void DualTracker::Lockstep::recordForUndo() {
+  std::vector<std::pair<int32_t, int32_t>> merges;  // in mergeIntoKept's order
+  for (size_t k = 0; k < old.size(); ++k) {
+    if (owner[k] < 0) return;
+    if (keepOf[size_t(owner[k])] != old[k]) merges.push_back({old[k], keepOf[size_t(owner[k])]});
+  }
+  for (const auto& piece : pieces)
+    for (Slot s : piece)
+      if (!std::binary_search(touched.begin(), touched.end(), s.hex)) return;
+  if (!merges.empty() || !pieces.empty()) t.recordUnmerge(touched, old, merges, pieces.size());
 }
 
 // ---- commit ----
