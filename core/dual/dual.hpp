@@ -141,20 +141,26 @@ class SlotList {
   void remove(std::span<const Slot> listed);
   friend bool operator==(const SlotList& a, const SlotList& b) { return a.get() == b.get(); }
 
-  // For an exact undo (DualTracker::updateUndone). version() changes whenever the settled list
-  // does (a merge of pending edits, an assignment); clean() when nothing waits.
+  // For an exact undo (DualTracker::updateUndone): the pending edits at a moment, and the list
+  // rolled back to them. version() changes whenever the pending edits are merged or the list is
+  // replaced; in between, edits only append to the pending runs, additions and removals.
+  struct Mark {
+    uint64_t version = 0;
+    size_t size = 0, runs = 0, adds = 0, gone = 0;
+  };
+  Mark mark() const { return {version_, size_, runs_.size(), adds_.size(), gone_.size()}; }
   uint64_t version() const { return version_; }
-  bool clean() const { return runs_.empty() && adds_.empty() && gone_.empty(); }
+  size_t listedSize() const { return list_.size(); }  // the merged part, without the pending runs
   size_t pendingRuns() const { return runs_.size(); }
   size_t runSize(size_t i) const { return runs_[i].size(); }
-  // Drops the pending additions and removals and hands back the pending runs (in the order they
-  // were absorbed): the list is again the one of its version, as when it was last clean.
-  std::vector<std::vector<Slot>> dropPending();
-  // The list as it was at `version` (a run dropPending handed back), nothing pending.
-  void restore(std::vector<Slot> sorted, uint64_t version) {
-    *this = std::move(sorted);
-    version_ = version;
-  }
+  const std::vector<Slot>& pendingAdds() const { return adds_; }
+  const std::vector<Slot>& pendingGone() const { return gone_; }
+  // Back to mark m, taken at this version (nothing merged since): the runs absorbed since are
+  // handed back, in the order they came; the additions and removals made since are dropped.
+  std::vector<std::vector<Slot>> rollBack(const Mark& m);
+  // The list as a mark recorded it: its merged part, pending runs, additions and removals.
+  void reset(std::vector<Slot> listed, std::vector<std::vector<Slot>> runs, std::vector<Slot> adds,
+             std::vector<Slot> gone, const Mark& m);
 
  private:
   void settle() const;

@@ -108,18 +108,29 @@ void SlotList::remove(std::span<const Slot> listed) {
   if (tooMany(gone_.size(), size_)) settle();
 }
 
+std::vector<std::vector<Slot>> SlotList::rollBack(const Mark& m) {
+  std::vector<std::vector<Slot>> since(std::make_move_iterator(runs_.begin() + std::ptrdiff_t(m.runs)),
+                                       std::make_move_iterator(runs_.end()));
+  runs_.resize(m.runs);
+  adds_.resize(m.adds);
+  gone_.resize(m.gone);
+  size_ = m.size;
+  return since;
+}
+
+void SlotList::reset(std::vector<Slot> listed, std::vector<std::vector<Slot>> runs, std::vector<Slot> adds,
+                     std::vector<Slot> gone, const Mark& m) {
+  list_ = std::move(listed);
+  runs_ = std::move(runs);
+  adds_ = std::move(adds);
+  gone_ = std::move(gone);
+  size_ = m.size;
+  version_ = m.version;
+}
+
 // Merges the pending runs into the longest list (the smaller ones first, then once into it from
 // the back, in place), then the pending additions (sorted first), and drops the pending removals in one pass
 // (one listed copy per removal). The pending buffers keep their capacity.
-std::vector<std::vector<Slot>> SlotList::dropPending() {
-  std::vector<std::vector<Slot>> runs = std::move(runs_);
-  runs_.clear();
-  adds_.clear();
-  gone_.clear();
-  size_ = list_.size();
-  return runs;
-}
-
 void SlotList::settle() const {
   ++version_;
   if (!runs_.empty()) {

@@ -4,12 +4,15 @@
 // the smaller part: n² slots for a layer of an n³ grid, where the step itself touched a few dozen.
 // The complex after cx.undo(edits) is exactly the one before the step, so its sheets are exactly
 // the ones before it; what the tracker needs is what it held then. recordUnmerge keeps that, before
-// the lockstep commits such a plan: each old sheet's labels, their flips, its slot list (settled,
-// so that the merge leaves it untouched and hands the merged one over as a pending run), its
-// measures and pair counts, the free labels, and the labels and orientations of the touched slots
-// (every slot of a new sheet is one: the plan is recorded only then). unmergeSheets gives it all
-// back and retires the new sheets, in time proportional to the step, when nothing else changed the
-// sheets in between (sheetState_ is the step's, and no list was read, which merges its runs).
+// the lockstep commits such a plan: each old sheet's labels, their flips, its measures and pair
+// counts, the free labels, the labels and orientations of the touched slots (every slot of a new
+// sheet is one: the plan is recorded only then), and each slot list's pending edits as counts (a
+// merge hands the merged list over whole, as pending runs, and the step's additions and removals
+// are appended: SlotList::Mark) with copies of the few pending additions and removals. No list is
+// read or merged. unmergeSheets gives it all back (the lists rolled back to their marks, each
+// merged one rebuilt from the runs it handed over) and retires the new sheets, in time proportional
+// to the step, when nothing else changed the sheets in between (sheetState_ is the step's, and no
+// list was read since, which merges its runs). Steps undone in LIFO order each find their state.
 // Owns DualUnmergeMemo; between updates it owns nothing of the tracker.
 #include <algorithm>
 
@@ -33,8 +36,10 @@ struct DualUnmergeMemo {
     int32_t selfPairs = 0;
     std::vector<int32_t> labels;
     std::vector<uint8_t> flips;  // labelFlip_ of each label
-    size_t slots = 0;
-    uint64_t version = 0;  // its slot list's version (clean)
+    SlotList::Mark mark;  // its slot list's pending edits: how many of each
+    size_t listed = 0;    // and their contents: the merged part's size, each pending run's size
+    std::vector<size_t> runSizes;
+    std::vector<Slot> adds, gone;  // its pending additions and removals (a merge hands them over)
   };
   std::vector<SheetBefore> sheets;                 // every sheet through the touched hexes, ascending
   std::vector<std::array<int32_t, 3>> crossPairs;  // pairs_ between labels of two of them: (a, b, count), non-zero
@@ -44,6 +49,10 @@ struct DualUnmergeMemo {
   std::vector<int32_t> freeLabels, freeSheet;  // the free labels, in order, and their labelSheet
   std::vector<uint8_t> freeFlip;               // and their labelFlip_
 };
+
+namespace {
+constexpr size_t kCopiedEdits = 64;  // pending additions and removals a memo copies; more are merged first
+}  // namespace
 
 // update() asked to record a merge-only step for its undo.
 DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology,
@@ -78,7 +87,9 @@ void DualTracker::recordUnmerge(const std::vector<HexId>& touched, const std::ve
   }
   for (int32_t id : old) {
     const Sheet& sh = dual_.sheets[size_t(id)];
-    if (!sh.slots.clean()) sh.slots.get();  // settled: the merge's edits then wait as pending ones
+    // Many pending additions and removals (other steps' edits nothing read yet) are merged now
+    // rather than copied into every memo: this list's read comes once, not once per step.
+    if (sh.slots.pendingAdds().size() + sh.slots.pendingGone().size() > kCopiedEdits) sh.slots.get();
     DualUnmergeMemo::SheetBefore b;
     b.id = id;
     b.euler = sh.euler;
@@ -89,8 +100,11 @@ void DualTracker::recordUnmerge(const std::vector<HexId>& touched, const std::ve
     b.selfPairs = selfPairs_[size_t(id)];
     b.labels = labels_[size_t(id)];
     for (int32_t l : b.labels) b.flips.push_back(labelFlip_[size_t(l)]);
-    b.slots = sh.slots.size();
-    b.version = sh.slots.version();
+    b.mark = sh.slots.mark();
+    b.listed = sh.slots.listedSize();
+    for (size_t r = 0; r < sh.slots.pendingRuns(); ++r) b.runSizes.push_back(sh.slots.runSize(r));
+    b.adds = sh.slots.pendingAdds();
+    b.gone = sh.slots.pendingGone();
     u->sheets.push_back(std::move(b));
   }
   for (size_t i = 0; i < old.size(); ++i)
@@ -136,13 +150,8 @@ const DualUnmergeMemo::SheetBefore* sheetBefore(const DualUnmergeMemo& u, int32_
                              [](const DualUnmergeMemo::SheetBefore& b, int32_t x) { return b.id < x; });
   return it != u.sheets.end() && it->id == id ? &*it : nullptr;
 }
-// The sheets merged into sheet keep, in the order the merge handed their lists over; keep -1:
-// every sheet merged away.
-std::vector<int32_t> mergedInto(const DualUnmergeMemo& u, int32_t keep) {
-  std::vector<int32_t> xs;
-  for (const auto& [x, k] : u.merges)
-    if (keep < 0 || k == keep) xs.push_back(x);
-  return xs;
+bool mergedAway(const DualUnmergeMemo& u, int32_t id) {
+  return std::any_of(u.merges.begin(), u.merges.end(), [&](const auto& m) { return m.first == id; });
 }
 }  // namespace
 
@@ -156,20 +165,24 @@ bool DualTracker::unmergeSheets(const Complex& cx, const std::vector<HexId>& tou
     return false;
   for (size_t id = u.sheetsBefore; id < dual_.sheets.size(); ++id)
     if (!dual_.sheets[id].alive) return false;
-  const std::vector<int32_t> xs = mergedInto(u, -1);  // the sheets merged away
   for (const auto& b : u.sheets) {
     const Sheet& sh = dual_.sheets[size_t(b.id)];
-    if (std::find(xs.begin(), xs.end(), b.id) != xs.end()) {
+    if (mergedAway(u, b.id)) {
       if (sh.alive || sh.slots.size() != 0) return false;
       continue;
     }
-    if (!sh.alive || sh.slots.version() != b.version) return false;  // settled since: the lists are not the memo's
-    const std::vector<int32_t> runs = mergedInto(u, b.id);
-    if (sh.slots.pendingRuns() != runs.size()) return false;
-    for (size_t r = 0; r < runs.size(); ++r) {
-      const auto* xb = sheetBefore(u, runs[r]);
-      if (!xb || sh.slots.runSize(r) != xb->slots) return false;
+    if (!sh.alive || sh.slots.version() != b.mark.version) return false;  // merged since: not the memo's list
+    size_t r = b.mark.runs;  // the runs the merges handed over since: each merged list's parts, in order
+    auto handed = [&](size_t n) { return r < sh.slots.pendingRuns() && sh.slots.runSize(r++) == n; };
+    for (const auto& [x, keep] : u.merges) {
+      if (keep != b.id) continue;
+      const auto* xb = sheetBefore(u, x);
+      if (!xb || (xb->listed && !handed(xb->listed))) return false;
+      for (size_t n : xb->runSizes)
+        if (!handed(n)) return false;
+      if (!xb->adds.empty() && !handed(xb->adds.size())) return false;
     }
+    if (r != sh.slots.pendingRuns()) return false;
   }
 
   // ---- give it back ----
@@ -189,13 +202,21 @@ bool DualTracker::unmergeSheets(const Complex& cx, const std::vector<HexId>& tou
   dual_.labelSheet.resize(u.labelCount);
   labelSlots_.resize(u.labelCount);
   labelFlip_.resize(u.labelCount);
-  for (const auto& b : u.sheets) {  // the lists: each merged one from its run, the others' pending edits dropped
+  for (const auto& b : u.sheets) {  // the lists: each merged one from the runs it handed over, the others rolled back
     Sheet& sh = dual_.sheets[size_t(b.id)];
     if (!sh.alive) continue;
-    const std::vector<int32_t> into = mergedInto(u, b.id);
-    std::vector<std::vector<Slot>> runs = sh.slots.dropPending();
-    for (size_t r = 0; r < into.size(); ++r)
-      dual_.sheets[size_t(into[r])].slots.restore(std::move(runs[r]), sheetBefore(u, into[r])->version);
+    std::vector<std::vector<Slot>> handed = sh.slots.rollBack(b.mark);
+    size_t r = 0;
+    for (const auto& [x, keep] : u.merges) {
+      if (keep != b.id) continue;
+      const auto* xb = sheetBefore(u, x);
+      std::vector<Slot> listed;
+      if (xb->listed) listed = std::move(handed[r++]);
+      std::vector<std::vector<Slot>> runs;
+      for (size_t k = 0; k < xb->runSizes.size(); ++k) runs.push_back(std::move(handed[r++]));
+      r += !xb->adds.empty();  // its additions, sorted by the merge: the memo's copy is given back
+      dual_.sheets[size_t(x)].slots.reset(std::move(listed), std::move(runs), xb->adds, xb->gone, xb->mark);
+    }
   }
   for (const auto& b : u.sheets) {
     Sheet& sh = dual_.sheets[size_t(b.id)];
