@@ -54,7 +54,7 @@ namespace {
 constexpr size_t kCopiedEdits = 64;  // pending additions and removals a memo copies; more are merged first
 }  // namespace
 
-// update() asked to record a merge-only step for its undo.
+// update() asked to record, for its undo, a step that keeps every sheet.
 DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology,
                               DualIdMemo& memo) {
   recordUnmerge_ = true;
