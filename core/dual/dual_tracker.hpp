@@ -137,6 +137,7 @@ class DualTracker {
                      const std::vector<std::pair<int32_t, int32_t>>& merges, size_t pieces);
   bool unmergeSheets(const Complex& cx, const std::vector<HexId>& touched, const DualUnmergeMemo& u, DualChange& change);
   void retirePieces(const DualUnmergeMemo& u, DualChange& change);
+  void relistByLabels(const std::vector<HexId>& touched, const DualUnmergeMemo& u, int32_t keep);
   void newSheetState();  // a number no tracker in the process had: a memo never fits another tracker
   friend struct DualTrackerTestAccess;  // tests break the state on purpose to see checkInvariants fail
 

@@ -11,8 +11,9 @@
 // are appended: SlotList::Mark) with copies of the few pending additions and removals. No list is
 // read or merged. unmergeSheets gives it all back (the lists rolled back to their marks, each
 // merged one rebuilt from the runs it handed over) and retires the new sheets, in time proportional
-// to the step, when nothing else changed the sheets in between (sheetState_ is the step's, and no
-// list was read since, which merges its runs). Steps undone in LIFO order each find their state.
+// to the step, when no update changed the sheets in between (sheetState_ is the step's). A list
+// read since (which merges its pending runs) is split by the labels given back, in one pass over
+// it (relistByLabels). Steps undone in LIFO order each find their state.
 // Owns DualUnmergeMemo; between updates it owns nothing of the tracker.
 #include <algorithm>
 
@@ -155,6 +156,37 @@ bool mergedAway(const DualUnmergeMemo& u, int32_t id) {
 }
 }  // namespace
 
+// Sheet keep's list, read since the step (so its pending runs and edits are merged), and the lists
+// of the sheets merged into it, split again by the labels given back: one pass over it, the touched
+// hexes' slots taken from their restored labels.
+void DualTracker::relistByLabels(const std::vector<HexId>& touched, const DualUnmergeMemo& u, int32_t keep) {
+  std::vector<int32_t> group{keep};
+  for (const auto& [x, k] : u.merges)
+    if (k == keep) group.push_back(x);
+  auto member = [&](int32_t id) {
+    return int(std::find(group.begin(), group.end(), id) - group.begin());  // group.size() if none
+  };
+  std::vector<std::vector<Slot>> rest(group.size()), near(group.size());
+  const std::span<const Slot> listed = dual_.sheets[size_t(keep)].slots.view();
+  sheetSlotsTouched_ += listed.size();
+  for (const Slot& s : listed) {
+    if (std::binary_search(touched.begin(), touched.end(), s.hex)) continue;
+    const auto g = size_t(member(dual_.sheetAt(s.hex, s.axis)));
+    if (g < group.size()) rest[g].push_back(s);
+  }
+  for (HexId h : touched)
+    for (int a = 0; a < 3; ++a)
+      if (const int32_t l = dual_.sheetLabel[size_t(h)][size_t(a)]; l >= 0) {
+        const auto g = size_t(member(dual_.labelSheet[size_t(l)]));
+        if (g < group.size()) near[g].push_back({h, a});
+      }
+  for (size_t g = 0; g < group.size(); ++g) {
+    std::vector<Slot> both(rest[g].size() + near[g].size());
+    std::merge(rest[g].begin(), rest[g].end(), near[g].begin(), near[g].end(), both.begin());
+    dual_.sheets[size_t(group[g])].slots = std::move(both);
+  }
+}
+
 // False, changing nothing, unless the tracker is as the merge left it: then every sheet the step
 // touched is given back as the memo has it, and the touched slots their labels and orientations.
 bool DualTracker::unmergeSheets(const Complex& cx, const std::vector<HexId>& touched, const DualUnmergeMemo& u,
@@ -171,7 +203,8 @@ bool DualTracker::unmergeSheets(const Complex& cx, const std::vector<HexId>& tou
       if (sh.alive || sh.slots.size() != 0) return false;
       continue;
     }
-    if (!sh.alive || sh.slots.version() != b.mark.version) return false;  // merged since: not the memo's list
+    if (!sh.alive) return false;
+    if (sh.slots.version() != b.mark.version) continue;  // read since (its runs merged): relisted by label
     size_t r = b.mark.runs;  // the runs the merges handed over since: each merged list's parts, in order
     auto handed = [&](size_t n) { return r < sh.slots.pendingRuns() && sh.slots.runSize(r++) == n; };
     for (const auto& [x, keep] : u.merges) {
@@ -202,22 +235,6 @@ bool DualTracker::unmergeSheets(const Complex& cx, const std::vector<HexId>& tou
   dual_.labelSheet.resize(u.labelCount);
   labelSlots_.resize(u.labelCount);
   labelFlip_.resize(u.labelCount);
-  for (const auto& b : u.sheets) {  // the lists: each merged one from the runs it handed over, the others rolled back
-    Sheet& sh = dual_.sheets[size_t(b.id)];
-    if (!sh.alive) continue;
-    std::vector<std::vector<Slot>> handed = sh.slots.rollBack(b.mark);
-    size_t r = 0;
-    for (const auto& [x, keep] : u.merges) {
-      if (keep != b.id) continue;
-      const auto* xb = sheetBefore(u, x);
-      std::vector<Slot> listed;
-      if (xb->listed) listed = std::move(handed[r++]);
-      std::vector<std::vector<Slot>> runs;
-      for (size_t k = 0; k < xb->runSizes.size(); ++k) runs.push_back(std::move(handed[r++]));
-      r += !xb->adds.empty();  // its additions, sorted by the merge: the memo's copy is given back
-      dual_.sheets[size_t(x)].slots.reset(std::move(listed), std::move(runs), xb->adds, xb->gone, xb->mark);
-    }
-  }
   for (const auto& b : u.sheets) {
     Sheet& sh = dual_.sheets[size_t(b.id)];
     const bool revived = !sh.alive;
@@ -235,6 +252,28 @@ bool DualTracker::unmergeSheets(const Complex& cx, const std::vector<HexId>& tou
       labelFlip_[size_t(b.labels[k])] = b.flips[k];
     }
     (revived ? change.sheetsCreated : change.sheetsChanged).push_back(b.id);
+  }
+  // The lists: each rolled back to its mark, each merged one rebuilt from the runs it handed over;
+  // a list read since the step (its runs merged) is split by the labels given back instead.
+  for (const auto& b : u.sheets) {
+    if (mergedAway(u, b.id)) continue;
+    Sheet& sh = dual_.sheets[size_t(b.id)];
+    if (sh.slots.version() != b.mark.version) {
+      relistByLabels(touched, u, b.id);
+      continue;
+    }
+    std::vector<std::vector<Slot>> handed = sh.slots.rollBack(b.mark);
+    size_t r = 0;
+    for (const auto& [x, keep] : u.merges) {
+      if (keep != b.id) continue;
+      const auto* xb = sheetBefore(u, x);
+      std::vector<Slot> listed;
+      if (xb->listed) listed = std::move(handed[r++]);
+      std::vector<std::vector<Slot>> runs;
+      for (size_t k = 0; k < xb->runSizes.size(); ++k) runs.push_back(std::move(handed[r++]));
+      r += !xb->adds.empty();  // its additions, sorted by the merge: the memo's copy is given back
+      dual_.sheets[size_t(x)].slots.reset(std::move(listed), std::move(runs), xb->adds, xb->gone, xb->mark);
+    }
   }
   // Pairs of slots in one hex on two of these sheets: the counts before (the merge took some into
   // its self-intersection count; the touched hexes' pairs moved with their labels).
