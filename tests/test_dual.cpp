@@ -329,12 +329,16 @@ TEST_CASE("dual tracker: a chord cut in many places stays at most 16 pieces and 
 
 // A merged sheet's list is settled when read: runs join in order, removals drop one listed copy
 // each (a slot removed and added back before the read stays listed once).
+namespace {
+// Slots from (hex, axis) pairs, for the SlotList tests.
+std::vector<Slot> slots(std::initializer_list<std::pair<int, int>> xs) {
+  std::vector<Slot> v;
+  for (auto [h, a] : xs) v.push_back({h, a});
+  return v;
+}
+}  // namespace
+
 TEST_CASE("SlotList: pending runs and removals read as one sorted list") {
-  auto slots = [](std::initializer_list<std::pair<int, int>> xs) {
-    std::vector<Slot> v;
-    for (auto [h, a] : xs) v.push_back({h, a});
-    return v;
-  };
   SlotList a(slots({{1, 0}, {4, 2}, {9, 1}}));
   SlotList b(slots({{2, 1}, {4, 0}}));
   b.add(slots({{7, 2}}));
@@ -369,11 +373,6 @@ TEST_CASE("SlotList: pending runs and removals read as one sorted list") {
 // back, and a list merged away is rebuilt from the runs it handed over and its recorded pending
 // edits: both read as before, with the versions the marks recorded.
 TEST_CASE("SlotList: a merge and the edits after a mark roll back exactly") {
-  auto slots = [](std::initializer_list<std::pair<int, int>> xs) {
-    std::vector<Slot> v;
-    for (auto [h, a] : xs) v.push_back({h, a});
-    return v;
-  };
   SlotList keep(slots({{2, 0}, {6, 0}, {10, 0}}));
   keep.add(slots({{8, 2}}));
   SlotList x(slots({{1, 1}, {5, 1}}));
@@ -412,11 +411,6 @@ TEST_CASE("SlotList: a merge and the edits after a mark roll back exactly") {
 // as a sorted run (they once joined as they came, and the next read merged an unsorted run: a
 // sheet then read with slots twice and out of order, found by the undo property test).
 TEST_CASE("SlotList: a merged list's unsorted pending additions read sorted") {
-  auto slots = [](std::initializer_list<std::pair<int, int>> xs) {
-    std::vector<Slot> v;
-    for (auto [h, a] : xs) v.push_back({h, a});
-    return v;
-  };
   SlotList a(slots({{2, 0}, {6, 0}, {10, 0}}));
   SlotList b(slots({{1, 1}}));
   b.add(slots({{9, 1}, {3, 1}, {5, 1}}));

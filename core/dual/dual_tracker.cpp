@@ -214,20 +214,20 @@ void touchedHexesWithEdges(const Complex::EditLog& log, std::vector<HexId>& touc
 }
 
 DualChange DualTracker::update(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology) {
-  std::vector<HexId> touched;
-  touched.reserve(2 * edits.edits.size());  // at most two hexes per edit: one allocation
-  touchedHexesWithEdges(edits, touched, edgesToWalk_, walked_);  // walked_ is 0 outside refreshShares
-  DualChange change = updateSorted(cx, touched, sheetsKeepTopology);
-  edgesToWalk_.clear();
-  return change;
+  return updateFromLog(cx, edits, sheetsKeepTopology, nullptr);
 }
 
 DualChange DualTracker::updateUndone(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology,
                                      const DualIdMemo& memo) {
+  return updateFromLog(cx, edits, sheetsKeepTopology, memo.unmerge.get());
+}
+
+DualChange DualTracker::updateFromLog(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology,
+                                      const DualUnmergeMemo* unmerge) {
   std::vector<HexId> touched;
-  touched.reserve(2 * edits.edits.size());
-  touchedHexesWithEdges(edits, touched, edgesToWalk_, walked_);
-  DualChange change = updateSorted(cx, touched, sheetsKeepTopology, memo.unmerge.get());
+  touched.reserve(2 * edits.edits.size());  // at most two hexes per edit: one allocation
+  touchedHexesWithEdges(edits, touched, edgesToWalk_, walked_);  // walked_ is 0 outside refreshShares
+  DualChange change = updateSorted(cx, touched, sheetsKeepTopology, unmerge);
   edgesToWalk_.clear();
   return change;
 }

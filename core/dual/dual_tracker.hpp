@@ -127,11 +127,13 @@ class DualTracker {
   void checkInvariants(const Complex& cx) const;
 
  private:
+  DualChange updateFromLog(const Complex& cx, const Complex::EditLog& edits, bool sheetsKeepTopology,
+                           const DualUnmergeMemo* unmerge);
   DualChange updateSorted(const Complex& cx, const std::vector<HexId>& touched, bool sheetsKeepTopology,
                           const DualUnmergeMemo* unmerge = nullptr);
 
-  // ---- exact undo of a merge (tracker/sheets_unmerge.cpp) ----
-  // The lockstep, before it commits a plan that only merges sheets, records them when asked to
+  // ---- exact undo of a step that kept every sheet (tracker/sheets_unmerge.cpp) ----
+  // The lockstep, before it commits a plan that keeps every old sheet, records them when asked to
   // (recordUnmerge_ set by update(..., memo)); unmergeSheets gives them back after the undo.
   void recordUnmerge(const std::vector<HexId>& touched, const std::vector<int32_t>& old,
                      const std::vector<std::pair<int32_t, int32_t>>& merges, size_t pieces);
@@ -275,7 +277,7 @@ class DualTracker {
   // Names the sheet side's state (labels, lists, measures): a fresh number after every change but
   // an unmerge, which gives back the number the merge's memo was taken at.
   uint64_t sheetState_ = 0;
-  bool recordUnmerge_ = false;                  // the current update is asked to record a merge
+  bool recordUnmerge_ = false;                  // the current update is asked to record its sheets
   std::shared_ptr<DualUnmergeMemo> recorded_;  // what it recorded
 };
 
