@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <malloc.h>
+#include <sys/resource.h>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,14 @@ static long peakRssKb() {
 }
 
 static double ms(Clock::duration d) { return d.count() / 1e6; }
+
+// Minor page faults of this process so far: a fault costs this VM about 13 µs (bench/README.md,
+// "The journal reserved once"), so a step that touches fresh memory shows here.
+static long minorFaults() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_minflt;
+}
 
 static int benchBuild(int n, int reps) {
   // Keep freed memory in the process so warm repetitions measure computation, not the VM's page faults.
@@ -311,15 +320,20 @@ static int benchSheetOps(int n, int reps, const char* only) {
     }
     std::vector<double> opOnly, withDual;
     size_t slots = 0;
+    long opFaults = 0, dualFaults = 0;  // in the fastest repetition
     for (int r = 0; r < reps; ++r) {
+      const long f0 = minorFaults();
       auto t0 = Clock::now();
       OpResult res = applyStep(cx, k.step);
       auto t1 = Clock::now();
+      const long f1 = minorFaults();
       cx.undo(res.edits);
+      if (opOnly.empty() || ms(t1 - t0) < *std::min_element(opOnly.begin(), opOnly.end())) opFaults = f1 - f0;
       opOnly.push_back(ms(t1 - t0));
     }
     std::vector<double> ids;  // exact undo's ids: idMemo before the update plus restoreIds after the undo's
     for (int r = 0; r < reps; ++r) {
+      const long f2 = minorFaults();
       auto t2 = Clock::now();
       OpResult res = applyStep(cx, k.step);
       auto tm = Clock::now();
@@ -327,13 +341,16 @@ static int benchSheetOps(int n, int reps, const char* only) {
       auto tm2 = Clock::now();
       tracker.update(cx, res.edits, keepsSheetTopology(res));
       auto t3 = Clock::now();
+      const long f3 = minorFaults();
       slots = tracker.slotsTouched();
       cx.undo(res.edits);
       tracker.update(cx, res.edits, keepsSheetTopology(res));
       auto t4 = Clock::now();
       tracker.restoreIds(memo);
       auto t5 = Clock::now();
-      withDual.push_back(ms(t3 - t2) - ms(tm2 - tm));
+      const double t = ms(t3 - t2) - ms(tm2 - tm);
+      if (withDual.empty() || t < *std::min_element(withDual.begin(), withDual.end())) dualFaults = f3 - f2;
+      withDual.push_back(t);
       ids.push_back(ms(tm2 - tm) + ms(t5 - t4));
     }
     if (!k.setup.empty()) {
@@ -358,8 +375,8 @@ static int benchSheetOps(int n, int reps, const char* only) {
     std::sort(withDual.begin(), withDual.end());
     std::sort(ids.begin(), ids.end());
     std::sort(floor.begin(), floor.end());
-    std::printf("{\"bench\":\"sheetop\",\"n\":%d,\"op\":\"%s\",\"opMs\":%.3f,\"opPlusDualMs\":%.3f,\"undoIdsMs\":%.3f,\"slotsTouched\":%zu,\"editsMs\":%.3f}\n",
-                n, k.name, opOnly[0], withDual[0], ids[0], slots, floor.empty() ? -1.0 : floor[0]);
+    std::printf("{\"bench\":\"sheetop\",\"n\":%d,\"op\":\"%s\",\"opMs\":%.3f,\"opPlusDualMs\":%.3f,\"undoIdsMs\":%.3f,\"slotsTouched\":%zu,\"editsMs\":%.3f,\"opFaults\":%ld,\"opPlusDualFaults\":%ld}\n",
+                n, k.name, opOnly[0], withDual[0], ids[0], slots, floor.empty() ? -1.0 : floor[0], opFaults, dualFaults);
   }
   return 0;
 }

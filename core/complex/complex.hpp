@@ -224,6 +224,12 @@ class Complex {
     uint64_t revisionBefore = 0, revisionAfter = 0;
   };
   void beginTransaction();
+  // Inside a transaction: room for n more edits at once. An operation that knows its size asks
+  // before it edits, so the journal does not grow by doubling (each doubling a fresh buffer: a 100³
+  // sheet extraction's 110,000 edits cost 2,600 page faults that way, most of its time).
+  void reserveEdits(size_t n) {
+    if (journaling_) journal_.reserve(journal_.size() + n);
+  }
   EditLog commitTransaction();
   void rollbackTransaction();
   bool inTransaction() const { return journaling_; }

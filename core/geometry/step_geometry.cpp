@@ -141,6 +141,7 @@ std::vector<HexId> smoothStep(Complex& cx, Complex::EditLog& log, const std::vec
   cx.beginTransaction();
   for (auto [v, p] : best.moves) cx.setPosition(v, p);
   const Complex::EditLog moves = cx.commitTransaction();
+  log.edits.reserve(log.edits.size() + moves.edits.size());  // exactly (insert alone would double a large log)
   log.edits.insert(log.edits.end(), moves.edits.begin(), moves.edits.end());
   q.moved.clear();
   for (auto [v, p] : best.moves) q.moved.push_back(v);

@@ -178,7 +178,7 @@ OpResult columnCollapse(Complex& cx, EdgeRef e) {
   around.insert(around.end(), m.members.begin(), m.members.end());
   aroundAfter.insert(aroundAfter.end(), m.anchors.begin(), m.anchors.end());
   const EulerBefore before{cx.numVertices(), edgesAt(cx, around), cx.numQuads(), cx.numHexes()};
-  Transaction tx(cx);
+  Transaction tx(cx, collapseEdits(hexes.size(), m, glues.size()));
   for (HexId h : hexes)
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);
   for (HexId h : hexes) cx.removeHex(h);

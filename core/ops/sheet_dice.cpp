@@ -122,10 +122,22 @@ OpResult sheetDice(Complex& cx, EdgeRef e, Count count) {
   if (up.empty()) refuse(op, "one-sided", "the sheet through " + entityName(e) + " is one-sided: its layers would not stay apart");
   Levels lv = levelsOf(cx, sheet, k, std::move(up));
   std::unordered_map<HexId, std::array<Gluing, 6>> old;
+  size_t gluings = 0, sideGluings = 0;  // counted twice (a gluing inside the sheet: once from each side)
   for (HexId h : sheet.hexes)
-    for (int f = 0; f < 6; ++f) old[h][size_t(f)] = cx.gluing(h, f);
+    for (int f = 0; f < 6; ++f) {
+      const Gluing g = old[h][size_t(f)] = cx.gluing(h, f);
+      if (g.boundary()) continue;
+      const size_t w = sheet.axisOf(g.hex) >= 0 ? 1 : 2;
+      gluings += w;
+      if (axisOfFace(f) != sheet.axisOf(h)) sideGluings += w;
+    }
+  // Its edits, at most: the unglues and glues (a side gluing once per layer, the layers to each
+  // other), the new vertices and hexes, the old hexes' corners.
+  const size_t n = sheet.hexes.size(), layersBetween = size_t(k - 1);
+  const size_t edits = gluings / 2 + (gluings - sideGluings) / 2 + size_t(k) * sideGluings / 2 + layersBetween * n +
+                       layersBetween * lv.edge.size() + 8 * n + layersBetween * n;
 
-  Transaction tx(cx);
+  Transaction tx(cx, edits);
   OpResult res;
   res.op = kind;
   for (HexId h : sheet.hexes)

@@ -322,7 +322,7 @@ OpResult sheetExtract(Complex& cx, EdgeRef e) {
 
   const bool countEuler = collapsesProperArc(cx, p.edges, m);
   const EulerBefore before{cx.numVertices(), countEuler ? edgesAt(cx, m.members) : -1, cx.numQuads(), cx.numHexes()};
-  Transaction tx(cx);
+  Transaction tx(cx, collapseEdits(sheet.hexes.size(), m, p.glues.size()));
   for (HexId h : sheet.hexes)
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);
   for (HexId h : sheet.hexes) cx.removeHex(h);

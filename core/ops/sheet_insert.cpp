@@ -308,8 +308,12 @@ OpResult insertAlong(Complex& cx, const std::vector<QuadSide>& sides, OpKind kin
   const Surface& s = planned.s;
   const Plan& plan = planned.plan;
   const Layer& layer = planned.layer;
+  // Its edits: a new vertex per surface vertex and its moving corners, per quad an unglue, a new
+  // hex and two glues, a glue per shared surface edge.
+  size_t edits = s.vertices.size() + 4 * s.named.size() + layer.sides.size();
+  for (const VertexSides& vs : plan.at) edits += size_t(std::count(vs.piece.begin(), vs.piece.end(), vs.moving));
 
-  Transaction tx(cx);
+  Transaction tx(cx, edits);
   OpResult res;
   res.op = kind;
   const auto copy = splitVertices(cx, s, plan, res);

@@ -99,6 +99,11 @@ void finishCollapse(Complex& cx, Transaction& tx, OpResult& res, const VertexMer
 
 // Refuses (hex-vertices-merge) when a hex that keeps a renumbered corner would get two equal vertices.
 void requireDistinctCorners(const Complex& cx, const VertexMerges& m, const std::string& op);
+// At most how many edits a collapse of `hexes` hexes makes: each hex's unglues and removal, the
+// merges' renumbered corners and placed vertices, the glues (for Transaction's reservation).
+inline size_t collapseEdits(size_t hexes, const VertexMerges& m, size_t glues) {
+  return 7 * hexes + m.renamed.size() + m.placed.size() + glues;
+}
 // Renumbers the corners and places the kept vertices (call inside the transaction).
 void applyMerges(Complex& cx, const VertexMerges& m);
 

@@ -107,6 +107,9 @@ class Transaction {
     f0_ = cx.numQuads();
     h0_ = cx.numHexes();
   }
+  // The same with room for about `edits` edits (Complex::reserveEdits): for the sheet operations,
+  // whose edits are counted in thousands.
+  Transaction(Complex& cx, size_t edits) : Transaction(cx) { cx_.reserveEdits(edits); }
   ~Transaction() {
     if (open_) cx_.rollbackTransaction();
   }
