@@ -59,6 +59,12 @@ static long minorFaults() {
   getrusage(RUSAGE_SELF, &u);
   return u.ru_minflt;
 }
+// System CPU ms of this process so far (page faults are most of it).
+static double systemMs() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return 1e3 * double(u.ru_stime.tv_sec) + double(u.ru_stime.tv_usec) / 1e3;
+}
 
 static int benchBuild(int n, int reps) {
   // Keep freed memory in the process so warm repetitions measure computation, not the VM's page faults.
@@ -189,6 +195,8 @@ static int benchThroughput(int n, int steps) {
   std::mt19937 rng(7);
   int64_t applied = 0, attempted = 0;
   std::vector<HexId> live;
+  const long faults0 = minorFaults();
+  const double sys0 = systemMs();
   auto t0 = Clock::now();
   const char* ops[] = {"pillow", "hexpush", "chordpush"};
   for (int s = 0; s < steps; ++s) {
@@ -206,8 +214,10 @@ static int benchThroughput(int n, int steps) {
     }
   }
   double sec = ms(Clock::now() - t0) / 1000;
-  std::printf("{\"bench\":\"throughput\",\"n\":%d,\"attempted\":%lld,\"applied\":%lld,\"appliedPerSec\":%.0f,\"hexesAfter\":%lld}\n",
-              n, (long long)attempted, (long long)applied, applied / sec, (long long)cx.numHexes());
+  const long faults = minorFaults() - faults0;
+  const double sys = systemMs() - sys0;
+  std::printf("{\"bench\":\"throughput\",\"n\":%d,\"attempted\":%lld,\"applied\":%lld,\"appliedPerSec\":%.0f,\"hexesAfter\":%lld,\"pageFaults\":%ld,\"systemMs\":%.1f,\"cpuMs\":%.1f}\n",
+              n, (long long)attempted, (long long)applied, applied / sec, (long long)cx.numHexes(), faults, sys, 1e3 * sec);
   return 0;
 }
 
