@@ -221,6 +221,35 @@ static int benchThroughput(int n, int steps) {
   return 0;
 }
 
+// A session that keeps its undo history (as the CLI, the explorer and the package do): the x-layers
+// 10, 20, ..., 80 of an N^3 grid extracted one after another with the dual kept current, every
+// result kept. Unlike sheetops' apply-and-undo loop, each step meets fresh memory and cold caches.
+// Per extraction: mean CPU ms and page faults of the operation and of the dual update.
+static int benchSession(int n) {
+  Complex cx = makeGrid(n, n, n);
+  DualTracker tracker(cx);
+  std::vector<OpResult> history;
+  double opMs = 0, dualMs = 0;
+  long opFaults = 0, dualFaults = 0;
+  const int steps = 8, c = n / 2;
+  for (int i = 0; i < steps; ++i) {
+    const int x = (i + 1) * n / (steps + 2);  // a hex of the layer in the original grid's ids (removed hexes leave holes)
+    const std::string step = "sheet-extract h" + std::to_string(x + n * (c + n * c)) + "e0";
+    const long f0 = minorFaults();
+    const auto t0 = Clock::now();
+    history.push_back(applyStep(cx, step));
+    const auto t1 = Clock::now();
+    const long f1 = minorFaults();
+    tracker.update(cx, history.back().edits, keepsSheetTopology(history.back()));
+    const auto t2 = Clock::now();
+    opMs += ms(t1 - t0), dualMs += ms(t2 - t1);
+    opFaults += f1 - f0, dualFaults += minorFaults() - f1;
+  }
+  std::printf("{\"bench\":\"session\",\"n\":%d,\"extractions\":%d,\"opMs\":%.3f,\"dualMs\":%.3f,\"opFaults\":%ld,\"dualFaults\":%ld}\n",
+              n, steps, opMs / steps, dualMs / steps, opFaults / steps, dualFaults / steps);
+  return 0;
+}
+
 // Layout of one sheet of an N x N x 2 grid: a sheet of N*N hexes (the z-layer).
 static int benchLayout(int n, int reps) {
   Complex cx = makeGrid(n, n, 2);
@@ -285,6 +314,7 @@ static std::vector<EditReplay> replayOf(const Complex& cx, const Complex::EditLo
 }
 static Complex::EditLog replay(Complex& cx, const std::vector<EditReplay>& edits) {
   cx.beginTransaction();
+  cx.reserveEdits(edits.size());  // as the sheet operations do
   for (const EditReplay& r : edits) switch (r.e.kind) {
       case Complex::Edit::Unglue: cx.unglue(r.e.hex, r.e.face); break;
       case Complex::Edit::RemoveHex: cx.removeHex(r.e.hex); break;
@@ -464,9 +494,10 @@ int main(int argc, char** argv) {
   if (argc >= 3 && !std::strcmp(argv[1], "sheetops")) return benchSheetOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5, argc > 4 ? argv[4] : nullptr);
   if (argc >= 3 && !std::strcmp(argv[1], "layout")) return benchLayout(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
   if (argc >= 3 && !std::strcmp(argv[1], "build")) return benchBuild(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 5);
+  if (argc >= 3 && !std::strcmp(argv[1], "session")) return benchSession(std::atoi(argv[2]));
   if (argc >= 3 && !std::strcmp(argv[1], "ops")) return benchOps(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 21);
   if (argc >= 3 && !std::strcmp(argv[1], "throughput"))
     return benchThroughput(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 20000);
-  std::fprintf(stderr, "usage: hexdual_bench build N [REPS] | ops N [REPS] | sheetops N [REPS] [OP] | throughput N [STEPS] | layout N [REPS] | layout-file MESH [REPS]\n");
+  std::fprintf(stderr, "usage: hexdual_bench build N [REPS] | ops N [REPS] | sheetops N [REPS] [OP] | throughput N [STEPS] | session N | layout N [REPS] | layout-file MESH [REPS]\n");
   return 2;
 }

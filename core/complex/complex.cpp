@@ -163,7 +163,7 @@ void Complex::undo(const EditLog& log) {
   revision_ = log.revisionBefore;
 }
 
-void Complex::revert(const std::vector<Edit>& edits) {
+void Complex::revert(const HugeVector<Edit>& edits) {
   for (auto it = edits.rbegin(); it != edits.rend(); ++it) {
     const JournalEntry& e = *it;
     switch (e.kind) {

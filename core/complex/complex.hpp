@@ -219,8 +219,10 @@ class Complex {
     Vec3 pos;
   };
   // The edits of one committed transaction, enough to undo it exactly (ids included).
+  // (in whole 2 MiB pages from 1 MiB up, like the per-hex arrays: a 100³ sheet extraction's
+  // journal is 4.4 MB, which in 4 KiB pages took 1,100 page faults, about 13 ms on a VM)
   struct EditLog {
-    std::vector<Edit> edits;
+    HugeVector<Edit> edits;
     uint64_t revisionBefore = 0, revisionAfter = 0;
   };
   void beginTransaction();
@@ -293,11 +295,11 @@ class Complex {
   HugeVector<int32_t> refs_;  // number of (hex, corner) incidences per vertex
   std::vector<VertexId> nonManifold_;
   using JournalEntry = Edit;
-  void revert(const std::vector<Edit>& edits);
+  void revert(const HugeVector<Edit>& edits);
   void record(JournalEntry e) {
     if (journaling_) journal_.push_back(e);
   }
-  std::vector<JournalEntry> journal_;
+  HugeVector<JournalEntry> journal_;
   bool journaling_ = false;
   uint64_t revisionAtBegin_ = 0;
   int64_t numHexes_ = 0, numVertices_ = 0, numBoundarySides_ = 0;
