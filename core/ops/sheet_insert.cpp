@@ -188,7 +188,8 @@ Plan orient(const Complex& cx, const Surface& s, const std::string& op) {
       const VertexSides& vs = plan.at[k];
       auto mine = cornerAt(j, q, flip[j]);
       // (written only on a refusal: a 100³ layer has 40,000 of these pairs)
-      auto where = [&] { return "vertex " + std::to_string(s.vertices[k]) + " (quad " + entityName(s.named[j]) + ")"; };
+      const QuadSide quad = s.named[j];  // (a structured binding: clang 14 lambdas do not capture one)
+      auto where = [&] { return "vertex " + std::to_string(s.vertices[k]) + " (quad " + entityName(quad) + ")"; };
       if (!cx.isBoundary(s.named[j])) {  // both sides of a quad on one side: the surface comes back turned over
         auto theirs = cornerAt(j, q, !flip[j]);
         if (vs.pieceOf(theirs.first, theirs.second) == vs.moving)
