@@ -4,6 +4,7 @@
 // Cost: the surface and the stars of its vertices.
 #include <algorithm>
 
+#include "complex/id_map.hpp"
 #include "ops/sheet_support.hpp"
 #include "ops/support.hpp"
 
@@ -13,15 +14,16 @@ using namespace ops;
 
 namespace {
 
-// The surface: its quads by the side named, every side of them (sorted: the walls a vertex's
+// The surface: its quads by the side named, every side of them (by hex: the walls a vertex's
 // corners are split by), its vertices in order of first appearance and the quads at each.
 struct Surface {
   std::vector<QuadSide> named;
-  std::vector<QuadSide> walls;
+  IdMap<uint8_t> walls;  // per hex: its faces that are a side of a quad of the surface (bit f)
   std::vector<VertexId> vertices;
-  std::unordered_map<VertexId, size_t> index;
+  IdMap<int32_t> index;  // vertex -> its place in `vertices`
+  std::vector<std::array<int32_t, 4>> placeAt;  // per quad: the place of its vertex at each position
   std::vector<std::vector<std::pair<size_t, int>>> quadsAt;  // per vertex: (quad, position in its named side)
-  bool isWall(QuadSide s) const { return std::binary_search(walls.begin(), walls.end(), s); }
+  bool isWall(QuadSide s) const { return walls.get(s.hex, 0) >> s.face & 1; }
 };
 
 Surface surfaceOf(const Complex& cx, const std::vector<QuadSide>& sides, const std::string& op) {
@@ -33,22 +35,25 @@ Surface surfaceOf(const Complex& cx, const std::vector<QuadSide>& sides, const s
     if (q.face < 0 || q.face > 5) refuse(op, "no-such-entity", "local face " + std::to_string(q.face) + " is not 0..5");
     seen.push_back(cx.canonical(q));
     s.named.push_back(q);
-    s.walls.push_back(q);
-    if (!cx.isBoundary(q)) s.walls.push_back({cx.gluing(q).hex, cx.gluing(q).face});
+    auto wall = [&](QuadSide w) { *s.walls.emplace(w.hex, 0).first |= uint8_t(1u << w.face); };
+    wall(q);
+    if (!cx.isBoundary(q)) wall({cx.gluing(q).hex, cx.gluing(q).face});
   }
   std::sort(seen.begin(), seen.end());
   if (auto d = std::adjacent_find(seen.begin(), seen.end()); d != seen.end())
     refuse(op, "duplicate", "quad " + entityName(*d) + " is named twice");
-  std::sort(s.walls.begin(), s.walls.end());
+  s.index.reserve(s.named.size() + 64);
   for (size_t i = 0; i < s.named.size(); ++i)
     for (int p = 0; p < 4; ++p) {
       const VertexId v = cx.vertex(s.named[i].hex, kFaceCorners[size_t(s.named[i].face)][size_t(p)]);
-      auto [it, fresh] = s.index.emplace(v, s.vertices.size());
+      auto [at, fresh] = s.index.emplace(v, int32_t(s.vertices.size()));
       if (fresh) {
         s.vertices.push_back(v);
         s.quadsAt.emplace_back();
       }
-      s.quadsAt[it->second].push_back({i, p});
+      s.quadsAt[size_t(*at)].push_back({i, p});
+      if (p == 0) s.placeAt.emplace_back();
+      s.placeAt[i][size_t(p)] = *at;
     }
   return s;
 }
@@ -167,7 +172,7 @@ Plan orient(const Complex& cx, const Surface& s, const std::string& op) {
     for (size_t qi = 0; qi < queue.size(); ++qi) {
       const size_t i = queue[qi];
       for (int p = 0; p < 4; ++p) {
-        const size_t k = s.index.at(cx.vertex(s.named[i].hex, kFaceCorners[size_t(s.named[i].face)][size_t(p)]));
+        const size_t k = size_t(s.placeAt[i][size_t(p)]);
         VertexSides& vs = plan.at[k];
         auto [h, c] = cornerAt(i, p, flip[i]);
         const int piece = vs.pieceOf(h, c);
