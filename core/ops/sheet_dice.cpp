@@ -4,6 +4,7 @@
 // chord lying in it gets k-1 parallel copies. Cost: the sheet times k.
 #include <algorithm>
 
+#include "complex/id_map.hpp"
 #include "ops/sheet_support.hpp"
 #include "ops/support.hpp"
 
@@ -17,15 +18,18 @@ namespace {
 // lower side), 1..k-1 new. Per sheet hex, which edge each of its 4 edges across the sheet is.
 struct Levels {
   int k = 2;
-  std::vector<std::vector<VertexId>> edge;                   // per class edge: vertex by level
-  std::unordered_map<HexId, std::array<int32_t, 4>> edgeOf;  // per hex: class edge of local edge 4a+i
+  std::vector<VertexId> vertex;                   // class edge e's vertex at level L: vertex[(k + 1) e + L]
+  IdMap<int32_t> place;                           // sheet hex -> its place in the sheet's (sorted) hexes
+  std::vector<std::array<int32_t, 4>> edgeOf;     // per place: class edge of local edge 4a+i
   IdMap<int8_t> up;
   bool selfTouching = false;  // a vertex ends two edges of the class (then no layer extraction undoes the dicing)
+  size_t edges() const { return vertex.size() / size_t(k + 1); }
+  VertexId& at(size_t e, int L) { return vertex[size_t(k + 1) * e + size_t(L)]; }
   // The vertex at global level L on the edge through corner c of sheet hex h.
   VertexId at(const SheetHexes& s, HexId h, int c, int L) const {
     const int a = s.axisOf(h);
     const int i = edgesOfCorner(c)[size_t(a)] - 4 * a;
-    return edge[size_t(edgeOf.at(h)[size_t(i)])][size_t(L)];
+    return vertex[size_t(k + 1) * size_t(edgeOf[size_t(place.at(h))][size_t(i)]) + size_t(L)];
   }
   // Global level of corner c of layer j of sheet hex h (its local axis may point down).
   int level(const SheetHexes& s, HexId h, int c, int j) const {
@@ -42,38 +46,43 @@ Levels levelsOf(const Complex& cx, const SheetHexes& sheet, int k, IdMap<int8_t>
   Levels lv;
   lv.k = k;
   lv.up = std::move(up);
+  lv.place.reserve(sheet.hexes.size());
+  lv.edgeOf.reserve(sheet.hexes.size());
   std::unordered_map<int64_t, int32_t> index;
-  std::unordered_map<VertexId, int32_t> endOf;
-  auto end = [&](VertexId v, int32_t e) { lv.selfTouching |= !endOf.emplace(v, e).second && endOf.at(v) != e; };
+  IdMap<int32_t> endOf(2 * sheet.hexes.size());
+  auto end = [&](VertexId v, int32_t e) {
+    auto [at, fresh] = endOf.emplace(v, e);
+    lv.selfTouching |= !fresh && *at != e;
+  };
   for (HexId h : sheet.hexes) {
+    lv.place.emplace(h, int32_t(lv.edgeOf.size()));
     const int a = sheet.axisOf(h);
     std::array<int32_t, 4> ids{};
     for (int i = 0; i < 4; ++i) {
       const EdgeRef key = cx.canonical(EdgeRef{h, 4 * a + i});
-      auto [it, fresh] = index.emplace(int64_t(key.hex) * 16 + key.edge, int32_t(lv.edge.size()));
+      auto [it, fresh] = index.emplace(int64_t(key.hex) * 16 + key.edge, int32_t(lv.edges()));
       if (fresh) {
         VertexId low = cx.vertex(h, kEdgeCorners[size_t(4 * a + i)][0]), high = cx.vertex(h, kEdgeCorners[size_t(4 * a + i)][1]);
         if (lv.up.at(h) < 0) std::swap(low, high);
-        std::vector<VertexId> levels(size_t(k) + 1, -1);
-        levels.front() = low;
-        levels.back() = high;
-        end(low, int32_t(lv.edge.size()));
-        end(high, int32_t(lv.edge.size()));
-        lv.edge.push_back(std::move(levels));
+        end(low, int32_t(lv.edges()));
+        end(high, int32_t(lv.edges()));
+        lv.vertex.push_back(low);
+        lv.vertex.insert(lv.vertex.end(), size_t(k) - 1, -1);
+        lv.vertex.push_back(high);
       }
       ids[size_t(i)] = it->second;
     }
-    lv.edgeOf[h] = ids;
+    lv.edgeOf.push_back(ids);
   }
   return lv;
 }
 
 void createLevelVertices(Complex& cx, Levels& lv, OpResult& res) {
-  for (auto& levels : lv.edge) {
-    const Vec3 p = cx.position(levels.front()), q = cx.position(levels.back());
+  for (size_t e = 0; e < lv.edges(); ++e) {
+    const Vec3 p = cx.position(lv.at(e, 0)), q = cx.position(lv.at(e, lv.k));
     for (int L = 1; L < lv.k; ++L) {
-      levels[size_t(L)] = cx.addVertex(p + (double(L) / lv.k) * (q - p));
-      res.createdVertices.push_back(levels[size_t(L)]);
+      lv.at(e, L) = cx.addVertex(p + (double(L) / lv.k) * (q - p));
+      res.createdVertices.push_back(lv.at(e, L));
     }
   }
 }
@@ -88,15 +97,19 @@ std::array<VertexId, 8> layerVertices(const SheetHexes& s, const Levels& lv, Hex
 // Glues each hex's layers to each other, and re-glues every old gluing of a sheet hex: a side quad (parallel to the
 // sheet's axis) of layer j to layer j across it; a face across the sheet, on its top or bottom
 // layer, to what it was glued to (or to that hex's top or bottom layer).
-void glueLayers(Complex& cx, const SheetHexes& s, const Levels& lv, const std::unordered_map<HexId, std::array<Gluing, 6>>& old,
-                const std::unordered_map<HexId, std::vector<HexId>>& layers) {
-  auto layerHex = [&](HexId h, int j) { return j == 0 ? h : layers.at(h)[size_t(j - 1)]; };
+// `old`: per place, the gluings of its hex before the edit; `layers`: per place, its new hexes
+// (layers 1..k-1, k-1 per place).
+void glueLayers(Complex& cx, const SheetHexes& s, const Levels& lv, const std::vector<std::array<Gluing, 6>>& old,
+                const std::vector<HexId>& layers) {
+  auto layerHex = [&](HexId h, int j) {
+    return j == 0 ? h : layers[size_t(lv.k - 1) * size_t(lv.place.at(h)) + size_t(j - 1)];
+  };
   for (HexId h : s.hexes) {
     const int a = s.axisOf(h);
     const int upper = lv.up.at(h) > 0 ? 2 * a + 1 : 2 * a;  // the face of a layer toward the next one
     for (int j = 0; j + 1 < lv.k; ++j) glueByVertices(cx, layerHex(h, j), upper, layerHex(h, j + 1), oppositeFace(upper));
     for (int f = 0; f < 6; ++f) {
-      const Gluing g = old.at(h)[size_t(f)];
+      const Gluing g = old[size_t(lv.place.at(h))][size_t(f)];
       const bool across = axisOfFace(f) == a, inSheet = !g.boundary() && s.axisOf(g.hex) >= 0;
       if (g.boundary() || (inSheet && QuadSide{g.hex, g.face} < QuadSide{h, f})) continue;  // each gluing once
       if (!across) {
@@ -121,11 +134,12 @@ OpResult sheetDice(Complex& cx, EdgeRef e, Count count) {
   auto up = sheetUp(cx, sheet);
   if (up.empty()) refuse(op, "one-sided", "the sheet through " + entityName(e) + " is one-sided: its layers would not stay apart");
   Levels lv = levelsOf(cx, sheet, k, std::move(up));
-  std::unordered_map<HexId, std::array<Gluing, 6>> old;
+  std::vector<std::array<Gluing, 6>> old(sheet.hexes.size());  // per place (Levels::place)
   size_t gluings = 0, sideGluings = 0;  // counted twice (a gluing inside the sheet: once from each side)
-  for (HexId h : sheet.hexes)
+  for (size_t i = 0; i < sheet.hexes.size(); ++i)
     for (int f = 0; f < 6; ++f) {
-      const Gluing g = old[h][size_t(f)] = cx.gluing(h, f);
+      const HexId h = sheet.hexes[i];
+      const Gluing g = old[i][size_t(f)] = cx.gluing(h, f);
       if (g.boundary()) continue;
       const size_t w = sheet.axisOf(g.hex) >= 0 ? 1 : 2;
       gluings += w;
@@ -135,7 +149,7 @@ OpResult sheetDice(Complex& cx, EdgeRef e, Count count) {
   // other), the new vertices and hexes, the old hexes' corners.
   const size_t n = sheet.hexes.size(), layersBetween = size_t(k - 1);
   const size_t edits = gluings / 2 + (gluings - sideGluings) / 2 + size_t(k) * sideGluings / 2 + layersBetween * n +
-                       layersBetween * lv.edge.size() + 8 * n + layersBetween * n;
+                       layersBetween * lv.edges() + 8 * n + layersBetween * n;
 
   Transaction tx(cx, edits);
   OpResult res;
@@ -143,13 +157,14 @@ OpResult sheetDice(Complex& cx, EdgeRef e, Count count) {
   for (HexId h : sheet.hexes)
     for (int f = 0; f < 6; ++f) cx.unglue(h, f);
   createLevelVertices(cx, lv, res);
-  std::unordered_map<HexId, std::vector<HexId>> layers;
+  std::vector<HexId> layers;  // per place, layers 1..k-1
+  layers.reserve(layersBetween * n);
   for (HexId h : sheet.hexes) {  // the old hex becomes layer 0; layers 1..k-1 are new
     const auto v0 = layerVertices(sheet, lv, h, 0);
     for (int c = 0; c < 8; ++c) cx.setCorner(h, c, v0[size_t(c)]);
     for (int j = 1; j < k; ++j) {
-      layers[h].push_back(cx.addHex(layerVertices(sheet, lv, h, j)));
-      res.createdHexes.push_back(layers[h].back());
+      layers.push_back(cx.addHex(layerVertices(sheet, lv, h, j)));
+      res.createdHexes.push_back(layers.back());
     }
   }
   glueLayers(cx, sheet, lv, old, layers);
