@@ -20,7 +20,6 @@ struct Surface {
   std::vector<QuadSide> named;
   IdMap<uint8_t> walls;  // per hex: its faces that are a side of a quad of the surface (bit f)
   std::vector<VertexId> vertices;
-  IdMap<int32_t> index;  // vertex -> its place in `vertices`
   std::vector<std::array<int32_t, 4>> placeAt;  // per quad: the place of its vertex at each position
   std::vector<std::vector<std::pair<size_t, int>>> quadsAt;  // per vertex: (quad, position in its named side)
   bool isWall(QuadSide s) const { return walls.get(s.hex, 0) >> s.face & 1; }
@@ -42,17 +41,17 @@ Surface surfaceOf(const Complex& cx, const std::vector<QuadSide>& sides, const s
   std::sort(seen.begin(), seen.end());
   if (auto d = std::adjacent_find(seen.begin(), seen.end()); d != seen.end())
     refuse(op, "duplicate", "quad " + entityName(*d) + " is named twice");
-  s.index.reserve(s.named.size() + 64);
+  IdMap<int32_t> place(s.named.size() + 64);  // vertex -> its place in s.vertices
+  s.placeAt.resize(s.named.size());
   for (size_t i = 0; i < s.named.size(); ++i)
     for (int p = 0; p < 4; ++p) {
       const VertexId v = cx.vertex(s.named[i].hex, kFaceCorners[size_t(s.named[i].face)][size_t(p)]);
-      auto [at, fresh] = s.index.emplace(v, int32_t(s.vertices.size()));
+      auto [at, fresh] = place.emplace(v, int32_t(s.vertices.size()));
       if (fresh) {
         s.vertices.push_back(v);
         s.quadsAt.emplace_back();
       }
       s.quadsAt[size_t(*at)].push_back({i, p});
-      if (p == 0) s.placeAt.emplace_back();
       s.placeAt[i][size_t(p)] = *at;
     }
   return s;
