@@ -344,10 +344,10 @@ std::vector<VertexId> Complex::verticesWithEditedStars() const {
     });
     return out;
   }
-  thread_local std::vector<uint32_t> stampsOf;
+  thread_local HugeVector<uint32_t> stampsOf;
   thread_local uint32_t epochOf = 0;
-  std::vector<uint32_t>& stamps = stampsOf;  // (one thread-local lookup, not one per vertex)
-  if (stamps.size() < size_t(vertexCapacity())) stamps.resize(size_t(vertexCapacity()), 0);
+  HugeVector<uint32_t>& stamps = stampsOf;  // (one thread-local lookup, not one per vertex)
+  growHuge(stamps, size_t(vertexCapacity()), 0u);
   uint32_t epoch = ++epochOf;
   if (epoch == 0) {  // wrapped: every old stamp could match again
     std::fill(stamps.begin(), stamps.end(), 0);
