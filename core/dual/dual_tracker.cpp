@@ -12,33 +12,13 @@
 
 #include "complex/huge_pages.hpp"
 #include "complex/id_map.hpp"
+#include "complex/sorted_ids.hpp"
 #include "dual/tracker/slots.hpp"
 
 namespace hexdual {
 using namespace tracker;
 
 namespace {
-
-// Ids ascending, once each. A long list against its id range (a sheet operation logs hundreds of
-// thousands of edits) is put in order by a bitmap over the range, in linear time; a short one is
-// sorted.
-void sortUniqueIds(std::vector<HexId>& ids) {
-  size_t words = 0;  // of the bitmap, when it pays: a long list, ids >= 0, a range at most 256 ids per entry
-  if (ids.size() >= 4096) {
-    const auto [lo, hi] = std::minmax_element(ids.begin(), ids.end());
-    if (*lo >= 0 && size_t(*hi) / 64 + 1 <= 4 * ids.size()) words = size_t(*hi) / 64 + 1;
-  }
-  if (!words) {
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    return;
-  }
-  std::vector<uint64_t> bits(words, 0);
-  for (HexId h : ids) bits[size_t(h) / 64] |= uint64_t(1) << (size_t(h) % 64);
-  ids.clear();
-  for (size_t w = 0; w < words; ++w)
-    for (uint64_t b = bits[w]; b; b &= b - 1) ids.push_back(HexId(64 * w + size_t(__builtin_ctzll(b))));
-}
 
 // The hexes an edit touches, each with what it marks (see edgesChangedBy): mark(hex, bits) once
 // per hex, the same rule for touchedHexes, edgesChangedBy and touchedHexesWithEdges.

@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <unordered_set>
 
 #include "complex/manifold.hpp"
+#include "complex/sorted_ids.hpp"
 #include "dual/dual.hpp"
 #include "ops/support.hpp"
 
@@ -207,23 +207,6 @@ bool outsideConnected(const StarWalk& st, const Removed& removed, Corners& outsi
 
 }  // namespace
 
-namespace {
-// Ids (each below `bound`) ascending, each once. Many of them (a sheet's: tens of thousands) go
-// through a bitmap of the id range, one pass each way, instead of a sort: a 100³ sheet extraction's
-// 40,000 renamed corners lie in 20,000 hexes of a million.
-void sortUnique(std::vector<int32_t>& ids, size_t bound) {
-  if (ids.size() < 1024 || bound > 64 * ids.size() * 64) {
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    return;
-  }
-  std::vector<uint64_t> bits((bound + 63) / 64, 0);
-  for (int32_t id : ids) bits[size_t(id) >> 6] |= uint64_t(1) << (size_t(id) & 63);
-  ids.clear();
-  for (size_t w = 0; w < bits.size(); ++w)
-    for (uint64_t b = bits[w]; b; b &= b - 1) ids.push_back(int32_t(64 * w + size_t(std::countr_zero(b))));
-}
-}  // namespace
 
 VertexMerges planMerges(const Complex& cx, const MergeClasses& classes, const std::function<bool(HexId)>& removed) {
   VertexMerges m;
@@ -272,7 +255,7 @@ VertexMerges planMerges(const Complex& cx, const MergeClasses& classes, const st
   }
   std::sort(m.dropped.begin(), m.dropped.end());
   for (auto [h, c] : m.renamed) m.renamedHexes.push_back(h);
-  sortUnique(m.renamedHexes, size_t(cx.hexCapacity()));
+  sortUniqueIds(m.renamedHexes);
   return m;
 }
 

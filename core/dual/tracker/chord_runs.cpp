@@ -11,6 +11,7 @@
 #include <algorithm>
 
 #include "complex/huge_pages.hpp"
+#include "complex/sorted_ids.hpp"
 #include "dual/dual_tracker.hpp"
 #include "dual/tracker/slots.hpp"
 
@@ -159,8 +160,7 @@ void DualTracker::cutLabel(int32_t label, int32_t lo, int32_t hi, int32_t chord,
 
 // Labels that lost places in this update and lie in no chord any more: no slot carries them.
 void DualTracker::releaseLabels() {
-  std::sort(dropped_.begin(), dropped_.end());
-  dropped_.erase(std::unique(dropped_.begin(), dropped_.end()), dropped_.end());
+  sortUniqueIds(dropped_);  // (a sheet extraction drops thousands: by bitmap)
   for (int32_t l : dropped_)
     if (dual_.labelCuts[size_t(l)].empty()) {
       // A short run keeps its room for the label's next use (no allocation per cut); a long one is freed.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "complex/complex.hpp"
+#include "complex/sorted_ids.hpp"
 #include "dual/dual.hpp"
 
 namespace hexdual::tracker {
@@ -17,8 +18,7 @@ inline std::vector<int32_t> sheetIdsThrough(const Dual& d, const std::vector<Hex
   for (HexId h : hexes)
     for (int a = 0; a < 3; ++a)
       if (d.sheetAt(h, a) >= 0) ids.push_back(d.sheetAt(h, a));
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  sortUniqueIds(ids);
   return ids;
 }
 
