@@ -59,8 +59,8 @@ Complex Complex::block(int a, int b, int c) {
 }
 
 VertexId Complex::addVertex(Vec3 p) {
-  pushGrown(pos_, p);
-  pushGrown(refs_, 0);
+  pos_.push_back(p);
+  refs_.push_back(0);
   ++revision_;
   record({JournalEntry::AddVertex, VertexId(pos_.size() - 1), 0, 0, {}});
   return VertexId(pos_.size() - 1);
@@ -70,11 +70,11 @@ HexId Complex::addHex(const std::array<VertexId, 8>& v) {
   for (VertexId x : v)
     if (x < 0 || x >= (VertexId)pos_.size()) throw Error("addHex: vertex " + std::to_string(x) + " does not exist");
   if (alive_.size() >= size_t(kMaxHexes)) throw Error("addHex: more than 2^26 hexes");
-  pushGrown(verts_, v);
+  verts_.push_back(v);
   std::array<uint32_t, 6> g;
   g.fill(kBoundary);
-  pushGrown(glue_, g);
-  pushGrown(alive_, uint8_t(1));
+  glue_.push_back(g);
+  alive_.push_back(1);
   for (VertexId x : v)
     if (refs_[x]++ == 0) ++numVertices_;
   ++numHexes_;

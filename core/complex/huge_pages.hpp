@@ -81,15 +81,6 @@ void growHuge(std::vector<T, A>& v, size_t n, const T& x = T()) {
   v.resize(n, x);
 }
 
-// v.push_back(x) for an array that grows with the complex (addHex, addVertex): when full it takes
-// grownCapacity's room, so a 1M-hex mesh past its headroom grows by an eighth, not by doubling (a
-// 36 MB corner array re-copied to 72 MB, every new page cleared, for a few thousand new hexes).
-template <class T, class A>
-void pushGrown(std::vector<T, A>& v, const T& x) {
-  if (v.size() == v.capacity()) reserveHuge(v, grownCapacity(v.size() + 1, v.capacity()));
-  v.push_back(x);
-}
-
 // Room for as many new entries as an array has, reserved before it is filled: for the arrays kept
 // per chord and per chord label, which an edited mesh grows (a pillow adds two closed chords, a hex
 // push one, a cut chord a label). Reserved address space is not memory until written, so the room
