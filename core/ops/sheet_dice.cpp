@@ -48,7 +48,9 @@ Levels levelsOf(const Complex& cx, const SheetHexes& sheet, int k, IdMap<int8_t>
   lv.up = std::move(up);
   lv.place.reserve(sheet.hexes.size());
   lv.edgeOf.reserve(sheet.hexes.size());
-  std::unordered_map<int64_t, int32_t> index;
+  // Class edge by its canonical incidence, keyed hex * 16 + edge (below 2^30: at most 2^26 hexes).
+  static_assert(Complex::kMaxHexes * 16 <= int64_t(1) << 31);
+  IdMap<int32_t> index(2 * sheet.hexes.size());
   IdMap<int32_t> endOf(2 * sheet.hexes.size());
   auto end = [&](VertexId v, int32_t e) {
     auto [at, fresh] = endOf.emplace(v, e);
@@ -60,7 +62,7 @@ Levels levelsOf(const Complex& cx, const SheetHexes& sheet, int k, IdMap<int8_t>
     std::array<int32_t, 4> ids{};
     for (int i = 0; i < 4; ++i) {
       const EdgeRef key = cx.canonical(EdgeRef{h, 4 * a + i});
-      auto [it, fresh] = index.emplace(int64_t(key.hex) * 16 + key.edge, int32_t(lv.edges()));
+      auto [at, fresh] = index.emplace(key.hex * 16 + key.edge, int32_t(lv.edges()));
       if (fresh) {
         VertexId low = cx.vertex(h, kEdgeCorners[size_t(4 * a + i)][0]), high = cx.vertex(h, kEdgeCorners[size_t(4 * a + i)][1]);
         if (lv.up.at(h) < 0) std::swap(low, high);
@@ -70,7 +72,7 @@ Levels levelsOf(const Complex& cx, const SheetHexes& sheet, int k, IdMap<int8_t>
         lv.vertex.insert(lv.vertex.end(), size_t(k) - 1, -1);
         lv.vertex.push_back(high);
       }
-      ids[size_t(i)] = it->second;
+      ids[size_t(i)] = *at;
     }
     lv.edgeOf.push_back(ids);
   }
@@ -104,12 +106,13 @@ void glueLayers(Complex& cx, const SheetHexes& s, const Levels& lv, const std::v
   auto layerHex = [&](HexId h, int j) {
     return j == 0 ? h : layers[size_t(lv.k - 1) * size_t(lv.place.at(h)) + size_t(j - 1)];
   };
-  for (HexId h : s.hexes) {
+  for (size_t i = 0; i < s.hexes.size(); ++i) {  // i: the hex's place (Levels::place)
+    const HexId h = s.hexes[i];
     const int a = s.axisOf(h);
     const int upper = lv.up.at(h) > 0 ? 2 * a + 1 : 2 * a;  // the face of a layer toward the next one
     for (int j = 0; j + 1 < lv.k; ++j) glueByVertices(cx, layerHex(h, j), upper, layerHex(h, j + 1), oppositeFace(upper));
     for (int f = 0; f < 6; ++f) {
-      const Gluing g = old[size_t(lv.place.at(h))][size_t(f)];
+      const Gluing g = old[i][size_t(f)];
       const bool across = axisOfFace(f) == a, inSheet = !g.boundary() && s.axisOf(g.hex) >= 0;
       if (g.boundary() || (inSheet && QuadSide{g.hex, g.face} < QuadSide{h, f})) continue;  // each gluing once
       if (!across) {
