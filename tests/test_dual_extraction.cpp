@@ -125,7 +125,7 @@ std::vector<int32_t> referenceChords(const Complex& cx, Dual& d) {
   std::vector<int32_t> order(walks.size()), newId(walks.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = int32_t(i);
   std::sort(order.begin(), order.end(), [&](int32_t p, int32_t q) { return walks[size_t(p)].smallest < walks[size_t(q)].smallest; });
-  std::vector<Chord> sorted(order.size());
+  decltype(d.chords) sorted(order.size());
   for (size_t r = 0; r < order.size(); ++r) {
     newId[size_t(order[r])] = int32_t(r);
     sorted[r] = std::move(d.chords[size_t(order[r])]);

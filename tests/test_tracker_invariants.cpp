@@ -137,6 +137,29 @@ TEST_CASE("dual tracker: checkInvariants holds along random candidate sequences"
   CHECK(applied >= 30);
 }
 
+TEST_CASE("dual tracker: new sheets fit the room reserved at construction (the sheet arrays are not re-copied)") {
+  // A pillow adds a sheet and two chords; the tracker reserves room for half as many new sheets as
+  // the mesh has chords, so that an edit session does not re-copy every sheet (and page-fault fresh
+  // memory) each time the list doubles. 40 pillows on a 6^3 grid (18 sheets, 108 chords): room for 136.
+  Complex cx = makeGrid(6, 6, 6);
+  DualTracker tracker(cx);
+  const Sheet* before = tracker.dual().sheets.data();
+  const size_t sheets0 = tracker.dual().sheets.size();
+  REQUIRE(sheets0 == 18);
+  int pillows = 0;
+  for (HexId h = 0; h < cx.hexCapacity() && pillows < 40; h += 5) {
+    if (!cx.isHex(h)) continue;
+    std::optional<OpResult> r = tryApplyStep(cx, "pillow h" + std::to_string(h) + "f" + std::to_string(h % 6));
+    if (!r) continue;
+    tracker.update(cx, r->edits, keepsSheetTopology(*r));
+    ++pillows;
+  }
+  REQUIRE(pillows == 40);
+  CHECK(tracker.dual().sheets.size() == sheets0 + 40);  // a minimal pillow's sheet is a new sphere
+  CHECK(tracker.dual().sheets.data() == before);        // fails when the list re-allocated on the way
+  CHECK_NOTHROW(tracker.checkInvariants(cx));
+}
+
 TEST_CASE("dual tracker: checkInvariants names the invariant a broken state breaks") {
   using A = DualTrackerTestAccess;
   Complex cx = makeGrid(4, 4, 4);

@@ -192,13 +192,15 @@ struct Chord {
 };
 
 struct Dual {
-  std::vector<Sheet> sheets;
-  std::vector<Chord> chords;
+  // In whole huge pages from 1 MiB up, like the per-hex arrays: a 1M-hex mesh has 30,000 chords, and
+  // an edit session grows both lists (DualTracker reserves room for new ones at construction).
+  HugeVector<Sheet> sheets;
+  HugeVector<Chord> chords;
   // Per hex id (capacity), per axis: a sheet label, -1 for tombstones; labelSheet names each label's
   // sheet. Extraction gives every sheet one label equal to its id; DualTracker merges two sheets by
   // re-pointing the labels of one instead of re-writing its slots. Read sheet ids with sheetAt().
   HugeVector<std::array<int32_t, 3>> sheetLabel;
-  std::vector<int32_t> labelSheet;
+  HugeVector<int32_t> labelSheet;
   // Per hex id (capacity), per axis: a chord LABEL, -1 for tombstones.
   // Extraction gives every chord one label equal to its id. DualTracker lists a chord as pieces of
   // labels' runs (the slots a label was made with, by place: chordPlace), so joining or cutting

@@ -95,6 +95,17 @@ DualTracker::DualTracker(const Complex& cx) {
   flooder_.signs() = std::move(extras.slotSigns);
   edgeMarks_ = std::move(extras.edgeMarks);
   const size_t sheets = dual_.sheets.size();
+  // Room for new sheets and labels, as for chords below: a pillow adds a sheet and two chords, so
+  // the per-sheet and per-label arrays get room for half as many new entries as there are chords.
+  // Without it a 1M-hex mesh's edit session re-copied its 300 sheets, then thousands, into fresh
+  // memory every time they doubled (hundreds of page faults at ~10 µs each on a VM).
+  const size_t sheetRoom = sheets + dual_.chords.size() / 2 + 64;
+  reserveHuge(dual_.sheets, sheetRoom);
+  reserveHuge(dual_.labelSheet, sheetRoom);
+  reserveHuge(labels_, sheetRoom);
+  reserveHuge(labelSlots_, sheetRoom);
+  reserveHuge(labelFlip_, sheetRoom);
+  reserveHuge(selfPairs_, sheetRoom);
   labels_.resize(sheets);
   labelSlots_.resize(sheets);
   labelFlip_.assign(sheets, 0);
@@ -132,6 +143,7 @@ DualTracker::DualTracker(const Complex& cx) {
     dual_.labelCuts[c].assign(1, Dual::ChordCut{0, len, int32_t(c)});
     chordSelf_[c] = ch.selfIntersecting;
   }
+  reserveHuge(delta_, sheetRoom);
   delta_.assign(dual_.sheets.size(), 0);
   growPerHexArrays(size_t(cx.hexCapacity()));
 }

@@ -36,7 +36,7 @@ inline int chooseId(const std::vector<int32_t>& previous, std::vector<int>& take
 // gives the label its slots get. Sheets and chords alike.
 template <class Entity, class Walk, class Unchanged, class LabelOf>
 size_t relabel(const Complex& cx, const std::vector<HexId>& touched, HugeVector<std::array<int32_t, 3>>& of,
-               std::vector<Entity>& list, std::vector<int32_t> old, Walk walk, std::vector<int>& created,
+               HugeVector<Entity>& list, std::vector<int32_t> old, Walk walk, std::vector<int>& created,
                std::vector<int>& changed, std::vector<int>& removed, Unchanged unchanged, LabelOf labelOf) {
   size_t visited = 0;
   size_t kept = 0;
