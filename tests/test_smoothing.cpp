@@ -5,6 +5,7 @@
 // newly inverted than the operation's own placement.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <random>
 #include <set>
 
@@ -433,6 +434,26 @@ TEST_CASE("smoothing never leaves more hexes newly inverted than the operation's
   CHECK(e.kept == 3);  // three times every smoothed placement left more hexes newly inverted: the guard kept the operation's
 }
 
+TEST_CASE("smoothing: two free vertices of a hex whose six others are fixed are not closed onto each other") {
+  // P_joint, a hex push at a quad touching the curved boundary: the new hex 2015 has six boundary
+  // vertices and two free ones (v2713, v2714). The sweeps, a vertex at a time, moved the two onto
+  // the same point (the corners between them at zero, minimum SJ -0.084); the restart from the
+  // faces' parallelograms places each across its boundary face's parallelogram and untangles it.
+  const auto file = devMeshDir() / "P_joint.vtk.gz";
+  if (!std::filesystem::exists(file)) {
+    MESSAGE("skipped: no development-set meshes at " << devMeshDir().string());
+    return;
+  }
+  Complex cx = readDevMesh(file);
+  OpResult off = applyStep(cx, "hexpush h1841f0", kMeasure);
+  CHECK(std::count(off.quality.inverted.begin(), off.quality.inverted.end(), 2015) == 1);  // the operation's own placement
+  cx.undo(off.edits);
+  OpResult s = applyStep(cx, "hexpush h1841f0", kSmoothStep);
+  CHECK(s.quality.inverted.empty());
+  CHECK(s.quality.afterRegular > 0);
+  CHECK(cx.position(2713).y != cx.position(2714).y);
+}
+
 TEST_CASE("smoothing: hexes a step re-corners count as newly inverted even if inverted before (a face split's)") {
   // After the face collapse its four hexes are degenerate by construction (inverted, not counted);
   // the face split makes them regular again, still inverted at the collapse's positions: the
@@ -453,6 +474,8 @@ TEST_CASE("smoothing: hexes a step re-corners count as newly inverted even if in
   cx.undo(off.edits);
   OpResult s = applyStep(cx, *c.inverse, kSmoothStep);
   CHECK(s.quality.inverted.empty());
-  CHECK(s.quality.afterRegular > 0.1);
+  // 0.14 while the collapse's smoothing left one of its counted hexes tangled; since the restart
+  // from the faces' parallelograms untangles them all there, the split starts elsewhere: 0.062.
+  CHECK(s.quality.afterRegular > 0.05);
   CHECK(!s.quality.kept);
 }

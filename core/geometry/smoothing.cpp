@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "complex/hex_tables.hpp"
+
 namespace hexdual {
 
 namespace {
@@ -175,10 +177,38 @@ int attempt(SmoothingRegion& r, bool maxMinFirst, BestSeen& best) {
   return n;
 }
 
+// A third start: each free vertex at the mean, over the faces of its hexes whose other three
+// vertices are not free, of the point completing the face as a parallelogram (the face's two
+// neighbours of the corner, less the opposite one); a vertex with no such face keeps its start.
+// The sweeps move one vertex at a time, so two free vertices of a hex whose six others are fixed
+// can close on each other, every corner between them going to zero and none above it (a hex push
+// whose new hex has two boundary quads on a curved boundary: P_joint); from here they start apart.
+std::vector<Vec3> parallelogramStart(const SmoothingRegion& r, const std::vector<Vec3>& start) {
+  std::vector<Vec3> out = start;
+  for (size_t i = 0; i < r.free.size(); ++i) {
+    Vec3 sum;
+    int n = 0;
+    for (auto [hx, c] : r.incidence[i])
+      for (const auto& face : tables::kFaceCorners) {
+        int k = 0;
+        while (k < 4 && face[size_t(k)] != c) ++k;
+        if (k == 4) continue;
+        const int32_t prev = r.corners[size_t(hx)][size_t(face[size_t((k + 3) & 3)])];
+        const int32_t next = r.corners[size_t(hx)][size_t(face[size_t((k + 1) & 3)])];
+        const int32_t opposite = r.corners[size_t(hx)][size_t(face[size_t((k + 2) & 3)])];
+        if (prev >= 0 || next >= 0 || opposite >= 0) continue;  // a free vertex among them
+        sum = sum + r.at(prev) + r.at(next) - r.at(opposite);
+        ++n;
+      }
+    if (n) out[i] = (1.0 / n) * sum;
+  }
+  return out;
+}
+
 }  // namespace
 
 SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free, const std::vector<HexId>& near,
-                              int64_t budget) {
+                              int64_t budget, bool validBefore) {
   std::sort(free.begin(), free.end(), [](const FreeVertex& a, const FreeVertex& b) { return a.vertex < b.vertex; });
   SmoothingRegion r = buildSmoothingRegion(cx, free, near);
   r.budget = budget;
@@ -191,6 +221,17 @@ SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free, const s
   if (!(minCornerDeterminant(r) > 0)) {  // still tangled: again from the start, max-min untangling first
     r.pos = start;
     st.sweeps += attempt(r, true, best);
+    r.pos = best.pos;
+  }
+  // Still tangled: once more from the faces' parallelograms, kept only when it untangles every
+  // counted hex; only where no hex around was inverted before the step (on a mesh tangled already,
+  // ECR_block_stresstest_in, it traded the counted hexes for new inversions and took the budget of
+  // the wider rings).
+  if (validBefore && !(minCornerDeterminant(r) > 0)) {
+    BestSeen restart;
+    r.pos = parallelogramStart(r, start);
+    st.sweeps += attempt(r, false, restart);
+    if (restart.outcome.inverted == 0 && best.outcome.inverted > 0) best = restart;
     r.pos = best.pos;
   }
   if (before.betterThan(best.outcome)) r.pos = start, best.outcome = before;  // never worse than the operation's own placement

@@ -7,7 +7,8 @@
 // barrier so vertices can pass through it (untangling); once none is, delta = 0 and the energy is a
 // barrier no step crosses. When the sweeps stall tangled, Freitag & Plassmann's max-min untangling
 // (max_min.hpp) runs and the sweeps again; failing that, the whole attempt again from the start with
-// the max-min first; the best positions any phase reached are kept. Nothing else moves. Plain
+// the max-min first; failing that, once more from the faces' parallelogram completions (kept only
+// when it untangles every counted hex); the best positions any phase reached are kept. Nothing else moves. Plain
 // scalar arithmetic in a fixed order: the same bits natively and in wasm.
 #pragma once
 #include <cstdint>
@@ -30,7 +31,9 @@ struct SmoothingStats {
 // more counted hexes inverted than there were, nothing moves.
 // `near` (ascending): the hexes sharing a vertex with a hex the step touched (buildSmoothingRegion).
 // Sweeps stop once `budget` corner energies were evaluated (a bound on the worst case).
+// `validBefore`: no hex around the free vertices was inverted before the step; only then does a
+// tangled result get the third start (from the faces' parallelograms).
 SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free, const std::vector<HexId>& near,
-                              int64_t budget);
+                              int64_t budget, bool validBefore = false);
 
 }  // namespace hexdual

@@ -94,7 +94,7 @@ RingResult smoothRing(Complex& cx, const std::vector<HexId>& hexes, const std::v
   for (HexId h : res.around)
     if (cx.isHex(h) && !before.touched(h) && before.invertedBefore(cx, h)) already.push_back(h);
   cx.beginTransaction();
-  const SmoothingStats st = smoothVertices(cx, free, near, kStepEvaluationBudget - q.evaluations);
+  const SmoothingStats st = smoothVertices(cx, free, near, kStepEvaluationBudget - q.evaluations, already.empty());
   edits = cx.commitTransaction();
   q.evaluations += st.evaluations;
   for (VertexId v : st.moved) res.moves.push_back({v, cx.position(v)});
