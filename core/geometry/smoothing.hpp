@@ -8,8 +8,8 @@
 // barrier no step crosses. When the sweeps stall tangled, Freitag & Plassmann's max-min untangling
 // (max_min.hpp) runs and the sweeps again; failing that, the whole attempt again from the start with
 // the max-min first; failing that, once more from the faces' parallelogram completions (kept only
-// when it untangles every counted hex); the best positions any phase reached are kept. Nothing else moves. Plain
-// scalar arithmetic in a fixed order: the same bits natively and in wasm.
+// when it untangles every counted hex); the best positions any phase reached are kept. Nothing
+// else moves. Plain scalar arithmetic in a fixed order: the same bits natively and in wasm.
 #pragma once
 #include <cstdint>
 #include <vector>
