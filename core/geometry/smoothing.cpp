@@ -189,13 +189,13 @@ std::vector<Vec3> parallelogramStart(const SmoothingRegion& r, const std::vector
     Vec3 sum;
     int n = 0;
     for (auto [hx, c] : r.incidence[i])
-      for (const auto& face : tables::kFaceCorners) {
-        int k = 0;
-        while (k < 4 && face[size_t(k)] != c) ++k;
-        if (k == 4) continue;
-        const int32_t prev = r.corners[size_t(hx)][size_t(face[size_t((k + 3) & 3)])];
-        const int32_t next = r.corners[size_t(hx)][size_t(face[size_t((k + 1) & 3)])];
-        const int32_t opposite = r.corners[size_t(hx)][size_t(face[size_t((k + 2) & 3)])];
+      for (int f : tables::facesOfCorner(c)) {
+        const auto& face = tables::kFaceCorners[size_t(f)];
+        const int k = tables::positionInFace(f, c);
+        const auto& ref = r.corners[size_t(hx)];
+        const int32_t prev = ref[size_t(face[size_t((k + 3) & 3)])];
+        const int32_t next = ref[size_t(face[size_t((k + 1) & 3)])];
+        const int32_t opposite = ref[size_t(face[size_t((k + 2) & 3)])];
         if (prev >= 0 || next >= 0 || opposite >= 0) continue;  // a free vertex among them
         sum = sum + r.at(prev) + r.at(next) - r.at(opposite);
         ++n;

@@ -34,6 +34,6 @@ struct SmoothingStats {
 // `validBefore`: no hex around the free vertices was inverted before the step; only then does a
 // tangled result get the third start (from the faces' parallelograms).
 SmoothingStats smoothVertices(Complex& cx, std::vector<FreeVertex> free, const std::vector<HexId>& near,
-                              int64_t budget, bool validBefore = false);
+                              int64_t budget, bool validBefore);
 
 }  // namespace hexdual
