@@ -145,6 +145,12 @@ class Complex {
     return {HexId(g >> 6), int((g >> 3) & 7), int(g & 7)};
   }
   Gluing gluing(QuadSide s) const { return gluing(s.hex, s.face); }
+  // A hex's six gluings as stored: the neighbour << 6 | its face << 3 | the orientation, or
+  // kBoundaryWord on a boundary side. The low six bits are the (face, orientation) part of the
+  // hex tables' step indices (hex_tables.hpp: edgeStepIndex, crossingIndex), so the extraction's
+  // per-hex passes index the tables from a word without decoding it.
+  static constexpr uint32_t kBoundaryWord = 0xFFFFFFFFu;
+  const std::array<uint32_t, 6>& gluingWords(HexId h) const { return glue_[size_t(h)]; }
   bool isBoundary(QuadSide s) const { return glue_[s.hex][s.face] == kBoundary; }
   // The canonical side of a quad: the smaller of its two sides.
   QuadSide canonical(QuadSide s) const;
@@ -243,7 +249,7 @@ class Complex {
   size_t memoryBytes() const;
 
  private:
-  static constexpr uint32_t kBoundary = 0xFFFFFFFFu;
+  static constexpr uint32_t kBoundary = kBoundaryWord;
   static uint32_t pack(HexId h, int f, int o) { return (uint32_t(h) << 6) | uint32_t(f << 3) | uint32_t(o); }
   // The check inline, the message out of line: glue() runs it for every quad a grid or a file joins.
   void requireHex(HexId h, const char* what) const {

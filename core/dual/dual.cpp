@@ -45,6 +45,15 @@ constexpr std::array<uint8_t, 16> kLowestBit{0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0,
 constexpr std::array<unsigned, 3> kParallelFaceMask{0b111100u, 0b110011u, 0b001111u};
 
 size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
+
+// A packed gluing word (Complex::gluingWords): its neighbour, its neighbour's face, and its low six
+// bits, which are the last two factors of a step index (the neighbour's face and the orientation):
+// the tables are indexed from the word without decoding it.
+HexId hexOf(uint32_t w) { return HexId(w >> 6); }
+int faceOf(uint32_t w) { return int((w >> 3) & 7u); }
+size_t faceOrient(uint32_t w) { return size_t(w & 63u); }
+static_assert(edgeStepIndex(7, 2, 5, 3) == edgeStepIndex(7, 2, 0, 0) + ((5 << 3) | 3));
+static_assert(crossingIndex(4, 1, 5, 3) == crossingIndex(4, 1, 0, 0) + ((5 << 3) | 3));
 // A per-hex array of 3 values read as one flat per-slot array (slotIndex).
 int32_t* flat(HugeVector<std::array<int32_t, 3>>& v) { return v.empty() ? nullptr : v[0].data(); }
 
@@ -387,14 +396,16 @@ void uniteChordSlots(uint32_t* link, uint32_t a, uint32_t b) {
   uint32_t* chordLink = reinterpret_cast<uint32_t*>(flat(d.chordLabel));
   SheetUnionFind uf(link);
   for (HexId h : cx.hexes()) {
+    const std::array<uint32_t, 6>& words = cx.gluingWords(h);
     for (int f = 0; f < 6; ++f) {
-      Gluing g = cx.gluing(h, f);
-      if (g.boundary() || g.hex < h || (g.hex == h && g.face < f)) continue;  // each glued quad once
+      const uint32_t w = words[size_t(f)];
+      const HexId g = hexOf(w);
+      if (w == Complex::kBoundaryWord || g < h || (g == h && faceOf(w) < f)) continue;  // each glued quad once
       for (int a : kParallelAxes[axisOfFace(f)]) {
-        const Crossing& c = kCrossings[size_t(crossingIndex(f, a, g.face, g.orient))];
-        uf.unite(uint32_t(slotIndex(h, a)), uint32_t(slotIndex(g.hex, c.axis)), c.sign < 0 ? 1u : 0u);
+        const Crossing& c = kCrossings[size_t(crossingIndex(f, a, 0, 0)) + faceOrient(w)];
+        uf.unite(uint32_t(slotIndex(h, a)), uint32_t(slotIndex(g, c.axis)), c.sign < 0 ? 1u : 0u);
       }
-      uniteChordSlots(chordLink, uint32_t(slotIndex(h, axisOfFace(f))), uint32_t(slotIndex(g.hex, axisOfFace(g.face))));
+      uniteChordSlots(chordLink, uint32_t(slotIndex(h, axisOfFace(f))), uint32_t(slotIndex(g, axisOfFace(faceOf(w)))));
     }
   }
 }
@@ -445,28 +456,24 @@ bool smallestIncidence(const Complex& cx, HexId h, int e, bool& closed) {
   return true;
 }
 
-// The faces of hex h glued to h itself (bit mask).
-unsigned selfGlued(const std::array<Gluing, 6>& glued, HexId h) {
-  unsigned m = 0;
-  for (int f = 0; f < 6; ++f) m |= unsigned(glued[size_t(f)].hex == h) << f;
-  return m;
-}
-
-// smallestIncidence for an edge of h whose two faces are glued to larger hexes (`glued`: h's
-// gluings): one step from each neighbour, and when both land on the same incidence the edge is a
-// 4-cycle (a structured block's interior edge) decided by that incidence alone (unless it is (h, e):
-// a 2-cycle); else the walk.
-[[gnu::always_inline]] inline bool closesAsSmallest(const Complex& cx, HexId h, int e, const std::array<Gluing, 6>& glued, bool& closed) {
+// smallestIncidence for an edge of h whose two faces are glued to larger hexes (`words`: h's
+// packed gluings): one step from each neighbour, and when both land on the same incidence the edge
+// is a 4-cycle (a structured block's interior edge) decided by that incidence alone (unless it is
+// (h, e): a 2-cycle); else the walk. Read from the packed words, so no gluing is decoded whole.
+[[gnu::always_inline]] inline bool closesAsSmallest(const Complex& cx, HexId h, int e, const std::array<uint32_t, 6>& words, bool& closed) {
   const auto& fs = kEdgeFaces[size_t(e)];
-  const Gluing& g0 = glued[size_t(fs[0])];
-  const Gluing& g1 = glued[size_t(fs[1])];
-  const EdgeStep& s0 = kEdgeSteps[size_t(edgeStepIndex(e, fs[0], g0.face, g0.orient))];
-  const EdgeStep& s1 = kEdgeSteps[size_t(edgeStepIndex(e, fs[1], g1.face, g1.orient))];
-  EdgeRef a{g0.hex, s0.edge}, b{g1.hex, s1.edge};
-  int exitA = s0.exit, exitB = s1.exit;
-  if (cx.stepAroundEdge(a, exitA) && cx.stepAroundEdge(b, exitB) && a == b && !(a == EdgeRef{h, e})) {
-    closed = true;
-    return h < a.hex || (h == a.hex && e < a.edge);
+  const uint32_t w0 = words[size_t(fs[0])], w1 = words[size_t(fs[1])];
+  const EdgeStep& s0 = kEdgeSteps[size_t(edgeStepIndex(e, fs[0], 0, 0)) + faceOrient(w0)];
+  const EdgeStep& s1 = kEdgeSteps[size_t(edgeStepIndex(e, fs[1], 0, 0)) + faceOrient(w1)];
+  const uint32_t wa = cx.gluingWords(hexOf(w0))[size_t(s0.exit)], wb = cx.gluingWords(hexOf(w1))[size_t(s1.exit)];
+  if (wa != Complex::kBoundaryWord && wb != Complex::kBoundaryWord && hexOf(wa) == hexOf(wb)) {
+    const int ea = kEdgeSteps[size_t(edgeStepIndex(s0.edge, s0.exit, 0, 0)) + faceOrient(wa)].edge;
+    const int eb = kEdgeSteps[size_t(edgeStepIndex(s1.edge, s1.exit, 0, 0)) + faceOrient(wb)].edge;
+    const HexId a = hexOf(wa);
+    if (ea == eb && !(a == h && ea == e)) {
+      closed = true;
+      return h < a || (h == a && e < ea);
+    }
   }
   return smallestIncidence(cx, h, e, closed);
 }
@@ -511,20 +518,22 @@ template <bool kExtras>
   int8_t* sign = kExtras ? x->slotSigns.data() : nullptr;
   uint16_t* marks = kExtras ? x->edgeMarks.data() : nullptr;
   int8_t* shares = kExtras ? x->slotShares.data() : nullptr;
-  std::vector<uint16_t> loopSeen(size_t(cx.hexCapacity()), 0);
+  HugeVector<uint16_t> loopSeen(size_t(cx.hexCapacity()), 0);  // (2 MB at 1M hexes: one huge page, not 500 small ones)
   std::vector<SheetStats> stats;
   for (HexId h : cx.hexes()) {
     // Faces glued to a smaller hex: an edge on one of them is not its edge's smallest incidence.
-    unsigned boundary = 0, smaller = 0;
-    std::array<Gluing, 6> glued;
+    // Also the faces glued to h itself.
+    const std::array<uint32_t, 6>& words = cx.gluingWords(h);
+    unsigned boundary = 0, smaller = 0, self = 0;
     for (int f = 0; f < 6; ++f) {
-      const Gluing g = glued[size_t(f)] = cx.gluing(h, f);
-      boundary |= unsigned(g.boundary()) << f;
-      smaller |= unsigned(!g.boundary() && g.hex <= h) << f;  // itself: decided by the walk
+      const uint32_t w = words[size_t(f)];
+      const bool onBoundary = w == Complex::kBoundaryWord;
+      boundary |= unsigned(onBoundary) << f;
+      smaller |= unsigned(!onBoundary && hexOf(w) <= h) << f;  // itself: decided by the walk
+      self |= unsigned(!onBoundary && hexOf(w) == h) << f;
     }
     labelChords(h, boundary, chordOf, plan);
     // An edge on no face glued to a smaller hex, or on one glued to h itself (decided by the walk).
-    const unsigned self = selfGlued(glued, h);
     const unsigned candidates = kEdgesOffFaces[smaller] | (self & smaller ? 0xFFFu & ~kEdgesOffFaces[self & smaller] : 0u);
     for (int a = 0; a < 3; ++a) {
       const size_t i = slotIndex(h, a);
@@ -540,25 +549,26 @@ template <bool kExtras>
       }
       label[i] = id;
       SheetStats& st = stats[size_t(id)];
-      // The quad's four sides, on the faces parallel to the axis; boundary loops first met here.
+      // The quad's four sides, on the faces parallel to the axis (the interior ones are counted
+      // after the pass); boundary loops first met here.
       const unsigned onBoundary = boundary & kParallelFaceMask[size_t(a)];
       const int sidesOnBoundary = kNibbleBits[onBoundary & 0xFu] + kNibbleBits[onBoundary >> 4];
       ++st.slots;
-      st.interiorSides += 4 - sidesOnBoundary;
-      st.boundarySides += sidesOnBoundary;
       int share = -2 - sidesOnBoundary;
-      if (onBoundary)
+      if (onBoundary) {
+        st.boundarySides += sidesOnBoundary;
         for (int f : kParallelFaces[size_t(a)])
           if (((onBoundary >> f) & 1u) && !((loopSeen[size_t(h)] >> loopBit(f, a)) & 1u)) {
             walkBoundaryLoop(cx, h, f, a, loopSeen.data());
             ++st.loops;
           }
+      }
       // The primal edges along the axis that this incidence may be the smallest of (`candidates`).
       for (unsigned todo = (candidates >> 4 * a) & 0xFu; todo; todo &= todo - 1) {
         const int e = 4 * a + kLowestBit[todo];
         bool closed;
         const unsigned faces = kEdgeFaceMask[size_t(e)];
-        if (((smaller | boundary) & faces) ? !smallestIncidence(cx, h, e, closed) : !closesAsSmallest(cx, h, e, glued, closed))
+        if (((smaller | boundary) & faces) ? !smallestIncidence(cx, h, e, closed) : !closesAsSmallest(cx, h, e, words, closed))
           continue;
         ++st.vertices;
         if constexpr (kExtras) {
@@ -570,6 +580,7 @@ template <bool kExtras>
       if constexpr (kExtras) shares[i] = int8_t(share);
     }
   }
+  for (SheetStats& st : stats) st.interiorSides = 4 * st.slots - st.boundarySides;  // a quad has four sides
   return stats;
 }
 
@@ -633,7 +644,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
     int exit = 0;
     bool rootEnteredLow = true;
     Slot* out = nullptr;  // the chord's range in the pool
-    size_t walked = 0, size = 0;
+    size_t walked = 0, size = 0, root = 0;
   };
   constexpr int kLanes = 16;
   std::array<Lane, kLanes> lanes;
@@ -648,6 +659,7 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
     l.out = pool->data() + at[size_t(l.chord)];
     l.walked = 0;
     l.size = plan.size[size_t(l.chord)];
+    l.root = plan.root[size_t(l.chord)];
     return true;
   };
   int active = 0;
@@ -658,17 +670,18 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
     for (Lane& l : lanes) {
       if (l.chord < 0) continue;
       l.out[l.walked++] = l.cur;
-      const Gluing g = cx.gluing(l.cur.hex, l.exit);
-      if (g.boundary() || l.walked == l.size) {
+      const uint32_t w = cx.gluingWords(l.cur.hex)[size_t(l.exit)];
+      if (w == Complex::kBoundaryWord || l.walked == l.size) {
         std::fill(l.out + l.walked, l.out + l.size, Slot{});  // (a corrupt complex's short walk: no unwritten slot)
         keep(l.chord, !l.rootEnteredLow);
         l.chord = -1;
         if (!start(l)) --active;
         continue;
       }
-      l.cur = {g.hex, axisOfFace(g.face)};
-      l.exit = oppositeFace(g.face);
-      if (slotIndex(l.cur.hex, l.cur.axis) == plan.root[size_t(l.chord)]) l.rootEnteredLow = (g.face & 1) == 0;
+      const int face = faceOf(w);
+      l.cur = {hexOf(w), axisOfFace(face)};
+      l.exit = oppositeFace(face);
+      if (slotIndex(l.cur.hex, l.cur.axis) == l.root) l.rootEnteredLow = (face & 1) == 0;
     }
   std::vector<Slot> walked;
   for (size_t c = 0; c < d.chords.size(); ++c)
@@ -703,6 +716,7 @@ Dual extractDual(const Complex& cx, DualExtras* extras) {
   }
   uniteSlots(cx, d);
   ChordPlan plan;
+  plan.starts.reserve(size_t(cx.numBoundaryQuads() / 2 + 1));  // an open chord claims one of its two ends
   extractSheets(cx, d, extras, plan);
   extractChords(cx, d, extras, plan);
   labelChordsById(d);
