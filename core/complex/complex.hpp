@@ -126,6 +126,9 @@ class Complex {
 
   // ---- queries ----
   HexRange hexes() const { return HexRange(&alive_); }
+  // Every hex id's alive flag (1: a hex), for a pass over a complex that does not change meanwhile:
+  // a local span stays in registers, where HexRange reads the flags through the complex each step.
+  std::span<const uint8_t> aliveFlags() const { return {alive_.data(), alive_.size()}; }
   bool isHex(HexId h) const { return h >= 0 && h < (HexId)alive_.size() && alive_[h]; }
   bool isVertex(VertexId v) const { return v >= 0 && v < (VertexId)refs_.size() && refs_[v] > 0; }
   HexId hexCapacity() const { return (HexId)alive_.size(); }

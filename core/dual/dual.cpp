@@ -382,9 +382,10 @@ void uniteChordSlots(uint32_t* link, uint32_t a, uint32_t b) {
   const size_t n = size_t(cx.hexCapacity());
   reserveHuge(d.sheetLabel, withHeadroom(n));  // written once each (no zero-fill first)
   reserveHuge(d.chordLabel, withHeadroom(n));
+  const std::span<const uint8_t> alive = cx.aliveFlags();
   for (size_t h = 0; h < n; ++h) {
     const int32_t i = int32_t(3 * h);
-    if (cx.isHex(HexId(h))) {
+    if (alive[h]) {
       d.sheetLabel.push_back({i << 1, (i + 1) << 1, (i + 2) << 1});
       d.chordLabel.push_back({i, i + 1, i + 2});
     } else {
@@ -395,7 +396,8 @@ void uniteChordSlots(uint32_t* link, uint32_t a, uint32_t b) {
   uint32_t* link = reinterpret_cast<uint32_t*>(flat(d.sheetLabel));
   uint32_t* chordLink = reinterpret_cast<uint32_t*>(flat(d.chordLabel));
   SheetUnionFind uf(link);
-  for (HexId h : cx.hexes()) {
+  for (HexId h = 0; h < HexId(alive.size()); ++h) {
+    if (!alive[size_t(h)]) continue;
     const std::array<uint32_t, 6>& words = cx.gluingWords(h);
     for (int f = 0; f < 6; ++f) {
       const uint32_t w = words[size_t(f)];
@@ -520,7 +522,9 @@ template <bool kExtras>
   int8_t* shares = kExtras ? x->slotShares.data() : nullptr;
   HugeVector<uint16_t> loopSeen(size_t(cx.hexCapacity()), 0);  // (2 MB at 1M hexes: one huge page, not 500 small ones)
   std::vector<SheetStats> stats;
-  for (HexId h : cx.hexes()) {
+  const std::span<const uint8_t> alive = cx.aliveFlags();
+  for (HexId h = 0; h < HexId(alive.size()); ++h) {
+    if (!alive[size_t(h)]) continue;
     // Faces glued to a smaller hex: an edge on one of them is not its edge's smallest incidence.
     // Also the faces glued to h itself.
     const std::array<uint32_t, 6>& words = cx.gluingWords(h);
@@ -602,7 +606,9 @@ void extractSheets(const Complex& cx, Dual& d, DualExtras* extras, ChordPlan& pl
   const auto pool = std::make_shared<SlotPool>(at.back());
   Slot* slots = pool->data();
   std::vector<size_t> next(at.begin(), at.end() - 1);
-  for (HexId h : cx.hexes()) {
+  const std::span<const uint8_t> alive = cx.aliveFlags();
+  for (HexId h = 0; h < HexId(alive.size()); ++h) {
+    if (!alive[size_t(h)]) continue;
     const auto& l = d.sheetLabel[size_t(h)];
     if (l[0] == l[1] || l[0] == l[2]) d.sheets[size_t(l[0])].selfIntersecting = true;
     if (l[1] == l[2]) d.sheets[size_t(l[1])].selfIntersecting = true;
