@@ -1,8 +1,11 @@
 // The development-set meshes (published meshes hexdual did not make, in ../shared/meshes next to
 // the repository, or $HEXDUAL_MESHES): where they are and how to read one.
 #pragma once
+#include <doctest/doctest.h>
+
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <unistd.h>
 
@@ -33,6 +36,17 @@ inline Complex readDevMesh(const std::filesystem::path& file) {
     fs::remove(tmp);
     throw;
   }
+}
+
+// The development-set mesh `name`, or nothing (saying so) where the set is not here: the test
+// that asked returns early then.
+inline std::optional<Complex> devMeshOrSkip(const std::string& name) {
+  const auto file = devMeshDir() / name;
+  if (!std::filesystem::exists(file)) {
+    MESSAGE("skipped: no development-set meshes at " << devMeshDir().string());
+    return std::nullopt;
+  }
+  return readDevMesh(file);
 }
 
 }  // namespace hexdual::test

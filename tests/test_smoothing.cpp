@@ -419,12 +419,9 @@ TEST_CASE("smoothing never leaves more hexes newly inverted than the operation's
 // Apart from the grid's case so that the sanitizer stage keeps that one: under ASan this mesh's
 // steps take over 8 minutes (.ci/test skips this case there; the release stage runs it).
 TEST_CASE("smoothing never leaves more hexes newly inverted than the operation's own placement (tangled ECR_block)") {
-  const auto file = devMeshDir() / "ECR_block_stresstest_in.mesh.gz";
-  if (!std::filesystem::exists(file)) {
-    MESSAGE("skipped: no development-set meshes at " << devMeshDir().string());
-    return;
-  }
-  Complex ecr = readDevMesh(file);
+  std::optional<Complex> mesh = devMeshOrSkip("ECR_block_stresstest_in.mesh.gz");
+  if (!mesh) return;
+  Complex& ecr = *mesh;
   NeverWorseTally e = smoothingNeverWorse(ecr, 6, 20261122);
   MESSAGE("ECR_block_stresstest_in: " << e.steps << " steps, newly inverted off " << e.worseOff << " on " << e.worseOn
                                       << ", kept " << e.kept);
@@ -439,12 +436,9 @@ TEST_CASE("smoothing: two free vertices of a hex whose six others are fixed are 
   // vertices and two free ones (v2713, v2714). The sweeps, a vertex at a time, moved the two onto
   // the same point (the corners between them at zero, minimum SJ -0.084); the restart from the
   // faces' parallelograms places each across its boundary face's parallelogram and untangles it.
-  const auto file = devMeshDir() / "P_joint.vtk.gz";
-  if (!std::filesystem::exists(file)) {
-    MESSAGE("skipped: no development-set meshes at " << devMeshDir().string());
-    return;
-  }
-  Complex cx = readDevMesh(file);
+  std::optional<Complex> mesh = devMeshOrSkip("P_joint.vtk.gz");
+  if (!mesh) return;
+  Complex& cx = *mesh;
   OpResult off = applyStep(cx, "hexpush h1841f0", kMeasure);
   CHECK(std::count(off.quality.inverted.begin(), off.quality.inverted.end(), 2015) == 1);  // the operation's own placement
   cx.undo(off.edits);
@@ -458,12 +452,9 @@ TEST_CASE("smoothing: hexes a step re-corners count as newly inverted even if in
   // After the face collapse its four hexes are degenerate by construction (inverted, not counted);
   // the face split makes them regular again, still inverted at the collapse's positions: the
   // smoothing must untangle them, not take them for hexes inverted before the step.
-  const auto file = devMeshDir() / "P_joint.vtk.gz";
-  if (!std::filesystem::exists(file)) {
-    MESSAGE("skipped: no development-set meshes at " << devMeshDir().string());
-    return;
-  }
-  Complex cx = readDevMesh(file);
+  std::optional<Complex> mesh = devMeshOrSkip("P_joint.vtk.gz");
+  if (!mesh) return;
+  Complex& cx = *mesh;
   OpResult c = applyStep(cx, "facecollapse h315e10 h319f1 h325f3", kSmoothStep);
   CHECK(c.quality.degenerate.size() == 8);
   REQUIRE(c.inverse);

@@ -189,8 +189,8 @@ void Complex::revert(const HugeVector<Edit>& edits) {
       }
       case JournalEntry::Unglue: {
         uint32_t v = e.value;
-        HexId b = HexId(v >> 6);
-        int fb = int((v >> 3) & 7), o = int(v & 7);
+        HexId b = wordHex(v);
+        int fb = wordFace(v), o = wordOrient(v);
         glue_[e.hex][e.face] = v;
         glue_[b][fb] = pack(e.hex, e.face, inverseOrient(o));
         numBoundarySides_ -= 2;
@@ -234,7 +234,7 @@ void Complex::compact() {
     for (int c = 0; c < 8; ++c) verts[newHex[h]][c] = newVert[verts_[h][c]];
     for (int f = 0; f < 6; ++f) {
       uint32_t g = glue_[h][f];
-      glue[newHex[h]][f] = g == kBoundary ? kBoundary : pack(newHex[g >> 6], (g >> 3) & 7, g & 7);
+      glue[newHex[h]][f] = g == kBoundary ? kBoundary : pack(newHex[wordHex(g)], wordFace(g), wordOrient(g));
     }
   }
   HugeVector<Vec3> pos(nv);

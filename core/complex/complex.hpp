@@ -145,7 +145,7 @@ class Complex {
   Gluing gluing(HexId h, int face) const {
     uint32_t g = glue_[size_t(h)][size_t(face)];
     if (g == kBoundary) return {};
-    return {HexId(g >> 6), int((g >> 3) & 7), int(g & 7)};
+    return {wordHex(g), wordFace(g), wordOrient(g)};
   }
   Gluing gluing(QuadSide s) const { return gluing(s.hex, s.face); }
   // A hex's six gluings as stored: the neighbour << 6 | its face << 3 | the orientation, or
@@ -154,6 +154,15 @@ class Complex {
   // per-hex passes index the tables from a word without decoding it.
   static constexpr uint32_t kBoundaryWord = 0xFFFFFFFFu;
   const std::array<uint32_t, 6>& gluingWords(HexId h) const { return glue_[size_t(h)]; }
+  // A packed word's parts (a gluing word, or a Glue or Unglue edit's value), and its (face,
+  // orientation) bits: what a step index adds to its base (e.g. edgeStepIndex(e, x, 0, 0)).
+  static HexId wordHex(uint32_t w) { return HexId(w >> 6); }
+  static int wordFace(uint32_t w) { return int((w >> 3) & 7u); }
+  static int wordOrient(uint32_t w) { return int(w & 7u); }
+  static size_t wordFaceOrient(uint32_t w) { return size_t(w & 63u); }
+  static_assert(tables::edgeStepIndex(7, 2, 5, 3) == tables::edgeStepIndex(7, 2, 0, 0) + ((5 << 3) | 3));
+  static_assert(tables::crossingIndex(4, 1, 5, 3) == tables::crossingIndex(4, 1, 0, 0) + ((5 << 3) | 3));
+  static_assert(tables::cornerStepIndex(5, 2, 4, 3) == tables::cornerStepIndex(5, 2, 0, 0) + ((4 << 3) | 3));
   bool isBoundary(QuadSide s) const { return glue_[s.hex][s.face] == kBoundary; }
   // The canonical side of a quad: the smaller of its two sides.
   QuadSide canonical(QuadSide s) const;
@@ -179,8 +188,8 @@ class Complex {
   bool stepAroundEdge(EdgeRef& cur, int& exitFace) const {
     const uint32_t g = glue_[size_t(cur.hex)][size_t(exitFace)];
     if (g == kBoundary) return false;
-    const tables::EdgeStep& st = tables::kEdgeSteps[size_t(tables::edgeStepIndex(cur.edge, exitFace, int((g >> 3) & 7), int(g & 7)))];
-    cur = {HexId(g >> 6), st.edge};
+    const tables::EdgeStep& st = tables::kEdgeSteps[size_t(tables::edgeStepIndex(cur.edge, exitFace, 0, 0)) + wordFaceOrient(g)];
+    cur = {wordHex(g), st.edge};
     exitFace = st.exit;
     return true;
   }

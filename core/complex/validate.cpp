@@ -325,7 +325,7 @@ std::vector<VertexId> Complex::verticesWithEditedStars() const {
         add(verts_[size_t(e.hex)][size_t(e.face)]);
       } else if (e.kind == Edit::Glue || e.kind == Edit::Unglue) {
         addFace(e.hex, e.face);
-        addFace(HexId(e.value >> 6), int((e.value >> 3) & 7));
+        addFace(wordHex(e.value), wordFace(e.value));
       }
     }
   };
@@ -433,10 +433,10 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
         ++boundarySides;
         continue;
       }
-      const CornerStep& step = kCornerSteps[size_t(cornerStepIndex(c, k, int((g >> 3) & 7), int(g & 7)))];
-      const uint64_t k2 = key(HexId(g >> 6), step.corner);
+      const CornerStep& step = kCornerSteps[size_t(cornerStepIndex(c, k, 0, 0)) + wordFaceOrient(g)];
+      const uint64_t k2 = key(wordHex(g), step.corner);
       const size_t at = probe(k2);
-      const int arrivedBy = 8 << (((g >> 3) & 7) >> 1);  // the axis of the face the step enters by
+      const int arrivedBy = 8 << (wordFace(g) >> 1);  // the axis of the face the step enters by
       if (!index[at]) {  // a new corner j
         const size_t j = n++;
         if (n > room) {
@@ -444,7 +444,7 @@ void Complex::walkStar(HexId h0, int c0, VertexStar& st) const {
           corners = st.corners.data();
           link = st.link.data();
         }
-        corners[j] = {HexId(g >> 6), step.corner | arrivedBy};
+        corners[j] = {wordHex(g), step.corner | arrivedBy};
         if (2 * n > mask + 1) {
           rehashStar(st, n);
           index = st.index.data();

@@ -46,14 +46,11 @@ constexpr std::array<unsigned, 3> kParallelFaceMask{0b111100u, 0b110011u, 0b0011
 
 size_t slotIndex(HexId h, int a) { return size_t(3) * size_t(h) + size_t(a); }
 
-// A packed gluing word (Complex::gluingWords): its neighbour, its neighbour's face, and its low six
-// bits, which are the last two factors of a step index (the neighbour's face and the orientation):
-// the tables are indexed from the word without decoding it.
-HexId hexOf(uint32_t w) { return HexId(w >> 6); }
-int faceOf(uint32_t w) { return int((w >> 3) & 7u); }
-size_t faceOrient(uint32_t w) { return size_t(w & 63u); }
-static_assert(edgeStepIndex(7, 2, 5, 3) == edgeStepIndex(7, 2, 0, 0) + ((5 << 3) | 3));
-static_assert(crossingIndex(4, 1, 5, 3) == crossingIndex(4, 1, 0, 0) + ((5 << 3) | 3));
+// The parts of a packed gluing word (Complex::gluingWords): the step tables are indexed from the
+// word without decoding it.
+HexId hexOf(uint32_t w) { return Complex::wordHex(w); }
+int faceOf(uint32_t w) { return Complex::wordFace(w); }
+size_t faceOrient(uint32_t w) { return Complex::wordFaceOrient(w); }
 // A per-hex array of 3 values read as one flat per-slot array (slotIndex).
 int32_t* flat(HugeVector<std::array<int32_t, 3>>& v) { return v.empty() ? nullptr : v[0].data(); }
 

@@ -40,7 +40,7 @@ void marksOf(const Complex::Edit& e, Mark mark) {
     case Complex::Edit::Glue:  // value: the partner, as glued
     case Complex::Edit::Unglue:
       mark(e.hex, faceBits(e.face));
-      mark(HexId(e.value >> 6), faceBits(int((e.value >> 3) & 7)));
+      mark(Complex::wordHex(e.value), faceBits(Complex::wordFace(e.value)));
       break;
     default:
       break;

@@ -112,7 +112,6 @@ IdMap<int8_t> sheetUp(const Complex& cx, const SheetHexes& sheet) {
 
 namespace {
 using Corners = std::vector<std::pair<HexId, int>>;
-static_assert(cornerStepIndex(5, 2, 4, 3) == cornerStepIndex(5, 2, 0, 0) + ((4 << 3) | 3));
 
 // A vertex's star walked across the faces between its corners: the corners (as
 // Complex::cornersOfVertex lists them), the glued face pairs between them (`links`, by index in
@@ -147,13 +146,12 @@ void walkStarOf(const Complex& cx, HexId h, int c, StarWalk& st) {
     const auto [hh, cc] = corners[i];
     for (int k = 0; k < 3; ++k) {
       if (crossed[i] >> k & 1) continue;
-      // The packed word (Complex::gluingWords): its low six bits are the step index's last two factors.
-      const uint32_t w = cx.gluingWords(hh)[size_t(2 * k + cornerBit(cc, k))];
+      const uint32_t w = cx.gluingWords(hh)[size_t(2 * k + cornerBit(cc, k))];  // (indexes the step table undecoded)
       if (w == Complex::kBoundaryWord) {
         st.boundary = true;
         continue;
       }
-      const Gluing g{HexId(w >> 6), int((w >> 3) & 7u), int(w & 7u)};
+      const Gluing g{Complex::wordHex(w), Complex::wordFace(w), Complex::wordOrient(w)};
       const uint8_t arrived = uint8_t(1u << (g.face >> 1));
       // The corner of g.hex (a hex holds the vertex at one corner): through a 32-entry table by hex
       // while the star has at most 16 corners, by a scan beyond.
@@ -172,7 +170,7 @@ void walkStarOf(const Complex& cx, HexId h, int c, StarWalk& st) {
           st.grow(2 * n);
           corners = st.cornerRoom.data(), crossed = st.crossedRoom.data(), links = st.linkRoom.data();
         }
-        corners[n] = {g.hex, kCornerSteps[size_t(cornerStepIndex(cc, k, 0, 0)) + (w & 63u)].corner};
+        corners[n] = {g.hex, kCornerSteps[size_t(cornerStepIndex(cc, k, 0, 0)) + Complex::wordFaceOrient(w)].corner};
         crossed[n++] = 0;
       }
       crossed[j] |= arrived;
